@@ -1,0 +1,29 @@
+import { defineConfig } from '@playwright/test';
+import { chromiumArgs, chromiumExecutable } from './scripts/browser.mjs';
+
+const port = Number(process.env.SHADELAB_E2E_PORT ?? 4173);
+const executablePath = chromiumExecutable() ?? undefined;
+
+export default defineConfig({
+  testDir: 'tests',
+  // Renders are pixel-deterministic under SwiftShader with these flags: one baseline for every platform.
+  snapshotPathTemplate: '{testDir}/__screenshots__/{testFilePath}/{arg}{ext}',
+  fullyParallel: true,
+  workers: 2,
+  retries: 0,
+  timeout: 60_000,
+  reporter: [['list'], ['json', { outputFile: 'test-results/playwright.json' }]],
+  expect: { toHaveScreenshot: { maxDiffPixels: 0, threshold: 0 } },
+  use: {
+    baseURL: `http://127.0.0.1:${port}`,
+    viewport: { width: 800, height: 600 },
+    deviceScaleFactor: 1,
+    launchOptions: { executablePath, args: chromiumArgs },
+  },
+  webServer: {
+    command: `npx vite build playground --logLevel warn && npx vite preview playground --host 127.0.0.1 --port ${port} --strictPort`,
+    url: `http://127.0.0.1:${port}`,
+    reuseExistingServer: !process.env.CI,
+    timeout: 180_000,
+  },
+});

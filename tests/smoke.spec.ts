@@ -1,0 +1,26 @@
+import { expect, test } from '@playwright/test';
+
+test('the playground opens on a lit sphere over a black background', async ({ page }) => {
+  await page.goto('/');
+  const canvas = page.getByTestId('viewport');
+  await expect(canvas).toHaveAttribute('data-frames', /[1-9]/);
+  const pixels = await canvas.evaluate((el: HTMLCanvasElement) => {
+    const gl = el.getContext('webgl2')!;
+    const read = (fx: number, fy: number) => {
+      const out = new Uint8Array(4);
+      gl.readPixels(
+        Math.floor(el.width * fx),
+        Math.floor(el.height * fy),
+        1,
+        1,
+        gl.RGBA,
+        gl.UNSIGNED_BYTE,
+        out,
+      );
+      return Array.from(out);
+    };
+    return { centre: read(0.5, 0.5), corner: read(0.02, 0.02) };
+  });
+  expect(Math.max(...pixels.centre.slice(0, 3))).toBeGreaterThan(40);
+  expect(pixels.corner.slice(0, 3)).toEqual([0, 0, 0]);
+});
