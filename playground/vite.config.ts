@@ -1,9 +1,19 @@
+import { readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import react from '@vitejs/plugin-react';
 import { defineConfig } from 'vite';
 
 // The playground edits the packages live: resolve them to their TypeScript sources.
 const src = (name: string) => fileURLToPath(new URL(`../packages/${name}/src/index.ts`, import.meta.url));
+
+const here = (path: string) => fileURLToPath(new URL(path, import.meta.url));
+
+// Test harness pages (playground/harness/*.html) are built beside the app for Playwright and the benchmarks.
+const harness = Object.fromEntries(
+  readdirSync(here('./harness'))
+    .filter((f) => f.endsWith('.html'))
+    .map((f) => [`harness/${f.slice(0, -5)}`, here(`./harness/${f}`)]),
+);
 
 export default defineConfig({
   root: fileURLToPath(new URL('.', import.meta.url)),
@@ -17,5 +27,9 @@ export default defineConfig({
     },
     dedupe: ['three', 'react', 'react-dom'],
   },
-  build: { target: 'es2022', chunkSizeWarningLimit: 2000 },
+  build: {
+    target: 'es2022',
+    chunkSizeWarningLimit: 2000,
+    rollupOptions: { input: { main: here('./index.html'), ...harness } },
+  },
 });
