@@ -21,7 +21,8 @@ export default defineConfig({
     launchOptions: { executablePath, args: chromiumArgs },
   },
   webServer: {
-    command: `npx vite build playground --logLevel warn && npx vite preview playground --host 127.0.0.1 --port ${port} --strictPort`,
+    // Each port builds into its own folder, so parallel runs (and `npm start`) never share an output.
+    command: `npx vite build playground --outDir dist-e2e-${port} --emptyOutDir --logLevel warn && npx vite preview playground --outDir dist-e2e-${port} --host 127.0.0.1 --port ${port} --strictPort`,
     url: `http://127.0.0.1:${port}`,
     reuseExistingServer: !process.env.CI,
     timeout: 180_000,
