@@ -1,1 +1,9 @@
-export {};
+export { arcRotation } from './arcRotation.js';
+export { multiplyQuaternions } from './multiplyQuaternions.js';
+export { normalizeQuaternion } from './normalizeQuaternion.js';
+export { projectToBall } from './projectToBall.js';
+export type { TrackballCamera, TrackballEventMap, TrackballOptions } from './Trackball.js';
+export { Trackball } from './Trackball.js';
+export type { TrackballState } from './trackballWorldMatrix.js';
+export { trackballWorldMatrix } from './trackballWorldMatrix.js';
+export type { BallMapping, Quat, Vec3 } from './types.js';
