@@ -1,0 +1,347 @@
+import { Matrix4, Quaternion, Camera as ThreeCamera, Vector3 } from 'three';
+import type { CameraFrame } from './CameraFrame.js';
+import { createPoleMemory, lookAtFrame, type PoleMemory } from './lookAtFrame.js';
+import { readVector3, type Vec3Input } from './readVector3.js';
+import { validateOrthographic, validatePerspective } from './validateProjection.js';
+
+/** Which projection a {@link Camera} uses. */
+export type ProjectionType = 'perspective' | 'orthographic';
+
+/** Options for `new Camera(options)`: a perspective projection (three.js's PerspectiveCamera defaults). */
+export interface CameraOptions {
+  /** Vertical field of view, degrees, in (0, 180). @defaultValue 50 */
+  fovy?: number;
+  /** Width / height of the viewport, > 0. @defaultValue 1 */
+  aspect?: number;
+  /** Distance to the near plane, world units, > 0. @defaultValue 0.1 */
+  near?: number;
+  /** Distance to the far plane, world units, > near. @defaultValue 2000 */
+  far?: number;
+}
+
+const _frame: CameraFrame = {
+  e: /* @__PURE__ */ new Vector3(),
+  u: /* @__PURE__ */ new Vector3(),
+  v: /* @__PURE__ */ new Vector3(),
+  w: /* @__PURE__ */ new Vector3(),
+};
+const _m = /* @__PURE__ */ new Matrix4();
+const _q = /* @__PURE__ */ new Quaternion();
+const _target = /* @__PURE__ */ new Vector3();
+const _eye = /* @__PURE__ */ new Vector3();
+const _change = { type: 'change' } as const;
+
+/**
+ * The lecture's camera as a three.js camera: `renderer.render(scene, camera)` and three's controls use it as is.
+ *
+ * The frame (`e`, `u`, `v`, `w`) is never stored apart from the Object3D state: `position`, `quaternion` and
+ * `matrixWorld` *are* the camera transformation, so every way of moving the camera (the lecture's
+ * `lookAt(eye, at, up)`, three's `lookAt(target)`, `position.set`, controls, {@link CameraMovement}) keeps
+ * {@link Camera.getFrame}, {@link Camera.getCameraTransformationMatrix} and `matrixWorldInverse` consistent.
+ *
+ * The projection is perspective or orthographic; `isPerspectiveCamera` / `isOrthographicCamera` follow it, so
+ * three's shaders and controls treat the camera as the matching kind. Matrices equal three's
+ * `PerspectiveCamera` / `OrthographicCamera` ones, including the reversed-depth variant the renderer switches
+ * on (`WebGLRenderer({ reversedDepthBuffer: true })` sets `reversedDepth` and calls
+ * {@link Camera.updateProjectionMatrix}).
+ *
+ * Dispatches `{ type: 'change' }` after `lookAt`, `setPerspective`, `setOrthographic` and `setAspect`.
+ *
+ * @example
+ * ```ts
+ * const camera = new Camera();
+ * camera.lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+ * camera.setPerspective(90, 1, 0.1, 10);
+ * renderer.render(scene, camera);
+ * ```
+ */
+export class Camera extends ThreeCamera {
+  /** Vertical field of view of the perspective projection, degrees, in (0, 180). @defaultValue 50 */
+  fovy: number;
+  /** Viewport width / height, > 0. Call {@link Camera.updateProjectionMatrix} after setting it, or use {@link Camera.setAspect}. @defaultValue 1 */
+  aspect: number;
+  /** Near plane distance, world units (> 0 for perspective, any finite value for orthographic). @defaultValue 0.1 */
+  near: number;
+  /** Far plane distance, world units, > near. @defaultValue 2000 */
+  far: number;
+  /** Zoom factor (as three's cameras): divides the view extent. > 0. @defaultValue 1 */
+  zoom: number;
+  /** Orthographic left plane, camera-space x, world units. @defaultValue -1 */
+  left: number;
+  /** Orthographic right plane, camera-space x, world units. @defaultValue 1 */
+  right: number;
+  /** Orthographic top plane, camera-space y, world units. @defaultValue 1 */
+  top: number;
+  /** Orthographic bottom plane, camera-space y, world units. @defaultValue -1 */
+  bottom: number;
+
+  private _projection: ProjectionType = 'perspective';
+  private readonly _pole: PoleMemory = createPoleMemory();
+  /** Orientation written by the last lookAt: when another API has turned the camera since, the pole anchor resets. */
+  private readonly _poleQuaternion = new Quaternion(Number.NaN, 0, 0, 0);
+
+  /** Build a perspective camera at the origin looking down −z (frame e = 0, u = x, v = y, w = z). */
+  constructor({ fovy = 50, aspect = 1, near = 0.1, far = 2000 }: CameraOptions = {}) {
+    super();
+    validatePerspective(fovy, aspect, near, far);
+    this.fovy = fovy;
+    this.aspect = aspect;
+    this.near = near;
+    this.far = far;
+    this.zoom = 1;
+    this.left = -1;
+    this.right = 1;
+    this.top = 1;
+    this.bottom = -1;
+    this.updateProjectionMatrix();
+  }
+
+  /** The current projection. Change it with {@link Camera.setPerspective} / {@link Camera.setOrthographic}. */
+  get projection(): ProjectionType {
+    return this._projection;
+  }
+
+  /** `true` while the projection is perspective (three's shaders and controls read this). */
+  get isPerspectiveCamera(): boolean {
+    return this._projection === 'perspective';
+  }
+
+  /** `true` while the projection is orthographic (three sets the `isOrthographic` uniform from this). */
+  get isOrthographicCamera(): boolean {
+    return this._projection === 'orthographic';
+  }
+
+  /** Alias of {@link Camera.fovy} (degrees) under three's name, for code written for `PerspectiveCamera`. */
+  get fov(): number {
+    return this.fovy;
+  }
+  set fov(degrees: number) {
+    this.fovy = degrees;
+  }
+
+  /**
+   * Aim the camera. Three forms:
+   * - `lookAt(eye, at, up)` — the lecture's: place the eye, look at `at`, with `up` giving the roll (world space).
+   *   `up` is also stored in `this.up` for later three-style calls.
+   * - `lookAt(target)` / `lookAt(x, y, z)` — three's `Object3D.lookAt` for cameras: look from the current
+   *   world position towards the target with `this.up`.
+   *
+   * The frame is the one three.js builds (`w = normalize(eye − at)`, `u = normalize(up × w)`, `v = w × u`); with
+   * `up` parallel to the gaze (or within {@link POLE_CAP_RAD}) it stays finite, orthonormal and continuous
+   * (see {@link lookAtFrame}). With a parent, eye/at/up are world-space and position/quaternion are set so the
+   * world frame is the requested one (uniformly-scaled parents, as three).
+   *
+   * @throws RangeError when eye = at, up is zero, or any component is NaN/infinite; TypeError for non-vectors.
+   */
+  override lookAt(target: Vec3Input): this;
+  override lookAt(x: number, y: number, z: number): this;
+  override lookAt(eye: Vec3Input, at: Vec3Input, up?: Vec3Input): this;
+  override lookAt(a: Vec3Input | number, b?: Vec3Input | number, c?: Vec3Input | number): this {
+    let eye: Vec3Input;
+    let at: Vec3Input;
+    let up: Vec3Input = this.up;
+    if (typeof a === 'number') {
+      at = _target.set(a, b as number, c as number);
+      eye = this.getWorldPosition(_eye);
+    } else if (b === undefined) {
+      at = a;
+      eye = this.getWorldPosition(_eye);
+    } else {
+      eye = a;
+      at = b as Vec3Input;
+      if (c !== undefined) up = c as Vec3Input;
+    }
+    if (!this._poleQuaternion.equals(this.quaternion)) {
+      // Someone else turned the camera since our last lookAt: the pole anchor is its current right vector.
+      this.updateWorldMatrix(true, false);
+      this._pole.anchor.setFromMatrixColumn(this.matrixWorld, 0).normalize();
+      this._pole.turn = 0;
+    }
+    const frame = lookAtFrame(eye, at, up, _frame, this._pole);
+    if (up !== this.up) readVector3(up, 'up', this.up);
+    _m.makeBasis(frame.u, frame.v, frame.w);
+    this.quaternion.setFromRotationMatrix(_m);
+    this.position.copy(frame.e);
+    const parent = this.parent;
+    if (parent) {
+      parent.updateWorldMatrix(true, false);
+      parent.worldToLocal(this.position);
+      _q.setFromRotationMatrix(_m.extractRotation(parent.matrixWorld));
+      this.quaternion.premultiply(_q.invert());
+    }
+    this.updateMatrixWorld(true);
+    this._poleQuaternion.copy(this.quaternion);
+    this.dispatchEvent(_change as never);
+    return this;
+  }
+
+  /**
+   * Use a perspective projection (the lecture's `setPerspective`).
+   * @param fovy - Vertical field of view, degrees, in (0, 180).
+   * @param aspect - Viewport width / height, > 0.
+   * @param near - Near plane distance, world units, > 0.
+   * @param far - Far plane distance, world units, > near. Any finite far/near works; see the README for the depth
+   *   precision each depth mode keeps up to far/near = 1e9.
+   * @throws RangeError naming the first bad parameter (NaN included).
+   */
+  setPerspective(fovy: number, aspect: number, near: number, far: number): this {
+    validatePerspective(fovy, aspect, near, far, this.zoom);
+    this._projection = 'perspective';
+    this.fovy = fovy;
+    this.aspect = aspect;
+    this.near = near;
+    this.far = far;
+    this.updateProjectionMatrix();
+    this.dispatchEvent(_change as never);
+    return this;
+  }
+
+  /**
+   * Use an orthographic projection, in the lecture's argument order (three's `OrthographicCamera` takes
+   * `left, right, top, bottom, near, far`). Planes are camera-space, world units.
+   * @param r - Right plane x. @param l - Left plane x, ≠ r. @param t - Top plane y. @param b - Bottom plane y, ≠ t.
+   * @param n - Near plane distance (any finite value). @param f - Far plane distance, > n.
+   * Also sets {@link Camera.aspect} to |r − l| / |t − b|.
+   * @throws RangeError naming the first bad parameter (NaN included).
+   */
+  setOrthographic(r: number, l: number, t: number, b: number, n: number, f: number): this {
+    validateOrthographic(r, l, t, b, n, f, this.zoom);
+    this._projection = 'orthographic';
+    this.right = r;
+    this.left = l;
+    this.top = t;
+    this.bottom = b;
+    this.near = n;
+    this.far = f;
+    this.aspect = Math.abs(r - l) / Math.abs(t - b);
+    this.updateProjectionMatrix();
+    this.dispatchEvent(_change as never);
+    return this;
+  }
+
+  /**
+   * Follow a viewport resize. Perspective: keeps `fovy` (the vertical view), sets `aspect`. Orthographic: keeps
+   * the vertical extent `top − bottom` and the horizontal centre, and sets `right − left` to
+   * `aspect · |top − bottom|` (keeping its sign).
+   * @param aspect - Viewport width / height (e.g. `canvas.clientWidth / canvas.clientHeight`), finite and > 0.
+   * @throws RangeError when aspect is not finite and > 0.
+   */
+  setAspect(aspect: number): this {
+    if (!(aspect > 0 && Number.isFinite(aspect))) {
+      throw new RangeError(`aspect must be finite and > 0, got ${aspect}`);
+    }
+    this.aspect = aspect;
+    if (this._projection === 'orthographic') {
+      const cx = (this.left + this.right) / 2;
+      const half = (Math.sign(this.right - this.left) * aspect * Math.abs(this.top - this.bottom)) / 2;
+      this.left = cx - half;
+      this.right = cx + half;
+    }
+    this.updateProjectionMatrix();
+    this.dispatchEvent(_change as never);
+    return this;
+  }
+
+  /**
+   * Recompute `projectionMatrix` (and its inverse) from the fields, exactly as three's `PerspectiveCamera` /
+   * `OrthographicCamera` do, honouring `zoom`, `coordinateSystem` and `reversedDepth`. Call it after assigning
+   * fields directly.
+   * @throws RangeError when the fields are out of range (see {@link Camera.setPerspective}/{@link Camera.setOrthographic}).
+   */
+  updateProjectionMatrix(): void {
+    const { near, far, zoom } = this;
+    if (this._projection === 'perspective') {
+      validatePerspective(this.fovy, this.aspect, near, far, zoom);
+      const top = (near * Math.tan((Math.PI / 360) * this.fovy)) / zoom;
+      const height = 2 * top;
+      const width = this.aspect * height;
+      const left = -0.5 * width;
+      this.projectionMatrix.makePerspective(
+        left,
+        left + width,
+        top,
+        top - height,
+        near,
+        far,
+        this.coordinateSystem,
+        this.reversedDepth,
+      );
+    } else {
+      validateOrthographic(this.right, this.left, this.top, this.bottom, near, far, zoom);
+      const dx = (this.right - this.left) / (2 * zoom);
+      const dy = (this.top - this.bottom) / (2 * zoom);
+      const cx = (this.right + this.left) / 2;
+      const cy = (this.top + this.bottom) / 2;
+      this.projectionMatrix.makeOrthographic(
+        cx - dx,
+        cx + dx,
+        cy + dy,
+        cy - dy,
+        near,
+        far,
+        this.coordinateSystem,
+        this.reversedDepth,
+      );
+    }
+    this.projectionMatrixInverse.copy(this.projectionMatrix).invert();
+  }
+
+  /**
+   * The camera frame in world space (the lecture's `getFrame()`), read from `matrixWorld` so it always matches
+   * what is rendered.
+   * @param target - Frame to write; a new one when omitted.
+   */
+  getFrame(
+    target: CameraFrame = { e: new Vector3(), u: new Vector3(), v: new Vector3(), w: new Vector3() },
+  ): CameraFrame {
+    this.updateWorldMatrix(true, false);
+    target.e.setFromMatrixPosition(this.matrixWorld);
+    this.matrixWorld.extractBasis(target.u, target.v, target.w);
+    target.u.normalize();
+    target.v.normalize();
+    target.w.normalize();
+    return target;
+  }
+
+  /**
+   * The camera transformation `Mcam` (world → camera), i.e. three's view matrix `matrixWorldInverse`, brought up
+   * to date first. The returned matrix is the camera's own: copy it to keep it.
+   */
+  getCameraTransformationMatrix(): Matrix4 {
+    this.updateWorldMatrix(true, false);
+    return this.matrixWorldInverse;
+  }
+
+  /** The projection matrix `P` (the camera's own `projectionMatrix`: copy it to keep it). */
+  getProjectionMatrix(): Matrix4 {
+    return this.projectionMatrix;
+  }
+
+  /**
+   * `P · Mcam` (world → clip), the lecture's `getMatrix()`.
+   * @param target - Matrix to write; a new one when omitted.
+   */
+  getMatrix(target: Matrix4 = new Matrix4()): Matrix4 {
+    return target.multiplyMatrices(this.projectionMatrix, this.getCameraTransformationMatrix());
+  }
+
+  /** Copy projection, frame (Object3D state) and pole memory from `source`. */
+  override copy(source: Camera, recursive?: boolean): this {
+    super.copy(source, recursive);
+    this._projection = source._projection;
+    this.fovy = source.fovy;
+    this.aspect = source.aspect;
+    this.near = source.near;
+    this.far = source.far;
+    this.zoom = source.zoom;
+    this.left = source.left;
+    this.right = source.right;
+    this.top = source.top;
+    this.bottom = source.bottom;
+    this._pole.anchor.copy(source._pole.anchor);
+    this._pole.turn = source._pole.turn;
+    this._poleQuaternion.copy(source._poleQuaternion);
+    this.updateProjectionMatrix();
+    return this;
+  }
+}

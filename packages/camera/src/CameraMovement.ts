@@ -1,0 +1,186 @@
+import { Controls, type Object3D } from 'three';
+
+/** Events of {@link CameraMovement}: `change` after every move or turn, `start`/`end` around a pointer drag. */
+export interface CameraMovementEventMap {
+  change: object;
+  start: object;
+  end: object;
+}
+
+/** Options for `new CameraMovement(camera, element?, options)`. */
+export interface CameraMovementOptions {
+  /** Distance moved per key press (each `keydown`, auto-repeat included), world units, ≥ 0. @defaultValue 0.1 */
+  moveSpeed?: number;
+  /** Turn per pixel of pointer drag, radians per CSS pixel, ≥ 0. @defaultValue 0.005 */
+  turnSpeed?: number;
+}
+
+/** What each key does: a unit step along the camera's own axes (`KeyboardEvent.code`, layout-independent). */
+export const MOVEMENT_KEYS: Readonly<Record<string, readonly [axis: 'u' | 'v' | 'w', sign: 1 | -1]>> = {
+  KeyW: ['w', -1],
+  ArrowUp: ['w', -1],
+  KeyS: ['w', 1],
+  ArrowDown: ['w', 1],
+  KeyA: ['u', -1],
+  ArrowLeft: ['u', -1],
+  KeyD: ['u', 1],
+  ArrowRight: ['u', 1],
+  KeyE: ['v', 1],
+  PageUp: ['v', 1],
+  KeyQ: ['v', -1],
+  PageDown: ['v', -1],
+};
+
+function checkSpeed(name: string, value: number): number {
+  if (!(value >= 0 && Number.isFinite(value)))
+    throw new RangeError(`${name} must be finite and ≥ 0, got ${value}`);
+  return value;
+}
+
+/**
+ * The lecture's `addEventHandlers()` as a three.js `Controls`: keys move the camera along its own axes and a
+ * pointer drag turns its gaze. Works on a shadelab {@link Camera} or any three.js camera (it moves the object
+ * in its local frame: −z is the gaze `−w`, x is `u`, y is `v`).
+ *
+ * | keys | move |
+ * | --- | --- |
+ * | W / ↑ | forward, along −w |
+ * | S / ↓ | back, along +w |
+ * | A / ← | left, along −u |
+ * | D / → | right, along +u |
+ * | E / PageUp | up, along +v |
+ * | Q / PageDown | down, along −v |
+ *
+ * Each `keydown` moves {@link CameraMovement.moveSpeed} world units. Dragging with the primary button turns the
+ * gaze with the pointer: right/left about `v` (yaw), down/up about `u` (pitch), {@link CameraMovement.turnSpeed}
+ * radians per pixel; the frame stays orthonormal (rotations about the camera's own axes). Keyboard listeners
+ * go on the connected element, which is made focusable (`tabIndex = 0` if it had none) and focused on
+ * pointer down. Only {@link CameraMovement.connect}/{@link CameraMovement.disconnect} touch the DOM; after
+ * {@link CameraMovement.dispose} no listener is left.
+ */
+export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
+  /** Distance moved per key press, world units, ≥ 0. @defaultValue 0.1 */
+  moveSpeed: number;
+  /** Turn per pixel dragged, radians per CSS pixel, ≥ 0. @defaultValue 0.005 */
+  turnSpeed: number;
+
+  private _dragging = -1;
+  private _x = 0;
+  private _y = 0;
+  private _savedTabIndex: string | null = null;
+  private _savedTouchAction = '';
+
+  /**
+   * @param camera - The camera (or any Object3D) to move.
+   * @param element - Element to listen on; connects right away when given.
+   * @param options - Speeds.
+   */
+  constructor(
+    camera: Object3D,
+    element: HTMLElement | null = null,
+    { moveSpeed = 0.1, turnSpeed = 0.005 }: CameraMovementOptions = {},
+  ) {
+    super(camera, null);
+    this.moveSpeed = checkSpeed('moveSpeed', moveSpeed);
+    this.turnSpeed = checkSpeed('turnSpeed', turnSpeed);
+    if (element !== null) this.connect(element);
+  }
+
+  /** Listen for keys and pointer drags on `element` (disconnecting from a previous one first). */
+  override connect(element: HTMLElement | SVGElement): void {
+    super.connect(element);
+    const el = element as HTMLElement;
+    this._savedTabIndex = el.getAttribute('tabindex');
+    if (this._savedTabIndex === null) el.tabIndex = 0;
+    this._savedTouchAction = el.style.touchAction;
+    el.style.touchAction = 'none';
+    el.addEventListener('keydown', this._onKeyDown);
+    el.addEventListener('pointerdown', this._onPointerDown);
+    el.addEventListener('pointermove', this._onPointerMove);
+    el.addEventListener('pointerup', this._onPointerUp);
+    el.addEventListener('pointercancel', this._onPointerUp);
+  }
+
+  /** Remove every listener and restore the element's `tabindex` and `touch-action`. */
+  override disconnect(): void {
+    const el = this.domElement as HTMLElement | null;
+    if (el === null) return;
+    el.removeEventListener('keydown', this._onKeyDown);
+    el.removeEventListener('pointerdown', this._onPointerDown);
+    el.removeEventListener('pointermove', this._onPointerMove);
+    el.removeEventListener('pointerup', this._onPointerUp);
+    el.removeEventListener('pointercancel', this._onPointerUp);
+    if (this._savedTabIndex === null) el.removeAttribute('tabindex');
+    el.style.touchAction = this._savedTouchAction;
+    this._dragging = -1;
+    this.domElement = null;
+  }
+
+  /** Disconnect; the controls can be connected again afterwards. */
+  override dispose(): void {
+    this.disconnect();
+  }
+
+  /**
+   * Move along the camera's axes by a step in each (world units): `+w` is backwards, `−w` forwards.
+   * Dispatches `change` when anything moved.
+   */
+  move(du: number, dv: number, dw: number): void {
+    if (du === 0 && dv === 0 && dw === 0) return;
+    this.object.translateX(du);
+    this.object.translateY(dv);
+    this.object.translateZ(dw);
+    this.object.updateMatrixWorld();
+    this.dispatchEvent({ type: 'change' });
+  }
+
+  /**
+   * Turn the gaze: `yaw` radians about `v` (positive turns left), then `pitch` radians about `u` (positive turns up).
+   * Dispatches `change` when anything turned.
+   */
+  turn(yaw: number, pitch: number): void {
+    if (yaw === 0 && pitch === 0) return;
+    this.object.rotateY(yaw);
+    this.object.rotateX(pitch);
+    this.object.quaternion.normalize();
+    this.object.updateMatrixWorld();
+    this.dispatchEvent({ type: 'change' });
+  }
+
+  private readonly _onKeyDown = (event: KeyboardEvent): void => {
+    if (!this.enabled || event.ctrlKey || event.metaKey || event.altKey) return;
+    const step = MOVEMENT_KEYS[event.code];
+    if (step === undefined) return;
+    event.preventDefault();
+    const d = step[1] * this.moveSpeed;
+    this.move(step[0] === 'u' ? d : 0, step[0] === 'v' ? d : 0, step[0] === 'w' ? d : 0);
+  };
+
+  private readonly _onPointerDown = (event: PointerEvent): void => {
+    if (!this.enabled || event.button !== 0 || this._dragging !== -1) return;
+    const el = this.domElement as HTMLElement;
+    el.focus?.();
+    el.setPointerCapture?.(event.pointerId);
+    this._dragging = event.pointerId;
+    this._x = event.clientX;
+    this._y = event.clientY;
+    this.dispatchEvent({ type: 'start' });
+  };
+
+  private readonly _onPointerMove = (event: PointerEvent): void => {
+    if (event.pointerId !== this._dragging) return;
+    const dx = event.clientX - this._x;
+    const dy = event.clientY - this._y;
+    this._x = event.clientX;
+    this._y = event.clientY;
+    if (this.enabled) this.turn(-dx * this.turnSpeed, -dy * this.turnSpeed);
+  };
+
+  private readonly _onPointerUp = (event: PointerEvent): void => {
+    if (event.pointerId !== this._dragging) return;
+    this._dragging = -1;
+    const el = this.domElement as HTMLElement;
+    if (el.hasPointerCapture?.(event.pointerId)) el.releasePointerCapture(event.pointerId);
+    this.dispatchEvent({ type: 'end' });
+  };
+}

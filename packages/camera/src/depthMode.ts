@@ -1,0 +1,46 @@
+import type { WebGLRenderer } from 'three';
+
+/**
+ * How depth is stored (a renderer-wide choice, fixed when the `WebGLRenderer` is created):
+ * - `'standard'`: NDC z in [−1, 1] into the 24-bit fixed-point default depth buffer. Precision follows
+ *   Δz/z ≈ 2⁻²³ · z / near: it is spent near the near plane, so surfaces far from the camera merge.
+ * - `'logarithmic'`: the fragment shader writes `log2(1 + w) / log2(1 + far)` (three's
+ *   `logarithmicDepthBuffer`): Δz/z ≈ 2⁻²⁴ · ln 2 · log2(1 + far) · (1 + z)/z, almost the same everywhere,
+ *   for perspective cameras. Costs a `gl_FragDepth` write (no early depth test) in every material.
+ * - `'reversed'`: reversed-Z (three's `reversedDepthBuffer`, needs `EXT_clip_control`): near → 1, far → 0,
+ *   clip z in [0, 1]. With a floating-point depth buffer (a render target whose `depthTexture.type` is
+ *   `FloatType`) Δz/z ≈ 2⁻²⁴ at every distance and far/near; into the 24-bit default buffer it only removes the
+ *   [−1, 1] → [0, 1] rounding and behaves like `'standard'`.
+ */
+export type DepthMode = 'standard' | 'logarithmic' | 'reversed';
+
+/** The `WebGLRenderer` constructor parameters that select a {@link DepthMode}. */
+export interface DepthBufferParameters {
+  /** three's logarithmic depth buffer switch. */
+  logarithmicDepthBuffer: boolean;
+  /** three's reversed depth buffer switch (ignored with a warning when `EXT_clip_control` is missing). */
+  reversedDepthBuffer: boolean;
+}
+
+/**
+ * Renderer parameters for a depth mode: `new WebGLRenderer({ canvas, ...depthBufferParameters('reversed') })`.
+ * @param mode - The depth mode.
+ * @throws RangeError for an unknown mode.
+ */
+export function depthBufferParameters(mode: DepthMode): DepthBufferParameters {
+  if (mode !== 'standard' && mode !== 'logarithmic' && mode !== 'reversed') {
+    throw new RangeError(`mode must be 'standard', 'logarithmic' or 'reversed', got ${String(mode)}`);
+  }
+  return { logarithmicDepthBuffer: mode === 'logarithmic', reversedDepthBuffer: mode === 'reversed' };
+}
+
+/**
+ * The depth mode a renderer actually uses (a reversed-Z request falls back to `'standard'` without
+ * `EXT_clip_control`).
+ */
+export function depthModeOf(renderer: Pick<WebGLRenderer, 'capabilities'>): DepthMode {
+  const { capabilities } = renderer;
+  if ((capabilities as { reversedDepthBuffer?: boolean }).reversedDepthBuffer) return 'reversed';
+  if (capabilities.logarithmicDepthBuffer) return 'logarithmic';
+  return 'standard';
+}

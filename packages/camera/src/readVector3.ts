@@ -1,0 +1,42 @@
+import type { Vector3, Vector3Like } from 'three';
+
+/** A point or direction: a three.js `Vector3`, any `{ x, y, z }`, or an `[x, y, z]` tuple (the lecture's vec3). */
+export type Vec3Input = Vector3Like | readonly [number, number, number];
+
+/**
+ * Copy `input` into `target`, refusing what is not three finite numbers.
+ * @throws TypeError when `input` is neither `{ x, y, z }` nor a 3-element array; RangeError on NaN or ±Infinity.
+ * @internal
+ */
+export function readVector3(input: unknown, name: string, target: Vector3): Vector3 {
+  let x: unknown;
+  let y: unknown;
+  let z: unknown;
+  if (Array.isArray(input) && input.length === 3) {
+    [x, y, z] = input;
+  } else if (typeof input === 'object' && input !== null && 'x' in input && 'y' in input && 'z' in input) {
+    ({ x, y, z } = input as Vector3Like);
+  } else {
+    throw new TypeError(`${name} must be a Vector3, {x, y, z} or [x, y, z], got ${String(input)}`);
+  }
+  if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') {
+    throw new TypeError(`${name} must have numeric x, y, z, got (${String(x)}, ${String(y)}, ${String(z)})`);
+  }
+  if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
+    throw new RangeError(`${name} must be finite, got (${x}, ${y}, ${z}); allowed: finite numbers`);
+  }
+  return target.set(x, y, z);
+}
+
+/**
+ * Normalise `v` in place without underflow or overflow (scales by its largest component first).
+ * @returns false, leaving `v` unchanged, when `v` is the zero vector.
+ * @internal
+ */
+export function safeNormalize(v: Vector3): boolean {
+  const m = Math.max(Math.abs(v.x), Math.abs(v.y), Math.abs(v.z));
+  if (m === 0) return false;
+  v.divideScalar(m);
+  v.divideScalar(v.length());
+  return true;
+}
