@@ -1,1 +1,27 @@
-export {};
+export { computeNormalMatrix } from './computeNormalMatrix.js';
+export { eyeOf } from './eyeOf.js';
+export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
+export { PhongLight, type PhongLightOptions } from './PhongLight.js';
+export {
+  MAX_CEL_BANDS,
+  SHADINGS,
+  type Shading,
+  ShadingMaterial,
+  type ShadingMaterialOptions,
+  SPHERE_FLAG,
+} from './ShadingMaterial.js';
+export {
+  type Attenuation,
+  celDiffuse,
+  celSpecular,
+  LIGHTINGS,
+  type Lighting,
+  MIN_ATTENUATION_DENOMINATOR,
+  type ShadeLight,
+  type ShadeMaterial,
+  type ShadeSample,
+  shade,
+  specularPower,
+} from './shade.js';
+export type { ColorInput } from './validate.js';
+export type { Vec3, Vec3Like, Vec4Like } from './vec3.js';

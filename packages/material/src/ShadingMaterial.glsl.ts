@@ -1,0 +1,142 @@
+// GLSL of ShadingMaterial. Variants are chosen with defines (see ShadingMaterial.defines):
+//   SHADING_FLAT | SHADING_GOURAUD | SHADING_PHONG  where the lighting is evaluated
+//   LIGHTING_BLINN                                 Blinn-Phong specular (else Phong)
+//   CEL_BANDS n                                    0 = off, n ≥ 2 = cel shading with n diffuse shades
+//   NUM_LIGHTS n                                   number of PhongLights
+//   USE_ATTENUATION                                some light has b or c ≠ 0 or a ≠ 1
+//   SPHERE_NORMALS                                 object normal = position (no normal attribute)
+// Everything is in world space. The rules for degenerate inputs match `shade()` in shade.ts exactly.
+
+/** The lighting equation, shared by the vertex (flat, gouraud) and fragment (phong) stages. */
+const lighting = /* glsl */ `
+uniform vec4 shadingEye; // homogeneous eye: (position, 1) perspective, (backward axis, 0) orthographic
+uniform vec3 ambientTerm; // Σ ka·Ia over the lights (ambient is never attenuated)
+uniform float shininess;
+#if NUM_LIGHTS > 0
+uniform vec3 lightPosition[NUM_LIGHTS];
+uniform vec3 lightDiffuse[NUM_LIGHTS]; // kd·Id
+uniform vec3 lightSpecular[NUM_LIGHTS]; // ks·Is
+#ifdef USE_ATTENUATION
+uniform vec3 lightAttenuation[NUM_LIGHTS]; // a, b, c
+#endif
+#endif
+
+vec3 shadeColor(vec3 p, vec3 normal) {
+  vec3 toEye = shadingEye.xyz - p * shadingEye.w;
+  float eyeDistance = length(toEye);
+  vec3 v = eyeDistance > 0.0 ? toEye / eyeDistance : vec3(0.0, 0.0, 1.0);
+  float normalLength = length(normal);
+  vec3 n = normalLength > 0.0 ? normal / normalLength : v;
+  v = eyeDistance > 0.0 ? v : n;
+  vec3 color = ambientTerm;
+#if NUM_LIGHTS > 0
+  for (int i = 0; i < NUM_LIGHTS; i++) {
+    vec3 toLight = lightPosition[i] - p;
+    float t = length(toLight);
+    vec3 l = t > 0.0 ? toLight / t : n;
+    float ndl = dot(n, l);
+    float diffuse = max(ndl, 0.0);
+#ifdef LIGHTING_BLINN
+    vec3 h = l + v;
+    float hLength = length(h);
+    float x = hLength > 0.0 ? max(dot(n, h) / hLength, 0.0) : 0.0;
+#else
+    // v·r with r = 2(l·n)n − l
+    float x = max(2.0 * ndl * dot(v, n) - dot(v, l), 0.0);
+#endif
+    // pow(0, 0) is undefined in GLSL: 0^0 = 1 (shininess 0 lights the whole lit side), 0^α = 0 for α > 0.
+    float spec = x > 0.0 ? pow(x, shininess) : step(shininess, 0.0);
+    spec = ndl > 0.0 ? spec : 0.0;
+#if CEL_BANDS > 0
+    diffuse = min(floor(diffuse * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
+    spec = step(0.5, spec);
+#endif
+#ifdef USE_ATTENUATION
+    vec3 k = lightAttenuation[i];
+    float att = 1.0 / max(k.x + k.y * t + k.z * t * t, 1e-6);
+    diffuse *= att;
+    spec *= att;
+#endif
+    color += diffuse * lightDiffuse[i] + spec * lightSpecular[i];
+  }
+#endif
+  return color;
+}
+`;
+
+/** Vertex stage. */
+export const vertexShader = /* glsl */ `
+uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
+
+#if defined(SHADING_FLAT)
+uniform highp sampler2D facePositions; // object-space positions of the non-indexed geometry, one texel each
+flat out vec3 vColor;
+vec3 fetchPosition(int i) {
+  int width = textureSize(facePositions, 0).x;
+  return texelFetch(facePositions, ivec2(i % width, i / width), 0).xyz;
+}
+#elif defined(SHADING_GOURAUD)
+out vec3 vColor;
+#else
+out vec3 vWorldPosition;
+out vec3 vNormal;
+#endif
+
+#if !defined(SHADING_PHONG)
+${lighting}
+#endif
+
+void main() {
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+#if defined(SHADING_FLAT)
+  // Once per face: at the centroid of the triangle this vertex belongs to, with the face normal.
+  int first = gl_VertexID - gl_VertexID % 3;
+  vec3 p0 = fetchPosition(first);
+  vec3 p1 = fetchPosition(first + 1);
+  vec3 p2 = fetchPosition(first + 2);
+  vec3 centroid = (modelMatrix * vec4((p0 + p1 + p2) / 3.0, 1.0)).xyz;
+  vec3 faceNormal = cross(p1 - p0, p2 - p0);
+  float m = max(max(abs(faceNormal.x), abs(faceNormal.y)), abs(faceNormal.z));
+  faceNormal = m > 0.0 ? faceNormal / m : vec3(0.0); // rescaled so it neither overflows nor underflows
+  vColor = shadeColor(centroid, shadingNormalMatrix * faceNormal);
+#else
+#ifdef SPHERE_NORMALS
+  vec3 objectNormal = position;
+#else
+  vec3 objectNormal = normal;
+#endif
+  vec3 worldPosition = (modelMatrix * vec4(position, 1.0)).xyz;
+  vec3 worldNormal = shadingNormalMatrix * objectNormal;
+#if defined(SHADING_GOURAUD)
+  vColor = shadeColor(worldPosition, worldNormal);
+#else
+  float normalLength = length(worldNormal);
+  vNormal = normalLength > 0.0 ? worldNormal / normalLength : vec3(0.0);
+  vWorldPosition = worldPosition;
+#endif
+#endif
+}
+`;
+
+/** Fragment stage. */
+export const fragmentShader = /* glsl */ `
+#if defined(SHADING_FLAT)
+flat in vec3 vColor;
+#elif defined(SHADING_GOURAUD)
+in vec3 vColor;
+#else
+in vec3 vWorldPosition;
+in vec3 vNormal;
+${lighting}
+#endif
+
+void main() {
+#if defined(SHADING_PHONG)
+  vec3 color = shadeColor(vWorldPosition, vNormal);
+#else
+  vec3 color = vColor;
+#endif
+  gl_FragColor = vec4(color, 1.0);
+  #include <colorspace_fragment>
+}
+`;

@@ -1,0 +1,367 @@
+import {
+  type BufferGeometry,
+  type Camera,
+  Color,
+  type Group,
+  Matrix3,
+  type Object3D,
+  type Scene,
+  ShaderMaterial,
+  Vector4,
+  type WebGLRenderer,
+} from 'three';
+import { computeNormalMatrix } from './computeNormalMatrix.js';
+import { eyeOf } from './eyeOf.js';
+import { facePositionTexture } from './facePositionTexture.js';
+import { PhongLight } from './PhongLight.js';
+import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
+import { LIGHTINGS, type Lighting } from './shade.js';
+import { type ColorInput, checkColorChannels, checkNonNegative, checkOneOf, setColor } from './validate.js';
+
+/**
+ * Where the lighting equation is evaluated (the lecture's shading):
+ * - `'flat'`: once per face, at the triangle's centroid with its face normal; one colour per face;
+ * - `'gouraud'`: per vertex, colours interpolated;
+ * - `'phong'`: per fragment, normals interpolated and renormalised.
+ */
+export type Shading = 'flat' | 'gouraud' | 'phong';
+
+/** Every value of {@link Shading}, in documentation order. */
+export const SHADINGS: readonly Shading[] = ['flat', 'gouraud', 'phong'];
+
+/** Largest accepted `celBands`. */
+export const MAX_CEL_BANDS = 255;
+
+/** Options of {@link ShadingMaterial}; every one is also a validated property of the material. */
+export interface ShadingMaterialOptions {
+  /** Where the lighting is evaluated. @default 'phong' */
+  shading?: Shading;
+  /** The lighting equation. @default 'phong' */
+  lighting?: Lighting;
+  /** 0 = off; N in 2 … 255 = cel shading with N diffuse shades and a hard-edged highlight. @default 0 */
+  celBands?: number;
+  /** ka, ambient reflectance (linear RGB; hex and CSS strings are sRGB). @default [0.6, 0.35, 0.2] */
+  ka?: ColorInput;
+  /** kd, diffuse reflectance (linear RGB). @default [0.6, 0.35, 0.2] */
+  kd?: ColorInput;
+  /** ks, specular reflectance (linear RGB). @default [0.5, 0.5, 0.5] */
+  ks?: ColorInput;
+  /** α, the specular exponent: finite, ≥ 0 (0⁰ = 1: shininess 0 gives a uniform highlight). @default 32 */
+  shininess?: number;
+  /** The lights; any number (each costs 4 uniform vectors; a GPU has ≥ 224). @default [] */
+  lights?: readonly PhongLight[];
+}
+
+/** The `userData` flag that marks a geometry as a sphere centred at its origin (see {@link ShadingMaterial}). */
+export const SPHERE_FLAG = 'isSphere';
+
+const _normalMatrix = /* @__PURE__ */ new Matrix3();
+const _eye = /* @__PURE__ */ new Vector4();
+
+/**
+ * Classic lighting on three.js: the lecture's flat, Gouraud and Phong shading crossed with Phong,
+ * Blinn-Phong and cel lighting, lit by {@link PhongLight}s. Lighting is done in world space with the
+ * equation of `shade` (which is the CPU reference of this material): per light L,
+ * I = ka·Ia + att(t)·(kd·Id·max(l·n, 0) + ks·Is·spec), att(t) = 1 / (a + b·t + c·t²).
+ *
+ * Only what the scene needs is compiled: the variant is a set of `defines` (shading, lighting, cel bands,
+ * number of lights, attenuation when some light has b or c ≠ 0 or a ≠ 1, analytic sphere normals), three
+ * caches one program per variant, and `needsUpdate` is raised only when the variant changes.
+ *
+ * Geometry: gouraud and phong read the `normal` attribute, or, when a geometry has none and is a sphere
+ * centred at its origin (`geometry.type === 'SubdivisionSphereGeometry'` or `geometry.userData.isSphere
+ * === true`), use the exact normal = position. Flat shading reads only `position` and needs non-indexed
+ * geometry (each triangle owns its three vertices; use `geometry.toNonIndexed()`): the vertex shader fetches
+ * the three vertices of its triangle from a float texture (12 bytes per vertex, cached per geometry) and
+ * lights the face once, at its centroid with its face normal. Morph targets and skinning are not supported.
+ *
+ * Colours are linear (three's working colour space) and written through three's output colour space
+ * conversion; no tone mapping. The object's normal matrix is sign(det)·cof(M) of its world matrix (see
+ * `computeNormalMatrix`), finite for singular matrices; the view vector is right for perspective and
+ * orthographic cameras alike (taken from the camera's projection: a point or a direction).
+ *
+ * @example
+ * const light = new PhongLight();
+ * light.position.set(-5, 10, 20);
+ * const material = new ShadingMaterial({ shading: 'gouraud', lighting: 'blinn-phong', lights: [light] });
+ * scene.add(light, new THREE.Mesh(new THREE.IcosahedronGeometry(1, 5), material));
+ */
+export class ShadingMaterial extends ShaderMaterial {
+  /** Always true: lets code tell a ShadingMaterial from other materials without `instanceof`. */
+  readonly isShadingMaterial = true;
+  override type = 'ShadingMaterial';
+
+  #shading: Shading = 'phong';
+  #lighting: Lighting = 'phong';
+  #celBands = 0;
+  #shininess = 32;
+  #lights: readonly PhongLight[] = Object.freeze([]);
+  readonly #ka = new Color(0.6, 0.35, 0.2);
+  readonly #kd = new Color(0.6, 0.35, 0.2);
+  readonly #ks = new Color(0.5, 0.5, 0.5);
+  // What the last drawn geometry and lights asked for (part of the variant).
+  #sphereNormals = false;
+  #attenuation = false;
+
+  constructor({
+    shading = 'phong',
+    lighting = 'phong',
+    celBands = 0,
+    ka = [0.6, 0.35, 0.2],
+    kd = [0.6, 0.35, 0.2],
+    ks = [0.5, 0.5, 0.5],
+    shininess = 32,
+    lights = [],
+  }: ShadingMaterialOptions = {}) {
+    super({
+      vertexShader,
+      fragmentShader,
+      uniforms: {
+        shadingNormalMatrix: { value: new Matrix3() },
+        shadingEye: { value: new Vector4(0, 0, 1, 0) },
+        ambientTerm: { value: new Float32Array(3) },
+        shininess: { value: 32 },
+        lightPosition: { value: new Float32Array(0) },
+        lightDiffuse: { value: new Float32Array(0) },
+        lightSpecular: { value: new Float32Array(0) },
+        lightAttenuation: { value: new Float32Array(0) },
+        facePositions: { value: null },
+      },
+    });
+    this.toneMapped = false;
+    this.fog = false;
+    this.shading = shading;
+    this.lighting = lighting;
+    this.celBands = celBands;
+    this.ka = ka;
+    this.kd = kd;
+    this.ks = ks;
+    this.shininess = shininess;
+    this.phongLights = lights;
+    this.#syncDefines();
+  }
+
+  /** Where the lighting is evaluated: `'flat'`, `'gouraud'` or `'phong'`. @default 'phong' */
+  get shading(): Shading {
+    return this.#shading;
+  }
+  set shading(value: Shading) {
+    this.#shading = checkOneOf('ShadingMaterial.shading', value, SHADINGS);
+    this.#syncDefines();
+  }
+
+  /** The lighting equation: `'phong'` or `'blinn-phong'`. @default 'phong' */
+  get lighting(): Lighting {
+    return this.#lighting;
+  }
+  set lighting(value: Lighting) {
+    this.#lighting = checkOneOf('ShadingMaterial.lighting', value, LIGHTINGS);
+    this.#syncDefines();
+  }
+
+  /**
+   * Cel shading: 0 = off; N in 2 … 255 quantises each light's diffuse cosine to N shades
+   * (min(⌊cos·N⌋, N−1)/(N−1)) and its specular to a hard-edged highlight (1 where spec ≥ 0.5, else 0).
+   * With gouraud shading the quantised vertex colours are interpolated (soft band edges); with phong
+   * shading the bands are crisp. @default 0
+   */
+  get celBands(): number {
+    return this.#celBands;
+  }
+  set celBands(value: number) {
+    if (typeof value !== 'number') {
+      throw new TypeError(`ShadingMaterial.celBands must be a number, got ${String(value)}`);
+    }
+    if (!Number.isInteger(value) || value === 1 || value < 0 || value > MAX_CEL_BANDS) {
+      throw new RangeError(
+        `ShadingMaterial.celBands must be 0 (off) or an integer in 2 … ${MAX_CEL_BANDS}, got ${value}`,
+      );
+    }
+    this.#celBands = value;
+    this.#syncDefines();
+  }
+
+  /** ka, ambient reflectance (linear RGB, channels finite ≥ 0). @default Color(0.6, 0.35, 0.2) */
+  get ka(): Color {
+    return this.#ka;
+  }
+  set ka(value: ColorInput) {
+    setColor('ShadingMaterial.ka', this.#ka, value);
+  }
+
+  /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0). @default Color(0.6, 0.35, 0.2) */
+  get kd(): Color {
+    return this.#kd;
+  }
+  set kd(value: ColorInput) {
+    setColor('ShadingMaterial.kd', this.#kd, value);
+  }
+
+  /** ks, specular reflectance (linear RGB, channels finite ≥ 0). @default Color(0.5, 0.5, 0.5) */
+  get ks(): Color {
+    return this.#ks;
+  }
+  set ks(value: ColorInput) {
+    setColor('ShadingMaterial.ks', this.#ks, value);
+  }
+
+  /** α, the specular exponent (finite, ≥ 0; 0⁰ = 1). A uniform: changing it never recompiles. @default 32 */
+  get shininess(): number {
+    return this.#shininess;
+  }
+  set shininess(value: number) {
+    this.#shininess = checkNonNegative('ShadingMaterial.shininess', value);
+    this.uniforms.shininess.value = value;
+  }
+
+  /**
+   * The lights (the `lights` option; named so because three's `ShaderMaterial.lights` is the flag for
+   * three's own lights, which this material does not use). A frozen copy; assign a new array to change it.
+   * The number of lights is part of the variant. @default []
+   */
+  get phongLights(): readonly PhongLight[] {
+    return this.#lights;
+  }
+  set phongLights(value: readonly PhongLight[]) {
+    if (!Array.isArray(value)) {
+      throw new TypeError(`ShadingMaterial.lights must be an array of PhongLight, got ${String(value)}`);
+    }
+    value.forEach((light, i) => {
+      if (!(light instanceof PhongLight)) {
+        throw new TypeError(`ShadingMaterial.lights[${i}] must be a PhongLight, got ${String(light)}`);
+      }
+    });
+    this.#lights = Object.freeze([...value]);
+    this.#attenuation = this.#lights.some((light) => light.attenuates);
+    this.#syncDefines();
+  }
+
+  /**
+   * Per-draw work: pick the variant for this geometry and these lights (raising `needsUpdate` only when it
+   * changes), then fill the per-object uniforms. Called by three before each draw.
+   */
+  override onBeforeRender(
+    _renderer: WebGLRenderer,
+    _scene: Scene,
+    camera: Camera,
+    geometry: BufferGeometry,
+    object: Object3D,
+    _group: Group,
+  ): void {
+    const u = this.uniforms;
+    const hasNormal = geometry.getAttribute('normal') !== undefined;
+    if (this.#shading === 'flat') {
+      if (geometry.index !== null) {
+        throw new TypeError(
+          `ShadingMaterial: flat shading needs non-indexed geometry (each triangle owns its vertices), got an indexed ${geometry.type}; use geometry.toNonIndexed()`,
+        );
+      }
+      u.facePositions.value = facePositionTexture(geometry);
+    } else {
+      const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true;
+      if (!hasNormal && !sphere) {
+        throw new TypeError(
+          `ShadingMaterial: ${this.#shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
+        );
+      }
+      this.#sphereNormals = !hasNormal;
+      u.facePositions.value = null;
+    }
+    this.#attenuation = this.#lights.some((light) => light.attenuates);
+    this.#syncDefines();
+    this.#updateLightUniforms();
+    computeNormalMatrix(object.matrixWorld, u.shadingNormalMatrix.value);
+    eyeOf(camera, u.shadingEye.value);
+    this.uniformsNeedUpdate = true;
+  }
+
+  #syncDefines(): void {
+    const defines: Record<string, number | string> = {};
+    defines[`SHADING_${this.#shading.toUpperCase()}`] = '';
+    if (this.#lighting === 'blinn-phong') defines.LIGHTING_BLINN = '';
+    defines.CEL_BANDS = this.#celBands;
+    defines.NUM_LIGHTS = this.#lights.length;
+    if (this.#attenuation) defines.USE_ATTENUATION = '';
+    if (this.#sphereNormals && this.#shading !== 'flat') defines.SPHERE_NORMALS = '';
+    const old = this.defines ?? {};
+    const keys = Object.keys(defines);
+    const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);
+    if (same) return;
+    this.defines = defines;
+    this.needsUpdate = true;
+  }
+
+  #updateLightUniforms(): void {
+    checkColorChannels('ShadingMaterial.ka', this.#ka);
+    checkColorChannels('ShadingMaterial.kd', this.#kd);
+    checkColorChannels('ShadingMaterial.ks', this.#ks);
+    const lights = this.#lights;
+    const n = lights.length;
+    const u = this.uniforms;
+    if (u.lightPosition.value.length !== 3 * n) {
+      u.lightPosition.value = new Float32Array(3 * n);
+      u.lightDiffuse.value = new Float32Array(3 * n);
+      u.lightSpecular.value = new Float32Array(3 * n);
+      u.lightAttenuation.value = new Float32Array(3 * n);
+    }
+    const position: Float32Array = u.lightPosition.value;
+    const diffuse: Float32Array = u.lightDiffuse.value;
+    const specular: Float32Array = u.lightSpecular.value;
+    const attenuation: Float32Array = u.lightAttenuation.value;
+    const ambient: Float32Array = u.ambientTerm.value;
+    const ka = this.#ka;
+    const kd = this.#kd;
+    const ks = this.#ks;
+    let ar = 0;
+    let ag = 0;
+    let ab = 0;
+    for (let i = 0; i < n; i++) {
+      const light = lights[i];
+      light.validate();
+      const e = light.matrixWorld.elements;
+      const x = e[12];
+      const y = e[13];
+      const z = e[14];
+      if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
+        throw new RangeError(
+          `ShadingMaterial.lights[${i}] world position must be finite, got (${x}, ${y}, ${z})`,
+        );
+      }
+      const j = 3 * i;
+      position[j] = x;
+      position[j + 1] = y;
+      position[j + 2] = z;
+      diffuse[j] = kd.r * light.diffuse.r;
+      diffuse[j + 1] = kd.g * light.diffuse.g;
+      diffuse[j + 2] = kd.b * light.diffuse.b;
+      specular[j] = ks.r * light.specular.r;
+      specular[j + 1] = ks.g * light.specular.g;
+      specular[j + 2] = ks.b * light.specular.b;
+      const { a, b, c } = light.attenuation;
+      attenuation[j] = a;
+      attenuation[j + 1] = b;
+      attenuation[j + 2] = c;
+      ar += ka.r * light.ambient.r;
+      ag += ka.g * light.ambient.g;
+      ab += ka.b * light.ambient.b;
+    }
+    ambient[0] = ar;
+    ambient[1] = ag;
+    ambient[2] = ab;
+  }
+
+  override copy(source: ShadingMaterial): this {
+    super.copy(source);
+    this.#shading = source.shading;
+    this.#lighting = source.lighting;
+    this.#celBands = source.celBands;
+    this.#shininess = source.shininess;
+    this.#lights = source.phongLights;
+    this.#ka.copy(source.ka);
+    this.#kd.copy(source.kd);
+    this.#ks.copy(source.ks);
+    this.#attenuation = this.#lights.some((light) => light.attenuates);
+    this.defines = { ...source.defines };
+    return this;
+  }
+}

@@ -1,0 +1,181 @@
+// The lighting equation on the CPU, three-free: the reference the GPU shaders are tested against.
+import { dot, length, normalizeOr, sub, type Vec3, type Vec3Like, type Vec4Like } from './vec3.js';
+
+/**
+ * The lighting equation (the lecture's names):
+ * - `'phong'`: specular = max(v·r, 0)^α with r = 2(l·n)n − l;
+ * - `'blinn-phong'`: specular = max(n·h, 0)^α with h = normalize(l + v).
+ */
+export type Lighting = 'phong' | 'blinn-phong';
+
+/** Every value of {@link Lighting}, in documentation order. */
+export const LIGHTINGS: readonly Lighting[] = ['phong', 'blinn-phong'];
+
+/** Attenuation constants: the light's diffuse and specular terms are divided by a + b·t + c·t², t = distance. */
+export interface Attenuation {
+  /** Constant term. @default 1 */
+  readonly a: number;
+  /** Linear term, per world unit. @default 0 */
+  readonly b: number;
+  /** Quadratic term, per world unit². @default 0 */
+  readonly c: number;
+}
+
+/**
+ * The attenuation denominator a + b·t + c·t² is clamped to at least this value, so a light at the surface
+ * (t = 0) with a = 0 stays finite: the attenuation factor never exceeds 1 / 1e-6 = 10⁶.
+ */
+export const MIN_ATTENUATION_DENOMINATOR = 1e-6;
+
+/** A light as `shade` sees it: world position and the lecture's Ia, Id, Is (linear RGB). */
+export interface ShadeLight {
+  /** World-space position. */
+  readonly position: Vec3Like;
+  /** Ia: ambient intensity, linear RGB. */
+  readonly ambient: Vec3Like;
+  /** Id: diffuse intensity, linear RGB. */
+  readonly diffuse: Vec3Like;
+  /** Is: specular intensity, linear RGB. */
+  readonly specular: Vec3Like;
+  /** Attenuation constants. @default { a: 1, b: 0, c: 0 } (none) */
+  readonly attenuation?: Attenuation;
+}
+
+/** A material as `shade` sees it: the lecture's ka, kd, ks (linear RGB) and α. */
+export interface ShadeMaterial {
+  /** ka: ambient reflectance, linear RGB. */
+  readonly ka: Vec3Like;
+  /** kd: diffuse reflectance, linear RGB. */
+  readonly kd: Vec3Like;
+  /** ks: specular reflectance, linear RGB. */
+  readonly ks: Vec3Like;
+  /** α (Phong) or β (Blinn-Phong): the specular exponent, ≥ 0. 0⁰ is taken as 1 (see {@link specularPower}). */
+  readonly shininess: number;
+  /** The lighting equation. @default 'phong' */
+  readonly lighting?: Lighting;
+  /** Cel bands: 0 = off, N ≥ 2 = N diffuse shades and a hard-edged highlight (see {@link celDiffuse}). @default 0 */
+  readonly celBands?: number;
+}
+
+/** The point being lit, all in world space. */
+export interface ShadeSample {
+  /** World-space position of the point. */
+  readonly position: Vec3Like;
+  /**
+   * World-space normal, any length: it is normalised here. A zero normal (degenerate transform or face)
+   * falls back to the direction towards the viewer, so the result stays finite.
+   */
+  readonly normal: Vec3Like;
+  /**
+   * The eye as a homogeneous point: `[x, y, z, 1]` is a perspective camera's position; `[x, y, z, 0]` is an
+   * orthographic camera's backward (+w) axis, the constant direction towards the viewer. A 3-element eye
+   * is taken as a position (w = 1).
+   */
+  readonly eye: Vec4Like;
+}
+
+/**
+ * x^α for the specular term, with x = max(cosine, 0). GLSL leaves pow(0, 0) undefined; here 0⁰ = 1, so
+ * shininess 0 gives a constant specular ks·Is over the whole lit side (l·n > 0). For α > 0, 0^α = 0.
+ */
+export function specularPower(x: number, shininess: number): number {
+  if (x > 0) return x ** shininess;
+  return shininess === 0 ? 1 : 0;
+}
+
+/**
+ * The cel diffuse shade: the cosine max(l·n, 0) in [0, 1] quantised to `bands` shades
+ * 0, 1/(N−1), …, 1: shade = min(floor(cosine·N), N−1) / (N−1).
+ */
+export function celDiffuse(cosine: number, bands: number): number {
+  return Math.min(Math.floor(cosine * bands), bands - 1) / (bands - 1);
+}
+
+/** The cel highlight: 1 where the specular power is ≥ 0.5, else 0 (a hard edge). */
+export function celSpecular(power: number): number {
+  return power >= 0.5 ? 1 : 0;
+}
+
+const AXIS_Z: Vec3Like = [0, 0, 1];
+
+/**
+ * The lighting equation at one point, summed over `lights` (linear RGB, not clamped):
+ *
+ * I = Σ_L ka·Ia_L + att_L(t)·( kd·Id_L·max(l·n, 0) + ks·Is_L·spec ),  att(t) = 1 / max(a + b·t + c·t², 1e-6)
+ *
+ * with l the unit vector to the light, t its distance, v the unit vector to the eye, spec 0 where l·n ≤ 0.
+ * Degenerate inputs stay finite: a light at the point (t = 0) lights it head-on (l = n); an eye at the
+ * point uses v = n; a zero normal uses n = v (or +z when the eye is at the point too); h = 0 (l = −v) gives
+ * no Blinn-Phong highlight. The GPU shaders of `ShadingMaterial` implement exactly these rules.
+ *
+ * Inputs are not validated (this is the hot reference path); `ShadingMaterial` and `PhongLight` validate theirs.
+ *
+ * @param out receives the colour; a new array when omitted.
+ * @returns `out`, linear RGB ≥ 0.
+ */
+export function shade(
+  sample: ShadeSample,
+  material: ShadeMaterial,
+  lights: readonly ShadeLight[],
+  out: Vec3 = [0, 0, 0],
+): Vec3 {
+  const { position: p, normal, eye } = sample;
+  const { ka, kd, ks, shininess, lighting = 'phong', celBands = 0 } = material;
+  const eyeW = eye.length > 3 ? eye[3] : 1;
+  const toEye: Vec3 = [eye[0] - p[0] * eyeW, eye[1] - p[1] * eyeW, eye[2] - p[2] * eyeW];
+  const v: Vec3 = [0, 0, 0];
+  const n: Vec3 = [0, 0, 0];
+  const hasView = normalizeOr(v, toEye, AXIS_Z);
+  normalizeOr(n, normal, v); // a zero normal falls back to v (+z when the eye is at the point)
+  if (!hasView) {
+    v[0] = n[0];
+    v[1] = n[1];
+    v[2] = n[2];
+  }
+  const l: Vec3 = [0, 0, 0];
+  const h: Vec3 = [0, 0, 0];
+  let r = 0;
+  let g = 0;
+  let b = 0;
+  for (const light of lights) {
+    const { ambient: ia, diffuse: id, specular: is, attenuation } = light;
+    sub(l, light.position, p);
+    const t = length(l);
+    normalizeOr(l, l, n);
+    const ndl = dot(n, l);
+    let diffuse = Math.max(ndl, 0);
+    let spec = 0;
+    if (ndl > 0) {
+      let x: number;
+      if (lighting === 'blinn-phong') {
+        h[0] = l[0] + v[0];
+        h[1] = l[1] + v[1];
+        h[2] = l[2] + v[2];
+        const hl = length(h);
+        x = hl > 0 ? Math.max(dot(n, h) / hl, 0) : 0;
+      } else {
+        // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l.
+        x = Math.max(2 * ndl * dot(v, n) - dot(v, l), 0);
+      }
+      spec = specularPower(x, shininess);
+    }
+    if (celBands > 0) {
+      diffuse = celDiffuse(diffuse, celBands);
+      spec = celSpecular(spec);
+    }
+    let att = 1;
+    if (attenuation !== undefined) {
+      att =
+        1 / Math.max(attenuation.a + attenuation.b * t + attenuation.c * t * t, MIN_ATTENUATION_DENOMINATOR);
+    }
+    const dTerm = att * diffuse;
+    const sTerm = att * spec;
+    r += ka[0] * ia[0] + dTerm * kd[0] * id[0] + sTerm * ks[0] * is[0];
+    g += ka[1] * ia[1] + dTerm * kd[1] * id[1] + sTerm * ks[1] * is[1];
+    b += ka[2] * ia[2] + dTerm * kd[2] * id[2] + sTerm * ks[2] * is[2];
+  }
+  out[0] = r;
+  out[1] = g;
+  out[2] = b;
+  return out;
+}
