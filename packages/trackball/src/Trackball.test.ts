@@ -1,0 +1,621 @@
+// @vitest-environment happy-dom
+import { Trackball, type TrackballOptions } from '@shadelab/trackball';
+import fc from 'fast-check';
+import {
+  Camera,
+  Group,
+  Matrix4,
+  Mesh,
+  Object3D,
+  OrthographicCamera,
+  PerspectiveCamera,
+  Quaternion,
+  Vector3,
+} from 'three';
+import { afterEach, describe, expect, it, vi } from 'vitest';
+
+const SIZE = 200; // the element is a 200 × 200 px square at (10, 20): ball radius 100 px, centre (110, 120)
+const CX = 110;
+const CY = 120;
+
+function makeElement(width = SIZE, height = SIZE): HTMLCanvasElement {
+  const canvas = document.createElement('canvas');
+  document.body.appendChild(canvas);
+  canvas.getBoundingClientRect = () =>
+    ({ left: 10, top: 20, width, height, right: 10 + width, bottom: 20 + height, x: 10, y: 20 }) as DOMRect;
+  return canvas;
+}
+
+function pointer(target: EventTarget, type: string, x: number, y: number, init: PointerEventInit = {}): void {
+  target.dispatchEvent(
+    new PointerEvent(type, {
+      pointerId: 1,
+      pointerType: 'mouse',
+      button: 0,
+      clientX: x,
+      clientY: y,
+      bubbles: true,
+      cancelable: true,
+      ...init,
+    }),
+  );
+}
+
+/** A drag through the given points (client px), pressed on the element and released where it ends. */
+function drag(element: HTMLElement, points: [number, number][], init: PointerEventInit = {}): void {
+  const [first, ...rest] = points;
+  pointer(element, 'pointerdown', first[0], first[1], init);
+  for (const [x, y] of rest) pointer(element, 'pointermove', x, y, init);
+  const last = points[points.length - 1];
+  pointer(element, 'pointerup', last[0], last[1], init);
+}
+
+function wheel(element: HTMLElement, deltaY: number, deltaMode = 0): void {
+  element.dispatchEvent(new WheelEvent('wheel', { deltaY, deltaMode, bubbles: true, cancelable: true }));
+}
+
+function expectMatrixClose(actual: Matrix4, expected: Matrix4, tol = 1e-12): void {
+  actual.elements.forEach((v, i) => {
+    expect(Math.abs(v - expected.elements[i])).toBeLessThan(tol);
+  });
+}
+
+function expectSameRotation(a: Quaternion, b: Quaternion, tol = 1e-12): void {
+  expect(1 - Math.abs(a.dot(b))).toBeLessThan(tol);
+}
+
+const made: Trackball[] = [];
+function trackball(
+  object: Object3D | null,
+  element: HTMLElement | null,
+  options?: TrackballOptions,
+): Trackball {
+  const t = new Trackball(object, element, options);
+  made.push(t);
+  return t;
+}
+
+afterEach(() => {
+  for (const t of made.splice(0)) t.dispose();
+  document.body.innerHTML = '';
+});
+
+describe('Trackball: rotation by pointer drags', () => {
+  it('rotates about the camera-frame up axis by twice the arc for a drag to the right (arcball)', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { mapping: 'arcball' });
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    // Ball point (0.5, 0, √0.75): the arc from the pole is asin(0.5) = 30°, the rotation 60° about +y.
+    expectMatrixClose(tb.getMatrix(), new Matrix4().makeRotationY(Math.PI / 3));
+  });
+
+  it('rotates about the camera-frame right axis for an upward drag (y is up on screen)', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { mapping: 'arcball' });
+    drag(element, [
+      [CX, CY],
+      [CX, CY - 50],
+    ]);
+    expectMatrixClose(tb.getMatrix(), new Matrix4().makeRotationX(-Math.PI / 3));
+  });
+
+  it('turns the object by 180° for a drag from the centre to the rim (arcball), 2·atan(2) (Bell)', () => {
+    for (const [mapping, angle] of [
+      ['arcball', Math.PI],
+      ['bell', 2 * Math.atan(2)],
+    ] as const) {
+      const element = makeElement();
+      const mesh = new Mesh();
+      trackball(mesh, element, { mapping });
+      drag(element, [
+        [CX, CY],
+        [CX + SIZE / 2, CY],
+      ]);
+      expectSameRotation(mesh.quaternion, new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), angle));
+    }
+  });
+
+  it('returns to the start orientation after any closed drag, both mappings (property)', () => {
+    const px = fc.integer({ min: -150, max: 350 });
+    fc.assert(
+      fc.property(
+        fc.array(fc.tuple(px, px), { minLength: 2, maxLength: 12 }),
+        fc.constantFrom<'arcball' | 'bell'>('arcball', 'bell'),
+        fc.double({ min: 0, max: 4, noNaN: true }),
+        (path, mapping, rotateSpeed) => {
+          const element = makeElement();
+          const mesh = new Mesh();
+          mesh.quaternion.setFromAxisAngle(new Vector3(1, 2, 3).normalize(), 0.7);
+          const before = mesh.quaternion.clone();
+          const tb = new Trackball(mesh, element, { mapping, rotateSpeed });
+          drag(element, [...path, path[0]]);
+          tb.dispose();
+          element.remove();
+          return 1 - Math.abs(mesh.quaternion.dot(before)) < 1e-9 && 1 - Math.abs(tb.rotation.w) < 1e-9;
+        },
+      ),
+      { numRuns: 200 },
+    );
+  });
+
+  it('fixes the axes in the camera frame: a rotated camera rotates the object about its own up vector', () => {
+    const element = makeElement();
+    const camera = new PerspectiveCamera();
+    camera.position.set(4, 3, 2);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    const mesh = new Mesh();
+    mesh.quaternion.setFromAxisAngle(new Vector3(0, 0, 1), 0.3);
+    const expected = mesh.clone();
+    const tb = trackball(mesh, element, { camera, mapping: 'arcball' });
+    drag(element, [
+      [CX, CY],
+      [CX + 30, CY + 10],
+      [CX + 50, CY],
+    ]);
+    // Reference: three's own rotateOnWorldAxis about the camera's world up axis by 60°.
+    const up = new Vector3(0, 1, 0).applyQuaternion(camera.quaternion);
+    expected.rotateOnWorldAxis(up, Math.PI / 3);
+    expectSameRotation(mesh.quaternion, expected.quaternion);
+    // The trackball matrix stays in camera coordinates, and the world matrix is C·R·C⁻¹ about the target.
+    expectMatrixClose(tb.getMatrix(), new Matrix4().makeRotationY(Math.PI / 3));
+    const c = new Matrix4().makeRotationFromQuaternion(camera.quaternion);
+    const world = c.clone().multiply(tb.getMatrix()).multiply(c.clone().invert());
+    expectMatrixClose(tb.getWorldMatrix(), world);
+  });
+
+  it('rotates an object inside a rotated parent about the same world axis', () => {
+    const element = makeElement();
+    const parent = new Group();
+    parent.quaternion.setFromAxisAngle(new Vector3(1, 0, 0), 1.1);
+    const mesh = new Mesh();
+    parent.add(mesh);
+    parent.updateMatrixWorld();
+    const before = mesh.getWorldQuaternion(new Quaternion());
+    trackball(mesh, element, { mapping: 'arcball' });
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    const after = mesh.getWorldQuaternion(new Quaternion());
+    const expected = new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), Math.PI / 3).multiply(before);
+    expectSameRotation(after, expected);
+  });
+
+  it('getWorldMatrix turns about the target: the target stays fixed', () => {
+    const element = makeElement();
+    const target = new Vector3(1, -2, 3);
+    const tb = trackball(null, element, { target });
+    drag(element, [
+      [CX - 20, CY + 30],
+      [CX + 60, CY - 10],
+    ]);
+    const m = tb.getWorldMatrix();
+    expect(target.clone().applyMatrix4(m).distanceTo(target)).toBeLessThan(1e-12);
+    expect(Math.abs(m.determinant() - 1)).toBeLessThan(1e-12);
+  });
+
+  it('sends start, change on every move, and end', () => {
+    const element = makeElement();
+    const tb = trackball(null, element);
+    const seen: string[] = [];
+    for (const type of ['start', 'change', 'end'] as const) tb.addEventListener(type, () => seen.push(type));
+    drag(element, [
+      [CX, CY],
+      [CX + 1, CY],
+      [CX + 2, CY + 1],
+    ]);
+    expect(seen).toEqual(['start', 'change', 'change', 'end']);
+  });
+
+  it('ignores input while disabled, and secondary mouse buttons', () => {
+    const element = makeElement();
+    const tb = trackball(null, element);
+    tb.enabled = false;
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    wheel(element, -100);
+    expect(tb.rotation.w).toBe(1);
+    expect(tb.zoom).toBe(1);
+    tb.enabled = true;
+    drag(
+      element,
+      [
+        [CX, CY],
+        [CX + 50, CY],
+      ],
+      { button: 2 },
+    );
+    expect(tb.rotation.w).toBe(1);
+  });
+});
+
+describe('Trackball: DESIGN.md extremes through the DOM', () => {
+  it('stays finite with the pointer at the centre, on the rim, outside it and outside the element', () => {
+    for (const mapping of ['arcball', 'bell'] as const) {
+      const element = makeElement();
+      const mesh = new Mesh();
+      const tb = trackball(mesh, element, { mapping });
+      drag(element, [
+        [CX, CY],
+        [CX + 100, CY],
+        [CX, CY - 100],
+        [CX + 500, CY + 500],
+        [-1e7, 1e9],
+        [CX, CY],
+        [CX + 100, CY],
+      ]);
+      const e = tb.getMatrix().elements;
+      expect(e.every(Number.isFinite)).toBe(true);
+      expect(mesh.quaternion.toArray().every(Number.isFinite)).toBe(true);
+      expect(Math.abs(mesh.quaternion.length() - 1)).toBeLessThan(1e-12);
+    }
+  });
+
+  it('does nothing for zero-length drags (press/release, and moves to the same point)', () => {
+    const element = makeElement();
+    const tb = trackball(null, element);
+    drag(element, [[CX + 13, CY - 7]]);
+    drag(element, [
+      [CX + 13, CY - 7],
+      [CX + 13, CY - 7],
+      [CX + 13, CY - 7],
+    ]);
+    expect(tb.rotation.toArray()).toEqual([0, 0, 0, 1]);
+  });
+
+  it('does nothing (and no NaN) while the element has no size', () => {
+    const element = makeElement(0, 0);
+    const tb = trackball(null, element);
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    expect(tb.rotation.toArray()).toEqual([0, 0, 0, 1]);
+  });
+
+  it('ends cleanly when released outside the element, and the next drag works', () => {
+    const element = makeElement();
+    const outside = document.createElement('div');
+    document.body.appendChild(outside);
+    const tb = trackball(null, element, { mapping: 'arcball' });
+    const ends = vi.fn();
+    tb.addEventListener('end', ends);
+    pointer(element, 'pointerdown', CX, CY);
+    pointer(outside, 'pointermove', 900, CY);
+    pointer(outside, 'pointerup', 900, CY);
+    expect(ends).toHaveBeenCalledTimes(1);
+    expect(tb.dragging).toBe(false);
+    // Outside the arcball the point sits on the rim: 180° about y.
+    expect(Math.abs(tb.rotation.y)).toBeCloseTo(1, 12);
+    // Moves after the release change nothing; a new drag starts from the current orientation.
+    const held = tb.rotation.clone();
+    pointer(outside, 'pointermove', CX, CY + 40);
+    expect(tb.rotation.equals(held)).toBe(true);
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    const expected = new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), Math.PI / 3).multiply(held);
+    expectSameRotation(tb.rotation, expected);
+  });
+});
+
+describe('Trackball: zoom', () => {
+  it('moves a perspective camera along the line to the target, in and out, within the limits', () => {
+    const element = makeElement();
+    const camera = new PerspectiveCamera();
+    camera.position.set(0, 3, 4); // 5 from the origin
+    camera.lookAt(0, 0, 0);
+    const tb = trackball(null, element, { camera, minZoom: 0.5, maxZoom: 4 });
+    wheel(element, -100); // wheel up: zoom in
+    expect(tb.zoom).toBeCloseTo(Math.exp(100 / 500), 12);
+    expect(camera.position.length()).toBeCloseTo(5 / tb.zoom, 12);
+    expect(
+      camera.position
+        .clone()
+        .normalize()
+        .distanceTo(new Vector3(0, 0.6, 0.8)),
+    ).toBeLessThan(1e-12);
+    wheel(element, 3, 1); // three lines down = 48 px: zoom out
+    expect(tb.zoom).toBeCloseTo(Math.exp((100 - 48) / 500), 12);
+    wheel(element, 1e9);
+    expect(tb.zoom).toBe(0.5);
+    expect(camera.position.length()).toBeCloseTo(10, 10);
+    wheel(element, -1e9);
+    expect(tb.zoom).toBe(4);
+    expect(camera.position.length()).toBeCloseTo(1.25, 10);
+    tb.reset();
+    expect(camera.position.distanceTo(new Vector3(0, 3, 4))).toBeLessThan(1e-12);
+  });
+
+  it('zooms an orthographic camera in and out through its zoom factor', () => {
+    const element = makeElement();
+    const camera = new OrthographicCamera(-2, 2, 2, -2, 0.1, 10);
+    camera.zoom = 2;
+    camera.updateProjectionMatrix();
+    const tb = trackball(null, element, { camera });
+    tb.zoomBy(3);
+    expect(camera.zoom).toBeCloseTo(6, 12);
+    expect(camera.projectionMatrix.elements[0]).toBeCloseTo(
+      new OrthographicCamera(-2, 2, 2, -2).projectionMatrix.elements[0] * 6,
+      12,
+    );
+    tb.zoomBy(1 / 12);
+    expect(camera.zoom).toBeCloseTo(0.5, 12);
+    tb.reset();
+    expect(camera.zoom).toBeCloseTo(2, 12);
+  });
+
+  it('zooms any Camera flagged isOrthographicCamera (no zoom field) by scaling its projection', () => {
+    class Flagged extends Camera {
+      get isOrthographicCamera(): boolean {
+        return true;
+      }
+    }
+    const camera = new Flagged();
+    camera.projectionMatrix.makeOrthographic(-1, 3, 2, -2, 0.1, 10);
+    const before = camera.projectionMatrix.clone();
+    const tb = trackball(null, makeElement(), { camera });
+    tb.zoomBy(0.25);
+    const p = new Vector3(0.7, -0.4, -1);
+    const ndcBefore = p.clone().applyMatrix4(before);
+    const ndcAfter = p.clone().applyMatrix4(camera.projectionMatrix);
+    expect(ndcAfter.x).toBeCloseTo(ndcBefore.x * 0.25, 12);
+    expect(ndcAfter.y).toBeCloseTo(ndcBefore.y * 0.25, 12);
+    expect(ndcAfter.z).toBeCloseTo(ndcBefore.z, 12);
+    expectMatrixClose(camera.projectionMatrixInverse, camera.projectionMatrix.clone().invert());
+    tb.zoomBy(4);
+    expectMatrixClose(camera.projectionMatrix, before);
+  });
+
+  it('zooms any Camera flagged isPerspectiveCamera by moving it, even inside a parent', () => {
+    class Flagged extends Camera {
+      get isPerspectiveCamera(): boolean {
+        return true;
+      }
+    }
+    const rig = new Group();
+    rig.position.set(10, 0, 0);
+    const camera = new Flagged();
+    camera.position.set(0, 0, 8);
+    rig.add(camera);
+    rig.updateMatrixWorld();
+    const tb = trackball(null, makeElement(), { camera, target: new Vector3(10, 0, 0) });
+    tb.zoomBy(2);
+    expect(camera.getWorldPosition(new Vector3()).distanceTo(new Vector3(10, 0, 4))).toBeLessThan(1e-12);
+  });
+
+  it('only keeps the factor without a camera, and zoomSpeed scales the exponent', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { zoomSpeed: 2 });
+    const changes = vi.fn();
+    tb.addEventListener('change', changes);
+    wheel(element, -250);
+    expect(tb.zoom).toBeCloseTo(Math.exp(1), 12);
+    expect(changes).toHaveBeenCalledTimes(1);
+    tb.zoomSpeed = 0;
+    wheel(element, -250);
+    expect(tb.zoom).toBeCloseTo(Math.exp(1), 12);
+  });
+
+  it('pinch-zooms with two touch pointers, then rotates from the remaining finger without a jump', () => {
+    const element = makeElement();
+    const camera = new PerspectiveCamera();
+    camera.position.set(0, 0, 6);
+    const tb = trackball(null, element, { camera, mapping: 'arcball' });
+    const touch = (type: string, id: number, x: number, y: number) =>
+      pointer(element, type, x, y, { pointerId: id, pointerType: 'touch' });
+    touch('pointerdown', 1, CX - 20, CY);
+    touch('pointerdown', 2, CX + 20, CY);
+    touch('pointermove', 2, CX + 60, CY); // span 40 → 80
+    expect(tb.zoom).toBeCloseTo(2, 12);
+    expect(camera.position.z).toBeCloseTo(3, 12);
+    expect(tb.rotation.w).toBe(1); // no rotation while pinching
+    touch('pointerup', 2, CX + 60, CY);
+    const held = tb.rotation.clone();
+    touch('pointermove', 1, CX - 20, CY);
+    expect(tb.rotation.equals(held)).toBe(true);
+    touch('pointermove', 1, CX + 30, CY);
+    expect(1 - tb.rotation.w).toBeGreaterThan(0.01);
+    touch('pointerup', 1, CX + 30, CY);
+    expect(tb.dragging).toBe(false);
+  });
+});
+
+describe('Trackball: damping', () => {
+  it('keeps spinning the same way after release, slowing down, and stops', () => {
+    const element = makeElement();
+    const mesh = new Mesh();
+    const tb = trackball(mesh, element, { enableDamping: true, dampingFactor: 0.2 });
+    drag(element, [
+      [CX, CY],
+      [CX + 5, CY],
+      [CX + 10, CY],
+    ]);
+    const q0 = tb.rotation.clone();
+    expect(tb.update()).toBe(true);
+    const q1 = tb.rotation.clone();
+    // Same direction as the drag (about +y), and the same angle as the last move's increment.
+    expect(q1.y).toBeGreaterThan(q0.y);
+    const lastMove = new Quaternion()
+      .setFromAxisAngle(new Vector3(0, 1, 0), 2 * Math.asin(0.1))
+      .angleTo(new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), 2 * Math.asin(0.05)));
+    expect(q0.angleTo(q1)).toBeCloseTo(lastMove, 6);
+    tb.update();
+    expect(q1.angleTo(tb.rotation) / q0.angleTo(q1)).toBeCloseTo(0.8, 9);
+    let frames = 0;
+    while (tb.update() && frames < 10_000) frames++;
+    expect(frames).toBeLessThan(10_000);
+    expect(tb.update()).toBe(false);
+    // The mesh follows the same rotation (no camera: camera frame = world).
+    expectSameRotation(mesh.quaternion, tb.rotation);
+  });
+
+  it('does not spin when released after holding still, or when damping is off', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { enableDamping: true });
+    const now = vi.spyOn(performance, 'now');
+    now.mockReturnValue(1000);
+    pointer(element, 'pointerdown', CX, CY);
+    pointer(element, 'pointermove', CX + 10, CY);
+    now.mockReturnValue(1500);
+    pointer(element, 'pointerup', CX + 10, CY);
+    now.mockRestore();
+    expect(tb.update()).toBe(false);
+    tb.enableDamping = false;
+    drag(element, [
+      [CX, CY],
+      [CX + 10, CY],
+    ]);
+    expect(tb.update()).toBe(false);
+  });
+});
+
+describe('Trackball: lifecycle', () => {
+  /** Record add/removeEventListener on a target; returns the listeners still attached. */
+  function spyListeners(target: EventTarget): Set<string> {
+    const live = new Set<string>();
+    const ids = new WeakMap<object, number>();
+    let next = 0;
+    const key = (type: string, fn: unknown) => {
+      const f = fn as object;
+      if (!ids.has(f)) ids.set(f, next++);
+      return `${type}#${ids.get(f)}`;
+    };
+    const add = target.addEventListener.bind(target);
+    const remove = target.removeEventListener.bind(target);
+    target.addEventListener = (type: string, fn: EventListenerOrEventListenerObject | null, o?: unknown) => {
+      live.add(key(type, fn));
+      add(type, fn, o as AddEventListenerOptions);
+    };
+    target.removeEventListener = (
+      type: string,
+      fn: EventListenerOrEventListenerObject | null,
+      o?: unknown,
+    ) => {
+      live.delete(key(type, fn));
+      remove(type, fn, o as EventListenerOptions);
+    };
+    return live;
+  }
+
+  it('leaves no listener on the element, the document or the window after dispose, even mid-drag', () => {
+    const element = makeElement();
+    const onElement = spyListeners(element);
+    const onDocument = spyListeners(document);
+    const onWindow = spyListeners(window);
+    const tb = trackball(null, element);
+    expect(onElement.size).toBeGreaterThan(0);
+    pointer(element, 'pointerdown', CX, CY);
+    expect(onDocument.size).toBeGreaterThan(0);
+    const ends = vi.fn();
+    tb.addEventListener('end', ends);
+    tb.dispose();
+    expect([...onElement, ...onDocument, ...onWindow]).toEqual([]);
+    expect(ends).toHaveBeenCalledTimes(1);
+    pointer(element, 'pointermove', CX + 50, CY);
+    expect(tb.rotation.w).toBe(1);
+  });
+
+  it('connects later, and moves its listeners when connected to another element', () => {
+    const a = makeElement();
+    const b = makeElement();
+    const onA = spyListeners(a);
+    const tb = trackball(null, null);
+    tb.connect(a);
+    expect(onA.size).toBeGreaterThan(0);
+    expect(a.style.touchAction).toBe('none');
+    tb.connect(b);
+    expect(onA.size).toBe(0);
+    drag(b, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    expect(tb.rotation.w).toBeLessThan(1);
+  });
+
+  it('reset restores the rotation, the object and the zoom, and sends change', () => {
+    const element = makeElement();
+    const mesh = new Mesh();
+    mesh.quaternion.setFromAxisAngle(new Vector3(0, 0, 1), 0.4);
+    const home = mesh.quaternion.clone();
+    const tb = trackball(mesh, element);
+    drag(element, [
+      [CX, CY],
+      [CX + 40, CY + 70],
+    ]);
+    tb.zoomBy(3);
+    const changes = vi.fn();
+    tb.addEventListener('change', changes);
+    tb.reset();
+    expect(tb.rotation.toArray()).toEqual([0, 0, 0, 1]);
+    expect(mesh.quaternion.equals(home)).toBe(true);
+    expect(tb.zoom).toBe(1);
+    expect(changes).toHaveBeenCalledTimes(1);
+  });
+
+  it('works without an object: object is a detached Object3D that receives the rotation', () => {
+    const element = makeElement();
+    const tb = trackball(null, element);
+    expect(tb.object).toBeInstanceOf(Object3D);
+    expect(tb.object.parent).toBeNull();
+    drag(element, [
+      [CX, CY],
+      [CX + 40, CY - 30],
+    ]);
+    expectSameRotation(tb.object.quaternion, tb.rotation);
+    expect(tb.target.toArray()).toEqual([0, 0, 0]);
+  });
+
+  it('takes the object position as the default target', () => {
+    const mesh = new Mesh();
+    mesh.position.set(1, 2, 3);
+    expect(trackball(mesh, null).target.toArray()).toEqual([1, 2, 3]);
+  });
+});
+
+describe('Trackball: option checks', () => {
+  it.each<[TrackballOptions, RegExp]>([
+    [{ rotateSpeed: -1 }, /rotateSpeed must be a number ≥ 0 and finite, got -1/],
+    [{ rotateSpeed: Number.NaN }, /rotateSpeed .* got NaN/],
+    [{ zoomSpeed: Number.POSITIVE_INFINITY }, /zoomSpeed .* got Infinity/],
+    [{ minZoom: 0 }, /minZoom must be a number > 0 and finite, got 0/],
+    [{ maxZoom: Number.POSITIVE_INFINITY }, /maxZoom .* got Infinity/],
+    [{ minZoom: 3, maxZoom: 2 }, /minZoom \(3\) must be ≤ maxZoom \(2\)/],
+    [{ dampingFactor: 0 }, /dampingFactor must be in \(0, 1\], got 0/],
+    [{ dampingFactor: 1.5 }, /dampingFactor must be in \(0, 1\], got 1.5/],
+    [{ radius: 0 }, /radius must be a number > 0 and finite, got 0/],
+  ])('refuses %o with a RangeError naming it', (options, message) => {
+    expect(() => new Trackball(null, null, options)).toThrow(RangeError);
+    expect(() => new Trackball(null, null, options)).toThrow(message);
+  });
+
+  it('refuses an unknown mapping with a TypeError, and bad limits, factors and deltas later', () => {
+    expect(() => new Trackball(null, null, { mapping: 'disc' as 'bell' })).toThrow(TypeError);
+    const tb = new Trackball();
+    expect(() => {
+      tb.minZoom = 1000;
+    }).toThrow(/minZoom must be ≤ maxZoom \(100\), got 1000/);
+    expect(() => {
+      tb.maxZoom = 0.001;
+    }).toThrow(/maxZoom must be ≥ minZoom \(0.01\), got 0.001/);
+    expect(() => tb.zoomBy(0)).toThrow(/factor must be a number > 0/);
+    expect(() => tb.update(-1)).toThrow(/delta must be a number ≥ 0/);
+  });
+
+  it('uses a smaller ball with radius < 1: the rim moves in', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { mapping: 'arcball', radius: 0.5 });
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]);
+    expect(Math.abs(tb.rotation.y)).toBeCloseTo(1, 12); // 50 px is the rim now: 180°
+  });
+});
