@@ -1,0 +1,28 @@
+import { depthBufferParameters, depthModeOf } from '@shadelab/camera';
+import { describe, expect, it } from 'vitest';
+
+describe('depth modes', () => {
+  it('maps each mode to the WebGLRenderer switches', () => {
+    expect(depthBufferParameters('standard')).toEqual({
+      logarithmicDepthBuffer: false,
+      reversedDepthBuffer: false,
+    });
+    expect(depthBufferParameters('logarithmic')).toEqual({
+      logarithmicDepthBuffer: true,
+      reversedDepthBuffer: false,
+    });
+    expect(depthBufferParameters('reversed')).toEqual({
+      logarithmicDepthBuffer: false,
+      reversedDepthBuffer: true,
+    });
+    expect(() => depthBufferParameters('linear' as never)).toThrow(RangeError);
+  });
+
+  it('reports what a renderer really uses (reversed wins, as in three)', () => {
+    const of = (reversedDepthBuffer: boolean, logarithmicDepthBuffer: boolean) =>
+      depthModeOf({ capabilities: { reversedDepthBuffer, logarithmicDepthBuffer } as never });
+    expect(of(false, false)).toBe('standard');
+    expect(of(false, true)).toBe('logarithmic');
+    expect(of(true, false)).toBe('reversed');
+  });
+});
