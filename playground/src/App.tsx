@@ -1,52 +1,199 @@
-import { useEffect, useRef } from 'react';
-import * as THREE from 'three';
+import { Leva } from 'leva';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { MOVE_KEYS, REAL_PACKAGES } from './engine/packages';
+import type { ShaderSource } from './engine/ShaderProbe';
+import { COMPARE_COLUMNS, type SectionErrors, Viewer } from './engine/Viewer';
+import { loadInitialState, saveState, stateUrl } from './state/persist';
+import { defaultLight, defaultState, MAX_LIGHTS, type PlaygroundState, validateState } from './state/schema';
+import { LightControls, SceneControls } from './ui/Controls';
+import { ShaderEditor } from './ui/ShaderEditor';
+import { Stats, StatsFeed } from './ui/Stats';
+import type { Update } from './ui/useFolder';
 
-/** First page: the lecture's lit sphere. Grows into the full playground (issue 6). */
+type Variant = ShaderSource & { key: string; defines: Record<string, unknown> };
+
+/** The playground: the lecture's lit sphere, every package option live, state in the URL. */
 export function App() {
+  const initial = useMemo(loadInitialState, []);
+  const [state, setState] = useState<PlaygroundState>(initial.state);
+  const [notices, setNotices] = useState<string[]>(initial.refused);
+  const [schemaError, setSchemaError] = useState<string | null>(null);
+  const [sectionErrors, setSectionErrors] = useState<SectionErrors>({});
+  const [context, setContext] = useState<'ok' | 'lost' | 'restored'>('ok');
+  const [variant, setVariant] = useState<Variant | null>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
+  const viewerRef = useRef<Viewer | null>(null);
+  const feed = useMemo(() => new StatsFeed(), []);
+  const goodState = useRef<PlaygroundState | null>(null);
 
-  useEffect(() => {
-    const canvas = canvasRef.current!;
-    const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
-    renderer.setPixelRatio(1);
-    const scene = new THREE.Scene();
-    scene.background = new THREE.Color(0x000000);
-    const camera = new THREE.PerspectiveCamera(90, 1, 0.1, 10);
-    camera.position.set(0, 0, 3);
-    camera.lookAt(0, 0, 0);
-    const geometry = new THREE.SphereGeometry(1, 64, 32);
-    const material = new THREE.MeshPhongMaterial({ color: 0xcc6633 });
-    const mesh = new THREE.Mesh(geometry, material);
-    mesh.scale.set(2, 1, 2);
-    scene.add(mesh);
-    const light = new THREE.PointLight(0xffffff, 1, 0, 0);
-    light.position.set(-5, 10, 20);
-    scene.add(light, new THREE.AmbientLight(0x333333));
-
-    const draw = () => {
-      const { clientWidth: w, clientHeight: h } = canvas;
-      renderer.setSize(w, h, false);
-      camera.aspect = w / h;
-      camera.updateProjectionMatrix();
-      renderer.render(scene, camera);
-      canvas.dataset.frames = String(Number(canvas.dataset.frames ?? 0) + 1);
-    };
-    const observer = new ResizeObserver(draw);
-    observer.observe(canvas);
-    draw();
-    return () => {
-      observer.disconnect();
-      geometry.dispose();
-      material.dispose();
-      renderer.dispose();
-    };
+  const update: Update = useCallback((mutate) => {
+    setState((previous) => {
+      const next = structuredClone(previous);
+      mutate(next);
+      return JSON.stringify(next) === JSON.stringify(previous) ? previous : next;
+    });
   }, []);
 
+  // The viewer lives as long as the canvas; React only feeds it states.
+  useEffect(() => {
+    const canvas = canvasRef.current!;
+    const viewer = new Viewer(canvas, {
+      onView: ({ eye, at, rotation }) =>
+        update((d) => {
+          d.camera.eye = eye;
+          d.camera.at = at;
+          d.trackball.rotation = rotation;
+        }),
+      onStats: (stats) => feed.push(stats),
+      onContext: (status) => setContext(status),
+      onFirstFrame: (ms) => {
+        feed.firstFrameMs = ms;
+        console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
+      },
+    });
+    viewerRef.current = viewer;
+    const observer = new ResizeObserver(() => {
+      if (goodState.current) viewer.apply(goodState.current);
+      viewer.requestRender();
+    });
+    observer.observe(canvas);
+    return () => {
+      observer.disconnect();
+      viewer.dispose();
+      viewerRef.current = null;
+    };
+  }, [feed, update]);
+
+  // Every state change: validate against the schema, apply what changed, persist when it all held.
+  useEffect(() => {
+    const viewer = viewerRef.current;
+    if (!viewer) return;
+    const checked = validateState(state);
+    if (!checked.ok) {
+      setSchemaError(checked.error);
+      return;
+    }
+    setSchemaError(null);
+    const errors = viewer.apply(checked.state);
+    setSectionErrors(errors);
+    const next = viewer.getShaderSource();
+    setVariant((previous) =>
+      previous &&
+      previous.key === next.key &&
+      previous.vertexShader === next.vertexShader &&
+      previous.fragmentShader === next.fragmentShader
+        ? previous
+        : next,
+    );
+    if (Object.keys(errors).length === 0) {
+      goodState.current = checked.state;
+      const timer = window.setTimeout(() => saveState(checked.state), 150);
+      return () => window.clearTimeout(timer);
+    }
+  }, [state]);
+
+  const actions = useMemo(
+    () => ({
+      exportPng: () => {
+        const canvas = canvasRef.current;
+        if (!canvas) return;
+        viewerRef.current?.render();
+        const link = document.createElement('a');
+        link.download = 'shadelab.png';
+        link.href = canvas.toDataURL('image/png');
+        link.click();
+      },
+      copyLink: () => {
+        const url = stateUrl(goodState.current ?? defaultState());
+        navigator.clipboard?.writeText(url).then(
+          () =>
+            setNotices((n) => [...n.filter((m) => !m.startsWith('Link')), 'Link copied to the clipboard.']),
+          () => setNotices((n) => [...n.filter((m) => !m.startsWith('Link')), `Link: ${url}`]),
+        );
+      },
+      reset: () => setState(defaultState()),
+      addLight: () =>
+        update((d) => {
+          if (d.lights.length < MAX_LIGHTS) d.lights.push({ ...defaultLight(), position: [5, 5, 10] });
+        }),
+    }),
+    [update],
+  );
+
+  const tryShader = useCallback(
+    (source: ShaderSource) => viewerRef.current?.tryShader(source) ?? { ok: true as const },
+    [],
+  );
+  const clearShader = useCallback(() => viewerRef.current?.clearShaderOverride(), []);
+
+  const errors = [
+    ...(schemaError ? [`Not applied: ${schemaError}`] : []),
+    ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
+  ];
+  const standIns = Object.entries(REAL_PACKAGES)
+    .filter(([, real]) => !real)
+    .map(([name]) => `@shadelab/${name}`);
+
   return (
-    <canvas
-      ref={canvasRef}
-      data-testid="viewport"
-      style={{ width: '100%', height: '100%', display: 'block' }}
-    />
+    <div className="app">
+      <main className="stage">
+        <canvas
+          ref={canvasRef}
+          data-testid="viewport"
+          tabIndex={0}
+          role="img"
+          aria-label={`Lit sphere. Drag to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
+          onPointerDown={(e) => e.currentTarget.focus()}
+        />
+        {state.view === 'compare' && (
+          <ol className="compare-labels" aria-label="comparison columns">
+            {COMPARE_COLUMNS.map((c) => (
+              <li key={c.label}>{c.label}</li>
+            ))}
+          </ol>
+        )}
+        <div className="messages" aria-live="polite">
+          {context === 'lost' && (
+            <p className="message warn" data-testid="context-message">
+              The WebGL context was lost; waiting for the browser to restore it. Nothing you set is lost.
+            </p>
+          )}
+          {context === 'restored' && (
+            <p className="message info" data-testid="context-message">
+              The WebGL context was restored; the scene was rebuilt.
+            </p>
+          )}
+          {notices.map((n) => (
+            <p key={n} className="message warn" data-testid="notice">
+              {n}{' '}
+              <button type="button" onClick={() => setNotices((all) => all.filter((m) => m !== n))}>
+                dismiss
+              </button>
+            </p>
+          ))}
+          {errors.map((e) => (
+            <p key={e} className="message error" role="alert" data-testid="input-error">
+              {e}
+            </p>
+          ))}
+        </div>
+        <Stats feed={feed} />
+        <p className="hint">
+          Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS}
+          {standIns.length > 0 && ` · three.js stand-ins for ${standIns.join(', ')}`}
+        </p>
+      </main>
+      <aside className="side">
+        <div className="panel">
+          <Leva fill flat titleBar={false} hideCopyButton />
+        </div>
+        {variant && <ShaderEditor variant={variant} tryShader={tryShader} clearShader={clearShader} />}
+      </aside>
+      <SceneControls state={state} update={update} actions={actions} />
+      {state.lights.map((_, i) => (
+        // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.
+        <LightControls key={i} index={i} state={state} update={update} />
+      ))}
+    </div>
   );
 }

@@ -1,0 +1,492 @@
+/**
+ * The playground's renderer: owns the three.js objects, applies a {@link PlaygroundState} to them (only what
+ * changed), and renders on demand — after a change, trackball/camera events, a resize — never in a loop.
+ */
+import * as THREE from 'three';
+import type { LightState, PlaygroundState, Vec3 } from '../state/schema';
+import {
+  applyLight,
+  applyMaterial,
+  chooseDetail,
+  createCamera,
+  createLight,
+  createMaterial,
+  createMover,
+  createOutline,
+  createSphere,
+  createTrackball,
+  type Detail,
+  getCameraEye,
+  getTrackballRotation,
+  type Light,
+  type Material,
+  type Mover,
+  setCameraOrthographic,
+  setCameraPerspective,
+  setCameraView,
+  setTrackballMapping,
+  setTrackballRotation,
+  type TrackballHandle,
+  updateMaterialLights,
+  type ViewCamera,
+  variantKey,
+} from './packages';
+import { type ShaderCheck, ShaderProbe, type ShaderSource } from './ShaderProbe';
+
+/** What the stats panel shows. */
+export interface FrameStats {
+  frames: number;
+  /** CPU time of the last frame (submit + 1×1 readPixels), ms. */
+  cpuMs: number;
+  /** GPU time of a recent frame (EXT_disjoint_timer_query_webgl2), ms; null without the extension. */
+  gpuMs: number | null;
+  triangles: number;
+  vertices: number;
+  bufferBytes: number;
+  programs: number;
+  detail: Detail | null;
+}
+
+/** Errors by state section (`camera`, `sphere`, `lights`, …); a section with an error keeps its last good value. */
+export type SectionErrors = Partial<Record<string, string>>;
+
+export interface ViewerEvents {
+  /** The camera moved (movement keys) or the trackball turned; the new values for the state. */
+  onView?: (view: { eye: Vec3; at: Vec3; rotation: [number, number, number, number] }) => void;
+  onStats?: (stats: FrameStats) => void;
+  onContext?: (status: 'lost' | 'restored') => void;
+  onFirstFrame?: (ms: number) => void;
+}
+
+/** The compare view's columns, as in the lecture's slide. */
+export const COMPARE_COLUMNS = [
+  { label: 'flat', shading: 'flat', cel: false },
+  { label: 'Gouraud', shading: 'gouraud', cel: false },
+  { label: 'Phong', shading: 'phong', cel: false },
+  { label: 'cel', shading: 'phong', cel: true },
+] as const;
+
+const _size = /* @__PURE__ */ new THREE.Vector2();
+const _pixel = /* @__PURE__ */ new Uint8Array(4);
+
+export class Viewer {
+  readonly renderer: THREE.WebGLRenderer;
+  readonly scene = new THREE.Scene();
+  readonly camera: ViewCamera;
+  /** The trackball turns this group; the sphere mesh sits in it. */
+  readonly pivot = new THREE.Group();
+  readonly mesh: THREE.Mesh;
+  readonly material: Material;
+  readonly trackball: TrackballHandle;
+  readonly mover: Mover;
+
+  private readonly compareMaterials: Material[];
+  private outline: THREE.Material | null = null;
+  private lights: Light[] = [];
+  private markers: THREE.Mesh[] = [];
+  private readonly markerGeometry = new THREE.SphereGeometry(0.08, 12, 8);
+  private readonly markerMaterial = new THREE.MeshBasicMaterial({ color: 0xffee88 });
+  private geometry: THREE.BufferGeometry | null = null;
+  private geometryKey = '';
+  private state: PlaygroundState | null = null;
+  private errors: SectionErrors = {};
+  private frames = 0;
+  private readonly startedAt = performance.now();
+  private firstFrameReported = false;
+  private lastDetail: Detail | null = null;
+  private gpuMs: number | null = null;
+  private pendingQuery: WebGLQuery | null = null;
+  private readonly timer: { TIME_ELAPSED_EXT: number; GPU_DISJOINT_EXT: number } | null;
+  private readonly probe: ShaderProbe;
+  private shaderOverride: (ShaderSource & { key: string }) | null = null;
+  private generated: ShaderSource = { vertexShader: '', fragmentShader: '' };
+  private scheduled = 0;
+  private disposed = false;
+  private contextLost = false;
+
+  constructor(
+    readonly canvas: HTMLCanvasElement,
+    private readonly events: ViewerEvents = {},
+  ) {
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(1);
+    this.renderer.info.autoReset = false;
+    this.scene.background = new THREE.Color(0x000000);
+    this.camera = createCamera();
+    this.material = createMaterial();
+    this.compareMaterials = COMPARE_COLUMNS.map(() => createMaterial());
+    this.mesh = new THREE.Mesh(new THREE.BufferGeometry(), this.material);
+    this.pivot.add(this.mesh);
+    this.scene.add(this.pivot);
+    this.trackball = createTrackball(this.pivot, this.camera);
+    this.mover = createMover(this.camera);
+    this.trackball.addEventListener('change', this.onTrackballChange);
+    this.trackball.addEventListener('end', this.onViewEnd);
+    this.mover.addEventListener('change', this.onMoverChange);
+    this.trackball.connect(canvas);
+    this.mover.connect(canvas);
+    this.timer = this.renderer.getContext().getExtension('EXT_disjoint_timer_query_webgl2');
+    this.probe = new ShaderProbe(this.renderer);
+    canvas.addEventListener('webglcontextlost', this.onContextLost);
+    canvas.addEventListener('webglcontextrestored', this.onContextRestored);
+  }
+
+  private readonly onTrackballChange = () => this.requestRender();
+  private readonly onMoverChange = () => {
+    this.requestRender();
+    this.onViewEnd();
+  };
+  private readonly onViewEnd = () => {
+    if (!this.state) return;
+    const distance = Math.hypot(...this.state.camera.eye.map((x, i) => x - this.state!.camera.at[i]!));
+    const { eye, at } = getCameraEye(this.camera, distance || 1);
+    this.events.onView?.({ eye, at, rotation: getTrackballRotation(this.pivot) });
+  };
+  private readonly onContextLost = () => {
+    this.contextLost = true;
+    this.pendingQuery = null;
+    this.events.onContext?.('lost');
+  };
+  private readonly onContextRestored = () => {
+    this.contextLost = false;
+    this.events.onContext?.('restored');
+    this.render();
+  };
+
+  /** Applies a state: rebuilds only what changed; returns an error message per section that was refused. */
+  apply(state: PlaygroundState): SectionErrors {
+    const previous = this.state;
+    const errors: SectionErrors = {};
+    const changed = (key: keyof PlaygroundState) =>
+      !previous || JSON.stringify(previous[key]) !== JSON.stringify(state[key]);
+    const attempt = (section: string, run: () => void) => {
+      try {
+        run();
+      } catch (error) {
+        errors[section] = error instanceof Error ? error.message : String(error);
+      }
+    };
+    if (changed('lights')) attempt('lights', () => this.applyLights(state.lights));
+    if (changed('material') || changed('lights')) {
+      attempt('material', () => {
+        applyMaterial(this.material, state.material, this.lights);
+        COMPARE_COLUMNS.forEach((column, i) => {
+          applyMaterial(
+            this.compareMaterials[i]!,
+            {
+              ...state.material,
+              shading: column.shading,
+              celBands: column.cel ? Math.max(3, state.material.celBands) : 0,
+            },
+            this.lights,
+          );
+        });
+        this.syncOutline(state.material.outline && state.material.celBands > 0);
+        this.captureGenerated();
+      });
+    }
+    this.state = state;
+    attempt('model', () => {
+      const [x, y, z] = state.model.scale;
+      this.mesh.scale.set(x, y, z);
+    });
+    attempt('camera', () => this.applyCamera(state));
+    attempt('sphere', () => this.applySphere(state));
+    attempt('trackball', () => {
+      setTrackballMapping(this.trackball, state.trackball.mapping);
+      this.trackball.rotateSpeed = state.trackball.rotateSpeed;
+      this.trackball.zoomSpeed = state.trackball.zoomSpeed;
+      const current = getTrackballRotation(this.pivot);
+      if (current.some((c, i) => Math.abs(c - state.trackball.rotation[i]!) > 1e-12)) {
+        setTrackballRotation(this.pivot, state.trackball.rotation);
+      }
+    });
+    this.mover.speed = state.camera.moveSpeed;
+    this.errors = errors;
+    this.requestRender();
+    return errors;
+  }
+
+  private applyLights(states: LightState[]) {
+    while (this.lights.length < states.length) {
+      const light = createLight();
+      const marker = new THREE.Mesh(this.markerGeometry, this.markerMaterial);
+      marker.name = `light marker ${this.lights.length + 1}`;
+      this.scene.add(light, marker);
+      this.lights.push(light);
+      this.markers.push(marker);
+    }
+    while (this.lights.length > states.length) {
+      this.scene.remove(this.lights.pop()!, this.markers.pop()!);
+    }
+    states.forEach((s, i) => {
+      applyLight(this.lights[i]!, s);
+      this.markers[i]!.position.set(...s.position);
+    });
+  }
+
+  private applyCamera(state: PlaygroundState) {
+    const c = state.camera;
+    setCameraView(this.camera, c.eye, c.at, c.up);
+    this.updateProjection(this.aspect(this.columns()));
+  }
+
+  private columns() {
+    return this.state?.view === 'compare' ? COMPARE_COLUMNS.length : 1;
+  }
+
+  private aspect(columns: number) {
+    const w = Math.max(1, this.canvas.clientWidth || this.canvas.width);
+    const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
+    return w / columns / h;
+  }
+
+  private updateProjection(aspect: number) {
+    const c = this.state!.camera;
+    if (c.projection === 'perspective') {
+      setCameraPerspective(this.camera, c.fovy, aspect, c.near, c.far);
+    } else if (c.fitAspect) {
+      const half = ((c.top - c.bottom) / 2) * aspect;
+      const mid = (c.right + c.left) / 2;
+      setCameraOrthographic(this.camera, mid + half, mid - half, c.top, c.bottom, c.near, c.far);
+    } else {
+      setCameraOrthographic(this.camera, c.right, c.left, c.top, c.bottom, c.near, c.far);
+    }
+  }
+
+  /** The sphere's radius on screen in pixels (largest scale axis), for automatic detail. */
+  private radiusPx(state: PlaygroundState): number {
+    const c = state.camera;
+    const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
+    const radius = Math.max(...state.model.scale.map(Math.abs));
+    if (c.projection === 'orthographic') return (radius / ((c.top - c.bottom) / 2)) * (h / 2);
+    const distance = Math.max(c.near, Math.hypot(...c.eye) - radius);
+    return (radius / (distance * Math.tan(THREE.MathUtils.degToRad(c.fovy / 2)))) * (h / 2);
+  }
+
+  private applySphere(state: PlaygroundState) {
+    let { base, level } = state.sphere;
+    this.lastDetail = null;
+    if (state.sphere.auto) {
+      this.lastDetail = chooseDetail(this.radiusPx(state), state.sphere.maxErrorPx);
+      ({ base, level } = this.lastDetail);
+    }
+    const key = `${base}:${level}`;
+    if (key === this.geometryKey) return;
+    const geometry = createSphere(base, level);
+    this.geometry?.dispose();
+    this.geometry = geometry;
+    this.geometryKey = key;
+    this.mesh.geometry = geometry;
+  }
+
+  private syncOutline(on: boolean) {
+    if (on && !this.outline) this.outline = createOutline(this.material);
+    if (!on && this.outline) {
+      this.outline.dispose();
+      this.outline = null;
+    }
+  }
+
+  // ---- shader editing ------------------------------------------------------------------------------------
+
+  private captureGenerated() {
+    const key = variantKey(this.material);
+    if (this.shaderOverride && this.shaderOverride.key !== key) this.clearShaderOverride();
+    if (!this.shaderOverride) {
+      this.generated = {
+        vertexShader: this.material.vertexShader,
+        fragmentShader: this.material.fragmentShader,
+      };
+    } else {
+      this.material.vertexShader = this.shaderOverride.vertexShader;
+      this.material.fragmentShader = this.shaderOverride.fragmentShader;
+      this.material.needsUpdate = true;
+    }
+  }
+
+  /** The current variant's key and its generated GLSL (before any edit). */
+  getShaderSource(): ShaderSource & { key: string; defines: Record<string, unknown> } {
+    return {
+      ...this.generated,
+      key: variantKey(this.material),
+      defines: { ...(this.material.defines ?? {}) },
+    };
+  }
+
+  /**
+   * Compiles an edited program for the current variant off-screen first; only a program that compiles and
+   * links replaces the rendered one, so a broken edit leaves the last good program rendering.
+   */
+  tryShader(source: ShaderSource): ShaderCheck {
+    const check = this.probe.check(this.material, this.mesh, this.camera, source);
+    if (check.ok) {
+      this.material.vertexShader = source.vertexShader;
+      this.material.fragmentShader = source.fragmentShader;
+      this.material.needsUpdate = true;
+      this.shaderOverride = { ...source, key: variantKey(this.material) };
+      this.requestRender();
+    }
+    return check;
+  }
+
+  /** Drops the edit and goes back to the generated program. */
+  clearShaderOverride() {
+    if (!this.shaderOverride) return;
+    this.shaderOverride = null;
+    this.material.vertexShader = this.generated.vertexShader;
+    this.material.fragmentShader = this.generated.fragmentShader;
+    this.material.needsUpdate = true;
+    this.requestRender();
+  }
+
+  // ---- rendering -----------------------------------------------------------------------------------------
+
+  /** Renders at the next animation frame (coalesces many requests into one frame). */
+  requestRender() {
+    if (this.scheduled || this.disposed) return;
+    this.scheduled = requestAnimationFrame(() => {
+      this.scheduled = 0;
+      this.render();
+    });
+  }
+
+  /** Renders now. */
+  render() {
+    if (this.disposed || this.contextLost || !this.state) return;
+    const t0 = performance.now();
+    const { renderer, canvas } = this;
+    const w = Math.max(1, canvas.clientWidth || canvas.width);
+    const h = Math.max(1, canvas.clientHeight || canvas.height);
+    renderer.getSize(_size);
+    if (_size.x !== w || _size.y !== h) renderer.setSize(w, h, false);
+    const gl = renderer.getContext() as WebGL2RenderingContext;
+    const query = this.beginGpuQuery(gl);
+    renderer.info.reset();
+    const columns = this.columns();
+    try {
+      this.updateProjection(this.aspect(columns));
+    } catch {
+      // The camera section already reported the error; keep the last good projection.
+    }
+    if (columns === 1) {
+      this.mesh.material = this.material;
+      updateMaterialLights(this.material);
+      renderer.setScissorTest(false);
+      renderer.setViewport(0, 0, w, h);
+      renderer.render(this.scene, this.camera);
+    } else {
+      renderer.setScissorTest(true);
+      const cw = w / columns;
+      for (let i = 0; i < columns; i++) {
+        const material = this.compareMaterials[i]!;
+        this.mesh.material = material;
+        updateMaterialLights(material);
+        const x = Math.round(i * cw);
+        const next = Math.round((i + 1) * cw);
+        renderer.setViewport(x, 0, next - x, h);
+        renderer.setScissor(x, 0, next - x, h);
+        renderer.render(this.scene, this.camera);
+      }
+      renderer.setScissorTest(false);
+      this.mesh.material = this.material;
+    }
+    this.endGpuQuery(gl, query);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, _pixel);
+    const cpuMs = performance.now() - t0;
+    this.frames += 1;
+    canvas.dataset['frames'] = String(this.frames);
+    if (!this.firstFrameReported) {
+      this.firstFrameReported = true;
+      const ms = performance.now();
+      canvas.dataset['firstFrameMs'] = ms.toFixed(1);
+      this.events.onFirstFrame?.(ms);
+    }
+    this.events.onStats?.(this.stats(cpuMs));
+  }
+
+  private stats(cpuMs: number): FrameStats {
+    const geometry = this.mesh.geometry;
+    let bufferBytes = 0;
+    for (const attribute of Object.values(geometry.attributes)) {
+      bufferBytes += (attribute as THREE.BufferAttribute).array.byteLength;
+    }
+    if (geometry.index) bufferBytes += geometry.index.array.byteLength;
+    const info = this.renderer.info;
+    return {
+      frames: this.frames,
+      cpuMs,
+      gpuMs: this.gpuMs,
+      triangles: info.render.triangles,
+      vertices: geometry.attributes['position']?.count ?? 0,
+      bufferBytes,
+      programs: info.programs?.length ?? 0,
+      detail: this.lastDetail,
+    };
+  }
+
+  private beginGpuQuery(gl: WebGL2RenderingContext): WebGLQuery | null {
+    if (!this.timer || this.pendingQuery) return null;
+    const query = gl.createQuery();
+    if (!query) return null;
+    gl.beginQuery(this.timer.TIME_ELAPSED_EXT, query);
+    return query;
+  }
+
+  private endGpuQuery(gl: WebGL2RenderingContext, query: WebGLQuery | null) {
+    if (!query || !this.timer) return;
+    gl.endQuery(this.timer.TIME_ELAPSED_EXT);
+    this.pendingQuery = query;
+    const poll = (tries: number) => {
+      if (this.disposed || this.pendingQuery !== query) return;
+      const available = gl.getQueryParameter(query, gl.QUERY_RESULT_AVAILABLE);
+      const disjoint = gl.getParameter(this.timer!.GPU_DISJOINT_EXT);
+      if (available && !disjoint) {
+        this.gpuMs = gl.getQueryParameter(query, gl.QUERY_RESULT) / 1e6;
+      }
+      if (available || disjoint || tries > 100) {
+        gl.deleteQuery(query);
+        this.pendingQuery = null;
+        if (available && this.state) this.events.onStats?.(this.stats(Number.NaN));
+        return;
+      }
+      setTimeout(() => poll(tries + 1), 16);
+    };
+    setTimeout(() => poll(0), 0);
+  }
+
+  /** Frames rendered so far. */
+  get frameCount() {
+    return this.frames;
+  }
+
+  /** Milliseconds from navigation start to this viewer's construction. */
+  get createdAt() {
+    return this.startedAt;
+  }
+
+  /** The errors of the last {@link apply}. */
+  get sectionErrors() {
+    return this.errors;
+  }
+
+  dispose() {
+    this.disposed = true;
+    if (this.scheduled) cancelAnimationFrame(this.scheduled);
+    this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
+    this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
+    this.trackball.removeEventListener('change', this.onTrackballChange);
+    this.trackball.removeEventListener('end', this.onViewEnd);
+    this.mover.removeEventListener('change', this.onMoverChange);
+    this.trackball.dispose();
+    this.mover.dispose();
+    this.probe.dispose();
+    this.geometry?.dispose();
+    this.markerGeometry.dispose();
+    this.markerMaterial.dispose();
+    this.material.dispose();
+    for (const m of this.compareMaterials) m.dispose();
+    this.outline?.dispose();
+    this.renderer.dispose();
+  }
+}

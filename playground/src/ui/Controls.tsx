@@ -1,0 +1,389 @@
+import { button } from 'leva';
+import type { PlaygroundState, Rgb, Vec3 } from '../state/schema';
+import { defaultLight, MAX_LIGHTS } from '../state/schema';
+import { type Field, type Update, useFolder } from './useFolder';
+
+const vec3 = (label: string, step = 0.1): Record<string, unknown> => ({ label, step });
+const rgb = (label: string): Record<string, unknown> => ({ label, step: 0.05 });
+
+/** Material, sphere, model, camera, trackball and view controls. */
+export function SceneControls({
+  state,
+  update,
+  actions,
+}: {
+  state: PlaygroundState;
+  update: Update;
+  actions: { exportPng: () => void; copyLink: () => void; reset: () => void; addLight: () => void };
+}) {
+  useFolder(
+    'View',
+    {
+      view: {
+        input: {
+          label: 'view',
+          options: { 'single sphere': 'single', 'flat | Gouraud | Phong | cel': 'compare' },
+        },
+        read: (s) => s.view,
+        write: (d, v: PlaygroundState['view']) => {
+          d.view = v;
+        },
+      },
+    },
+    state,
+    update,
+    {
+      'export PNG': button(actions.exportPng),
+      'copy link': button(actions.copyLink),
+      'reset scene': button(actions.reset),
+    },
+    0,
+  );
+
+  useFolder(
+    'Material',
+    {
+      shading: {
+        input: { label: 'shading', options: ['flat', 'gouraud', 'phong'] },
+        read: (s) => s.material.shading,
+        write: (d, v: PlaygroundState['material']['shading']) => {
+          d.material.shading = v;
+        },
+      },
+      lighting: {
+        input: { label: 'lighting', options: ['phong', 'blinn-phong'] },
+        read: (s) => s.material.lighting,
+        write: (d, v: PlaygroundState['material']['lighting']) => {
+          d.material.lighting = v;
+        },
+      },
+      celBands: {
+        input: { label: 'cel bands', step: 1 },
+        read: (s) => s.material.celBands,
+        write: (d, v: number) => {
+          d.material.celBands = v;
+        },
+      },
+      outline: {
+        input: { label: 'outline' },
+        read: (s) => s.material.outline,
+        write: (d, v: boolean) => {
+          d.material.outline = v;
+        },
+      },
+      ka: {
+        input: rgb('ka'),
+        read: (s) => s.material.ka,
+        write: (d, v: Rgb) => {
+          d.material.ka = v;
+        },
+      },
+      kd: {
+        input: rgb('kd'),
+        read: (s) => s.material.kd,
+        write: (d, v: Rgb) => {
+          d.material.kd = v;
+        },
+      },
+      ks: {
+        input: rgb('ks'),
+        read: (s) => s.material.ks,
+        write: (d, v: Rgb) => {
+          d.material.ks = v;
+        },
+      },
+      shininess: {
+        input: { label: 'shininess', step: 1 },
+        read: (s) => s.material.shininess,
+        write: (d, v: number) => {
+          d.material.shininess = v;
+        },
+      },
+    },
+    state,
+    update,
+    {},
+    1,
+  );
+
+  useFolder(
+    'Lights',
+    {},
+    state,
+    update,
+    {
+      'add light': button(actions.addLight, { disabled: false }),
+    },
+    2,
+  );
+
+  useFolder(
+    'Sphere',
+    {
+      base: {
+        input: { label: 'base', options: ['tetrahedron', 'octahedron', 'icosahedron'] },
+        read: (s) => s.sphere.base,
+        write: (d, v: PlaygroundState['sphere']['base']) => {
+          d.sphere.base = v;
+        },
+      },
+      level: {
+        input: { label: 'level', step: 1 },
+        read: (s) => s.sphere.level,
+        write: (d, v: number) => {
+          d.sphere.level = v;
+        },
+      },
+      auto: {
+        input: { label: 'auto detail' },
+        read: (s) => s.sphere.auto,
+        write: (d, v: boolean) => {
+          d.sphere.auto = v;
+        },
+      },
+      maxErrorPx: {
+        input: { label: 'max error px', step: 0.05 },
+        read: (s) => s.sphere.maxErrorPx,
+        write: (d, v: number) => {
+          d.sphere.maxErrorPx = v;
+        },
+      },
+      scale: {
+        input: vec3('model scale'),
+        read: (s) => s.model.scale,
+        write: (d, v: Vec3) => {
+          d.model.scale = v;
+        },
+      },
+    },
+    state,
+    update,
+    {},
+    3,
+  );
+
+  const camera: Record<string, Field> = {
+    projection: {
+      input: { label: 'projection', options: ['perspective', 'orthographic'] },
+      read: (s) => s.camera.projection,
+      write: (d, v: PlaygroundState['camera']['projection']) => {
+        d.camera.projection = v;
+      },
+    },
+    eye: {
+      input: vec3('eye'),
+      read: (s) => s.camera.eye,
+      write: (d, v: Vec3) => {
+        d.camera.eye = v;
+      },
+    },
+    at: {
+      input: vec3('at'),
+      read: (s) => s.camera.at,
+      write: (d, v: Vec3) => {
+        d.camera.at = v;
+      },
+    },
+    up: {
+      input: vec3('up'),
+      read: (s) => s.camera.up,
+      write: (d, v: Vec3) => {
+        d.camera.up = v;
+      },
+    },
+    fovy: {
+      input: { label: 'fovy °', step: 1 },
+      read: (s) => s.camera.fovy,
+      write: (d, v: number) => {
+        d.camera.fovy = v;
+      },
+    },
+    near: {
+      input: { label: 'near', step: 0.01 },
+      read: (s) => s.camera.near,
+      write: (d, v: number) => {
+        d.camera.near = v;
+      },
+    },
+    far: {
+      input: { label: 'far', step: 1 },
+      read: (s) => s.camera.far,
+      write: (d, v: number) => {
+        d.camera.far = v;
+      },
+    },
+    right: {
+      input: { label: 'ortho r', step: 0.1 },
+      read: (s) => s.camera.right,
+      write: (d, v: number) => {
+        d.camera.right = v;
+      },
+    },
+    left: {
+      input: { label: 'ortho l', step: 0.1 },
+      read: (s) => s.camera.left,
+      write: (d, v: number) => {
+        d.camera.left = v;
+      },
+    },
+    top: {
+      input: { label: 'ortho t', step: 0.1 },
+      read: (s) => s.camera.top,
+      write: (d, v: number) => {
+        d.camera.top = v;
+      },
+    },
+    bottom: {
+      input: { label: 'ortho b', step: 0.1 },
+      read: (s) => s.camera.bottom,
+      write: (d, v: number) => {
+        d.camera.bottom = v;
+      },
+    },
+    fitAspect: {
+      input: { label: 'ortho fits aspect' },
+      read: (s) => s.camera.fitAspect,
+      write: (d, v: boolean) => {
+        d.camera.fitAspect = v;
+      },
+    },
+    moveSpeed: {
+      input: { label: 'move speed', step: 0.01 },
+      read: (s) => s.camera.moveSpeed,
+      write: (d, v: number) => {
+        d.camera.moveSpeed = v;
+      },
+    },
+  };
+  useFolder('Camera', camera, state, update, {}, 4);
+
+  useFolder(
+    'Trackball',
+    {
+      mapping: {
+        input: { label: 'mapping', options: ['arcball', 'bell'] },
+        read: (s) => s.trackball.mapping,
+        write: (d, v: PlaygroundState['trackball']['mapping']) => {
+          d.trackball.mapping = v;
+        },
+      },
+      rotateSpeed: {
+        input: { label: 'rotate speed', step: 0.1 },
+        read: (s) => s.trackball.rotateSpeed,
+        write: (d, v: number) => {
+          d.trackball.rotateSpeed = v;
+        },
+      },
+      zoomSpeed: {
+        input: { label: 'zoom speed', step: 0.1 },
+        read: (s) => s.trackball.zoomSpeed,
+        write: (d, v: number) => {
+          d.trackball.zoomSpeed = v;
+        },
+      },
+    },
+    state,
+    update,
+    {
+      'reset rotation': button(() =>
+        update((d) => {
+          d.trackball.rotation = [0, 0, 0, 1];
+        }),
+      ),
+    },
+    5,
+  );
+  return null;
+}
+
+/** One light's folder: position, Ia/Id/Is, attenuation, remove. */
+export function LightControls({
+  index,
+  state,
+  update,
+}: {
+  index: number;
+  state: PlaygroundState;
+  update: Update;
+}) {
+  const at = (s: PlaygroundState) => s.lights[index] ?? defaultLight();
+  const edit = (d: PlaygroundState, f: (l: PlaygroundState['lights'][number]) => void) => {
+    const light = d.lights[index];
+    if (light) f(light);
+  };
+  const n = index + 1;
+  useFolder(
+    `Lights.light ${n}`,
+    {
+      [`light${n}Position`]: {
+        input: vec3('position', 0.5),
+        read: (s) => at(s).position,
+        write: (d, v: Vec3) =>
+          edit(d, (l) => {
+            l.position = v;
+          }),
+      },
+      [`light${n}Ia`]: {
+        input: rgb('Ia (ambient)'),
+        read: (s) => at(s).ambient,
+        write: (d, v: Rgb) =>
+          edit(d, (l) => {
+            l.ambient = v;
+          }),
+      },
+      [`light${n}Id`]: {
+        input: rgb('Id (diffuse)'),
+        read: (s) => at(s).diffuse,
+        write: (d, v: Rgb) =>
+          edit(d, (l) => {
+            l.diffuse = v;
+          }),
+      },
+      [`light${n}Is`]: {
+        input: rgb('Is (specular)'),
+        read: (s) => at(s).specular,
+        write: (d, v: Rgb) =>
+          edit(d, (l) => {
+            l.specular = v;
+          }),
+      },
+      [`light${n}A`]: {
+        input: { label: 'attenuation a', step: 0.1 },
+        read: (s) => at(s).attenuation.a,
+        write: (d, v: number) =>
+          edit(d, (l) => {
+            l.attenuation.a = v;
+          }),
+      },
+      [`light${n}B`]: {
+        input: { label: 'attenuation b', step: 0.01 },
+        read: (s) => at(s).attenuation.b,
+        write: (d, v: number) =>
+          edit(d, (l) => {
+            l.attenuation.b = v;
+          }),
+      },
+      [`light${n}C`]: {
+        input: { label: 'attenuation c', step: 0.001 },
+        read: (s) => at(s).attenuation.c,
+        write: (d, v: number) =>
+          edit(d, (l) => {
+            l.attenuation.c = v;
+          }),
+      },
+    },
+    state,
+    update,
+    {
+      [`remove light ${n}`]: button(() =>
+        update((d) => {
+          d.lights.splice(index, 1);
+        }),
+      ),
+    },
+    10 + index,
+  );
+  return null;
+}
+
+export { MAX_LIGHTS };

@@ -1,0 +1,58 @@
+import { useEffect, useState } from 'react';
+import type { FrameStats } from '../engine/Viewer';
+
+/** A tiny subscription so per-frame stats re-render only this panel, never the controls. */
+export class StatsFeed {
+  private listeners = new Set<(stats: FrameStats) => void>();
+  last: FrameStats | null = null;
+  firstFrameMs: number | null = null;
+  push(stats: FrameStats) {
+    this.last = { ...stats, cpuMs: Number.isNaN(stats.cpuMs) ? (this.last?.cpuMs ?? 0) : stats.cpuMs };
+    for (const listener of this.listeners) listener(this.last);
+  }
+  subscribe(listener: (stats: FrameStats) => void) {
+    this.listeners.add(listener);
+    return () => {
+      this.listeners.delete(listener);
+    };
+  }
+}
+
+const bytes = (n: number) =>
+  n >= 1 << 20 ? `${(n / (1 << 20)).toFixed(2)} MiB` : n >= 1024 ? `${(n / 1024).toFixed(1)} KiB` : `${n} B`;
+
+export function Stats({ feed }: { feed: StatsFeed }) {
+  const [stats, setStats] = useState<FrameStats | null>(feed.last);
+  useEffect(() => feed.subscribe(setStats), [feed]);
+  if (!stats) return null;
+  return (
+    <dl className="stats" data-testid="stats" aria-label="render statistics">
+      <dt>frame (CPU)</dt>
+      <dd>{stats.cpuMs.toFixed(2)} ms</dd>
+      <dt>frame (GPU)</dt>
+      <dd>{stats.gpuMs === null ? 'n/a (no timer query)' : `${stats.gpuMs.toFixed(2)} ms`}</dd>
+      <dt>triangles</dt>
+      <dd data-testid="stats-triangles">{stats.triangles.toLocaleString('en-US')}</dd>
+      <dt>vertices</dt>
+      <dd>{stats.vertices.toLocaleString('en-US')}</dd>
+      <dt>buffers</dt>
+      <dd>{bytes(stats.bufferBytes)}</dd>
+      <dt>programs</dt>
+      <dd data-testid="stats-programs">{stats.programs}</dd>
+      {stats.detail && (
+        <>
+          <dt>auto detail</dt>
+          <dd>
+            {stats.detail.base} {stats.detail.level} ({stats.detail.errorPx.toFixed(3)} px)
+          </dd>
+        </>
+      )}
+      {feed.firstFrameMs !== null && (
+        <>
+          <dt>first frame</dt>
+          <dd data-testid="first-frame">{feed.firstFrameMs.toFixed(0)} ms</dd>
+        </>
+      )}
+    </dl>
+  );
+}

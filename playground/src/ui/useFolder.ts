@@ -1,0 +1,72 @@
+import { useControls } from 'leva';
+import { useEffect, useRef } from 'react';
+import type { PlaygroundState } from '../state/schema';
+
+type LooseUseControls = (
+  name: string,
+  schema: () => Record<string, unknown>,
+  settings: { order: number },
+  deps: unknown[],
+) => [unknown, (values: Record<string, unknown>) => void];
+
+/** Mutates a copy of the state (the App clones, applies, validates). */
+export type Update = (mutate: (draft: PlaygroundState) => void) => void;
+
+/** One leva input bound to one state field. */
+export interface Field {
+  /** leva input settings without `value`/`onChange` (options, step, min, max, label, …). */
+  input?: Record<string, unknown>;
+  read: (state: PlaygroundState) => unknown;
+  write: (draft: PlaygroundState, value: never) => void;
+}
+
+/** leva buttons and other inputs that are not bound to the state. */
+export type Extra = Record<string, unknown>;
+
+/**
+ * A leva folder whose inputs edit the state both ways: an edit in the panel calls `update`, and a change of
+ * the state from elsewhere (URL, trackball, movement keys) is pushed back into the panel.
+ */
+export function useFolder(
+  name: string,
+  fields: Record<string, Field>,
+  state: PlaygroundState,
+  update: Update,
+  extra: Extra = {},
+  order = 0,
+) {
+  const fieldsRef = useRef(fields);
+  fieldsRef.current = fields;
+  const updateRef = useRef(update);
+  updateRef.current = update;
+  const values = Object.fromEntries(Object.entries(fields).map(([key, field]) => [key, field.read(state)]));
+  const [, set] = (useControls as unknown as LooseUseControls)(
+    name,
+    () => ({
+      ...Object.fromEntries(
+        Object.entries(fieldsRef.current).map(([key, field]) => [
+          key,
+          {
+            ...field.input,
+            value: field.read(state),
+            onChange: (value: unknown, _path: string, context: { initial: boolean }) => {
+              if (context.initial) return;
+              updateRef.current((draft) => {
+                const current = fieldsRef.current[key];
+                current?.write(draft, value as never);
+              });
+            },
+            transient: false,
+          },
+        ]),
+      ),
+      ...extra,
+    }),
+    { order },
+    [],
+  );
+  const text = JSON.stringify(values);
+  useEffect(() => {
+    set(JSON.parse(text) as Record<string, unknown>);
+  }, [text, set]);
+}
