@@ -59,9 +59,13 @@ export function cross(out: Vec3, a: Vec3Like, b: Vec3Like): Vec3 {
  * @returns whether `a` had a usable length.
  */
 export function normalizeOr(out: Vec3, a: Vec3Like, fallback: Vec3Like): boolean {
-  const len = length(a);
-  if (len > 0 && Number.isFinite(len)) {
-    scale(out, a, 1 / len);
+  // Divide by the largest component first: denormal and huge vectors normalise without under/overflow.
+  const m = Math.max(Math.abs(a[0]), Math.abs(a[1]), Math.abs(a[2]));
+  if (m > 0 && Number.isFinite(m)) {
+    out[0] = a[0] / m;
+    out[1] = a[1] / m;
+    out[2] = a[2] / m;
+    scale(out, out, 1 / length(out));
     return true;
   }
   out[0] = fallback[0];
