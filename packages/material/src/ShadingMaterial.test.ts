@@ -1,0 +1,313 @@
+import { eyeOf, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
+import fc from 'fast-check';
+import {
+  BufferGeometry,
+  Color,
+  Float32BufferAttribute,
+  Group,
+  IcosahedronGeometry,
+  type Matrix3,
+  Mesh,
+  OrthographicCamera,
+  PerspectiveCamera,
+  Scene,
+  Vector3,
+  Vector4,
+  type WebGLRenderer,
+} from 'three';
+import { describe, expect, it } from 'vitest';
+
+const renderer = {} as WebGLRenderer;
+
+/** What three does per draw: onBeforeRender, then (on version change) a program lookup by defines. */
+function draw(material: ShadingMaterial, mesh: Mesh, camera = new PerspectiveCamera(90, 1, 0.1, 10)): void {
+  mesh.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  material.onBeforeRender(renderer, new Scene(), camera, mesh.geometry, mesh, new Group());
+}
+
+function sphere(): BufferGeometry {
+  const g = new IcosahedronGeometry(1, 2); // non-indexed, normals = positions
+  g.deleteAttribute('normal');
+  g.userData.isSphere = true;
+  return g;
+}
+
+describe('ShadingMaterial options', () => {
+  it('defaults: phong × phong, no cel, the documented colours and shininess', () => {
+    const m = new ShadingMaterial();
+    expect([m.shading, m.lighting, m.celBands, m.shininess]).toEqual(['phong', 'phong', 0, 32]);
+    expect(m.ka.equals(new Color(0.6, 0.35, 0.2))).toBe(true);
+    expect(m.kd.equals(new Color(0.6, 0.35, 0.2))).toBe(true);
+    expect(m.ks.equals(new Color(0.5, 0.5, 0.5))).toBe(true);
+    expect(m.phongLights).toEqual([]);
+    expect(m.lights).toBe(false); // three's own lights stay off
+    expect(m.defines).toEqual({ SHADING_PHONG: '', CEL_BANDS: 0, NUM_LIGHTS: 0 });
+  });
+
+  it('refuses bad values with errors naming the parameter, the value and the range', () => {
+    const m = new ShadingMaterial();
+    expect(() => {
+      m.shading = 'smooth' as Shading;
+    }).toThrow(/ShadingMaterial\.shading must be one of 'flat', 'gouraud', 'phong', got "smooth"/);
+    expect(() => {
+      m.lighting = 'cel' as never;
+    }).toThrow(TypeError);
+    for (const bad of [1, -2, 2.5, 256, Number.NaN]) {
+      expect(() => {
+        m.celBands = bad;
+      }).toThrow(
+        new RangeError(`ShadingMaterial.celBands must be 0 (off) or an integer in 2 … 255, got ${bad}`),
+      );
+    }
+    for (const bad of [-1, Number.NaN, Number.POSITIVE_INFINITY]) {
+      expect(() => {
+        m.shininess = bad;
+      }).toThrow(new RangeError(`ShadingMaterial.shininess must be a finite number ≥ 0, got ${bad}`));
+    }
+    expect(() => {
+      m.kd = [1, Number.NaN, 0];
+    }).toThrow(/ShadingMaterial\.kd must have finite channels ≥ 0/);
+    expect(() => {
+      m.ks = [-0.1, 0, 0];
+    }).toThrow(RangeError);
+    expect(() => {
+      m.ka = 'not-a-colour';
+    }).toThrow(TypeError);
+    expect(() => {
+      m.phongLights = [new Mesh() as never];
+    }).toThrow(/ShadingMaterial\.lights\[0\] must be a PhongLight/);
+    expect(() => new ShadingMaterial({ celBands: 1 })).toThrow(RangeError);
+    // Failed sets change nothing.
+    expect([m.shading, m.celBands, m.shininess]).toEqual(['phong', 0, 32]);
+    expect(m.kd.equals(new Color(0.6, 0.35, 0.2))).toBe(true);
+  });
+
+  it('accepts hex and CSS colours as sRGB, tuples and Colors as linear', () => {
+    const m = new ShadingMaterial({ ka: 0xffffff, kd: [0.25, 0.5, 1], ks: new Color(0.1, 0.2, 0.3) });
+    expect(m.ka.toArray()).toEqual([1, 1, 1]);
+    expect(m.kd.toArray()).toEqual([0.25, 0.5, 1]);
+    expect(m.ks.toArray()).toEqual([0.1, 0.2, 0.3]);
+    m.ka = '#808080';
+    expect(m.ka.r).toBeCloseTo(0.2158605, 6); // sRGB 128 → linear
+  });
+});
+
+describe('ShadingMaterial variants (defines) and recompiles', () => {
+  it('every shading × lighting × cel has its defines; needsUpdate only when they change', () => {
+    const m = new ShadingMaterial();
+    let version = m.version;
+    m.shininess = 5;
+    m.kd = [0.1, 0.1, 0.1];
+    expect(m.version).toBe(version); // uniforms only
+    m.shading = 'phong';
+    m.lighting = 'phong';
+    m.celBands = 0;
+    expect(m.version).toBe(version); // same variant
+    m.lighting = 'blinn-phong';
+    expect(m.version).toBe(++version);
+    expect(m.defines.LIGHTING_BLINN).toBe('');
+    m.shading = 'gouraud';
+    expect(m.version).toBe(++version);
+    expect(m.defines.SHADING_GOURAUD).toBe('');
+    expect(m.defines.SHADING_PHONG).toBeUndefined();
+    m.celBands = 3;
+    expect(m.version).toBe(++version);
+    expect(m.defines.CEL_BANDS).toBe(3);
+  });
+
+  it('lights, attenuation and analytic sphere normals enter the variant from the draw', () => {
+    const light = new PhongLight();
+    const m = new ShadingMaterial({ lights: [light, new PhongLight()] });
+    const mesh = new Mesh(sphere(), m);
+    draw(m, mesh);
+    expect(m.defines).toEqual({ SHADING_PHONG: '', CEL_BANDS: 0, NUM_LIGHTS: 2, SPHERE_NORMALS: '' });
+    const version = m.version;
+    draw(m, mesh);
+    expect(m.version).toBe(version);
+    light.attenuation = { a: 1, b: 0.1 };
+    draw(m, mesh);
+    expect(m.defines.USE_ATTENUATION).toBe('');
+    expect(m.version).toBe(version + 1);
+    draw(m, new Mesh(new IcosahedronGeometry(1, 1), m)); // has normals: attribute, not analytic
+    expect(m.defines.SPHERE_NORMALS).toBeUndefined();
+    m.shading = 'flat';
+    draw(m, mesh);
+    expect(m.defines.SPHERE_NORMALS).toBeUndefined(); // flat reads positions only
+  });
+
+  it('1,000 random option flips touch at most the 3·2·2 variants, and bump the version only on change', () => {
+    fc.assert(
+      fc.property(
+        fc.array(
+          fc.record({
+            shading: fc.constantFrom<Shading>('flat', 'gouraud', 'phong'),
+            lighting: fc.constantFrom('phong' as const, 'blinn-phong' as const),
+            celBands: fc.constantFrom(0, 4),
+          }),
+          { minLength: 1000, maxLength: 1000 },
+        ),
+        (flips) => {
+          const m = new ShadingMaterial();
+          const variants = new Set<string>();
+          let changes = 0;
+          let last = JSON.stringify(m.defines);
+          for (const f of flips) {
+            Object.assign(m, f);
+            const key = JSON.stringify(m.defines);
+            if (key !== last) changes++;
+            last = key;
+            variants.add(key);
+          }
+          expect(variants.size).toBeLessThanOrEqual(12);
+          // Each setter bumps at most once per actual change of the defines.
+          expect(m.version).toBeLessThanOrEqual(1 + 3 * changes);
+        },
+      ),
+      { numRuns: 5 },
+    );
+  });
+
+  it('flat shading refuses indexed geometry; gouraud and phong need normals unless a flagged sphere', () => {
+    const indexed = new BufferGeometry();
+    indexed.setAttribute('position', new Float32BufferAttribute([0, 0, 0, 1, 0, 0, 0, 1, 0], 3));
+    indexed.setIndex([0, 1, 2]);
+    const m = new ShadingMaterial({ shading: 'flat' });
+    expect(() => draw(m, new Mesh(indexed, m))).toThrow(/flat shading needs non-indexed geometry/);
+    const bare = indexed.toNonIndexed();
+    draw(m, new Mesh(bare, m)); // flat needs positions only
+    m.shading = 'gouraud';
+    expect(() => draw(m, new Mesh(bare, m))).toThrow(/gouraud shading needs a normal attribute/);
+  });
+});
+
+describe('ShadingMaterial per-draw uniforms', () => {
+  it('lights: world positions (parented, moved), kd·Id, ks·Is, Σ ka·Ia; no NaN', () => {
+    const parent = new Group();
+    parent.position.set(1, 2, 3);
+    const light = new PhongLight({
+      ambient: [0.5, 0.5, 0.5],
+      diffuse: [1, 0.5, 0.25],
+      specular: [0.2, 0.4, 0.8],
+    });
+    light.position.set(-5, 10, 20);
+    parent.add(light);
+    parent.updateMatrixWorld();
+    const other = new PhongLight();
+    other.updateMatrixWorld();
+    const m = new ShadingMaterial({
+      ka: [1, 1, 1],
+      kd: [0.5, 0.5, 0.5],
+      ks: [1, 1, 1],
+      lights: [light, other],
+    });
+    draw(m, new Mesh(sphere(), m));
+    const u = m.uniforms;
+    expect(Array.from(u.lightPosition.value)).toEqual([-4, 12, 23, 0, 0, 0]);
+    expect(Array.from(u.lightDiffuse.value as Float32Array).slice(0, 3)).toEqual([0.5, 0.25, 0.125]);
+    expect(Array.from(u.lightSpecular.value as Float32Array).slice(0, 3)).toEqual(
+      [0.2, 0.4, 0.8].map(Math.fround),
+    );
+    expect(Array.from(u.ambientTerm.value as Float32Array)).toEqual([0.7, 0.7, 0.7].map(Math.fround));
+    parent.position.x += 10;
+    parent.updateMatrixWorld();
+    draw(m, new Mesh(sphere(), m));
+    expect(u.lightPosition.value[0]).toBe(6);
+    expect(m.uniformsNeedUpdate).toBe(true);
+  });
+
+  it('a colour edited in place to NaN is refused before it reaches a uniform', () => {
+    const light = new PhongLight();
+    const m = new ShadingMaterial({ lights: [light] });
+    light.diffuse.r = Number.NaN;
+    expect(() => draw(m, new Mesh(sphere(), m))).toThrow(/PhongLight\.diffuse must have finite channels/);
+    light.diffuse.r = 1;
+    m.kd.g = -1;
+    expect(() => draw(m, new Mesh(sphere(), m))).toThrow(/ShadingMaterial\.kd/);
+  });
+
+  it('the normal matrix is the robust one of the world matrix (finite for a zero scale)', () => {
+    const m = new ShadingMaterial();
+    const mesh = new Mesh(sphere(), m);
+    mesh.scale.set(2, 1, 0);
+    draw(m, mesh);
+    const n: Matrix3 = m.uniforms.shadingNormalMatrix.value;
+    expect(n.elements).toEqual([0, 0, 0, 0, 0, 0, 0, 0, 1]);
+  });
+});
+
+describe('eyeOf', () => {
+  it('is the camera position for a perspective camera', () => {
+    const camera = new PerspectiveCamera(60, 1.5, 0.1, 100);
+    camera.position.set(1, 2, 3);
+    camera.lookAt(-4, 0, 1);
+    camera.updateMatrixWorld();
+    const e = eyeOf(camera, new Vector4());
+    expect(e.w).toBe(1);
+    expect(e.x).toBeCloseTo(1, 9);
+    expect(e.y).toBeCloseTo(2, 9);
+    expect(e.z).toBeCloseTo(3, 9);
+  });
+
+  it('is the camera’s backward (+w) axis for an orthographic camera', () => {
+    const camera = new OrthographicCamera(-2, 3, 1, -1, 0.5, 50);
+    camera.position.set(5, 5, 5);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    const e = eyeOf(camera, new Vector4());
+    expect(e.w).toBe(0);
+    const back = new Vector3(1, 1, 1).normalize();
+    expect(e.x).toBeCloseTo(back.x, 12);
+    expect(e.y).toBeCloseTo(back.y, 12);
+    expect(e.z).toBeCloseTo(back.z, 12);
+  });
+});
+
+describe('PhongLight', () => {
+  it('defaults to the lecture’s light and validates', () => {
+    const l = new PhongLight();
+    expect(l.ambient.toArray()).toEqual([0.2, 0.2, 0.2]);
+    expect(l.diffuse.toArray()).toEqual([1, 1, 1]);
+    expect(l.specular.toArray()).toEqual([0.8, 0.8, 0.8]);
+    expect(l.attenuation).toEqual({ a: 1, b: 0, c: 0 });
+    expect(l.attenuates).toBe(false);
+    expect(() => {
+      l.attenuation = { a: 0, b: 0, c: 0 };
+    }).toThrow(/a = b = c = 0/);
+    expect(() => {
+      l.attenuation = { b: -1 };
+    }).toThrow(new RangeError('PhongLight.attenuation.b must be a finite number ≥ 0, got -1'));
+    expect(() => {
+      l.attenuation = { c: Number.POSITIVE_INFINITY };
+    }).toThrow(/attenuation\.c/);
+    expect(() => new PhongLight({ specular: [0, 0, Number.NaN] })).toThrow(/PhongLight\.specular/);
+    l.attenuation = { a: 0, c: 2 };
+    expect(l.attenuation).toEqual({ a: 0, b: 0, c: 2 });
+    expect(l.attenuates).toBe(true);
+  });
+
+  it('clone keeps colours and attenuation', () => {
+    const l = new PhongLight({ diffuse: [0.1, 0.2, 0.3], attenuation: { b: 0.5 } });
+    l.position.set(1, 2, 3);
+    const c = l.clone();
+    expect(c.diffuse.toArray()).toEqual([0.1, 0.2, 0.3]);
+    expect(c.attenuation).toEqual({ a: 1, b: 0.5, c: 0 });
+    expect(c.position.toArray()).toEqual([1, 2, 3]);
+    expect(c.diffuse).not.toBe(l.diffuse);
+  });
+
+  it('a material clone keeps its options', () => {
+    const light = new PhongLight();
+    const m = new ShadingMaterial({
+      shading: 'flat',
+      lighting: 'blinn-phong',
+      celBands: 3,
+      shininess: 7,
+      lights: [light],
+    });
+    const c = m.clone();
+    expect([c.shading, c.lighting, c.celBands, c.shininess]).toEqual(['flat', 'blinn-phong', 3, 7]);
+    expect(c.phongLights).toEqual([light]);
+    expect(c.defines).toEqual(m.defines);
+  });
+});
