@@ -25,6 +25,19 @@ export function App() {
   const viewerRef = useRef<Viewer | null>(null);
   const feed = useMemo(() => new StatsFeed(), []);
   const goodState = useRef<PlaygroundState | null>(null);
+  const [renderError, setRenderError] = useState<string | null>(null);
+
+  const refreshVariant = useCallback((viewer: Viewer) => {
+    const next = viewer.getShaderSource();
+    setVariant((previous) =>
+      previous &&
+      previous.key === next.key &&
+      previous.vertexShader === next.vertexShader &&
+      previous.fragmentShader === next.fragmentShader
+        ? previous
+        : next,
+    );
+  }, []);
 
   const update: Update = useCallback((mutate) => {
     setState((previous) => {
@@ -38,12 +51,15 @@ export function App() {
   useEffect(() => {
     const canvas = canvasRef.current!;
     const viewer = new Viewer(canvas, {
-      onView: ({ eye, at, rotation }) =>
+      onView: ({ eye, at, zoom, rotation }) =>
         update((d) => {
           d.camera.eye = eye;
           d.camera.at = at;
+          d.camera.zoom = zoom;
           d.trackball.rotation = rotation;
         }),
+      onVariant: () => refreshVariant(viewer),
+      onRenderError: (message) => setRenderError(message),
       onStats: (stats) => feed.push(stats),
       onContext: (status) => setContext(status),
       onFirstFrame: (ms) => {
@@ -62,7 +78,7 @@ export function App() {
       viewer.dispose();
       viewerRef.current = null;
     };
-  }, [feed, update]);
+  }, [feed, update, refreshVariant]);
 
   // Every state change: validate against the schema, apply what changed, persist when it all held.
   useEffect(() => {
@@ -76,21 +92,13 @@ export function App() {
     setSchemaError(null);
     const errors = viewer.apply(checked.state);
     setSectionErrors(errors);
-    const next = viewer.getShaderSource();
-    setVariant((previous) =>
-      previous &&
-      previous.key === next.key &&
-      previous.vertexShader === next.vertexShader &&
-      previous.fragmentShader === next.fragmentShader
-        ? previous
-        : next,
-    );
+    refreshVariant(viewer);
     if (Object.keys(errors).length === 0) {
       goodState.current = checked.state;
       const timer = window.setTimeout(() => saveState(checked.state), 150);
       return () => window.clearTimeout(timer);
     }
-  }, [state]);
+  }, [state, refreshVariant]);
 
   const actions = useMemo(
     () => ({
@@ -129,6 +137,7 @@ export function App() {
   const errors = [
     ...(schemaError ? [`Not applied: ${schemaError}`] : []),
     ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
+    ...(renderError ? [`render: ${renderError}`] : []),
   ];
   const standIns = Object.entries(REAL_PACKAGES)
     .filter(([, real]) => !real)

@@ -26,6 +26,7 @@ import {
   setCameraView,
   setTrackballMapping,
   setTrackballRotation,
+  sphereKey,
   type TrackballHandle,
   updateMaterialLights,
   type ViewCamera,
@@ -52,7 +53,11 @@ export type SectionErrors = Partial<Record<string, string>>;
 
 export interface ViewerEvents {
   /** The camera moved (movement keys) or the trackball turned; the new values for the state. */
-  onView?: (view: { eye: Vec3; at: Vec3; rotation: [number, number, number, number] }) => void;
+  onView?: (view: { eye: Vec3; at: Vec3; zoom: number; rotation: [number, number, number, number] }) => void;
+  /** Drawing failed (the message), or succeeded again (null). */
+  onRenderError?: (message: string | null) => void;
+  /** The compiled variant changed (its key and generated GLSL). */
+  onVariant?: () => void;
   onStats?: (stats: FrameStats) => void;
   onContext?: (status: 'lost' | 'restored') => void;
   onFirstFrame?: (ms: number) => void;
@@ -65,6 +70,9 @@ export const COMPARE_COLUMNS = [
   { label: 'Phong', shading: 'phong', cel: false },
   { label: 'cel', shading: 'phong', cel: true },
 ] as const;
+
+/** Inverted-hull outline thickness, as a fraction of the radius. */
+const OUTLINE_WIDTH = 0.03;
 
 const _size = /* @__PURE__ */ new THREE.Vector2();
 const _pixel = /* @__PURE__ */ new Uint8Array(4);
@@ -81,13 +89,15 @@ export class Viewer {
   readonly mover: Mover;
 
   private readonly compareMaterials: Material[];
-  private outline: THREE.Material | null = null;
+  private readonly outline: THREE.Mesh;
   private lights: Light[] = [];
   private markers: THREE.Mesh[] = [];
   private readonly markerGeometry = new THREE.SphereGeometry(0.08, 12, 8);
   private readonly markerMaterial = new THREE.MeshBasicMaterial({ color: 0xffee88 });
-  private geometry: THREE.BufferGeometry | null = null;
-  private geometryKey = '';
+  /** Sphere geometries of the current base and level, by {@link sphereKey}. */
+  private geometries = new Map<string, THREE.BufferGeometry>();
+  private sphere: { base: PlaygroundState['sphere']['base']; level: number } | null = null;
+  private reportedVariant = '';
   private state: PlaygroundState | null = null;
   private errors: SectionErrors = {};
   private frames = 0;
@@ -103,6 +113,7 @@ export class Viewer {
   private scheduled = 0;
   private disposed = false;
   private contextLost = false;
+  private renderError = false;
 
   constructor(
     readonly canvas: HTMLCanvasElement,
@@ -116,7 +127,9 @@ export class Viewer {
     this.material = createMaterial();
     this.compareMaterials = COMPARE_COLUMNS.map(() => createMaterial());
     this.mesh = new THREE.Mesh(new THREE.BufferGeometry(), this.material);
-    this.pivot.add(this.mesh);
+    this.outline = new THREE.Mesh(this.mesh.geometry, createOutline());
+    this.outline.visible = false;
+    this.pivot.add(this.mesh, this.outline);
     this.scene.add(this.pivot);
     this.trackball = createTrackball(this.pivot, this.camera);
     this.mover = createMover(this.camera);
@@ -131,16 +144,35 @@ export class Viewer {
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
   }
 
-  private readonly onTrackballChange = () => this.requestRender();
+  private viewTimer = 0;
+  private readonly onTrackballChange = () => {
+    this.requestRender();
+    // Wheel zoom has no drag to end: report the view once the wheel rests.
+    window.clearTimeout(this.viewTimer);
+    this.viewTimer = window.setTimeout(this.onViewEnd, 250);
+  };
+  /** The movement keys translate the camera: `at` moves with the eye. */
   private readonly onMoverChange = () => {
     this.requestRender();
-    this.onViewEnd();
-  };
-  private readonly onViewEnd = () => {
     if (!this.state) return;
-    const distance = Math.hypot(...this.state.camera.eye.map((x, i) => x - this.state!.camera.at[i]!));
-    const { eye, at } = getCameraEye(this.camera, distance || 1);
-    this.events.onView?.({ eye, at, rotation: getTrackballRotation(this.pivot) });
+    const { eye } = getCameraEye(this.camera);
+    const c = this.state.camera;
+    const at: Vec3 = [0, 1, 2].map((i) => c.at[i]! + eye[i]! - c.eye[i]!) as Vec3;
+    this.events.onView?.({ eye, at, zoom: c.zoom, rotation: getTrackballRotation(this.pivot) });
+  };
+  /** The trackball turned the sphere or zoomed (perspective: the eye moves towards `at`; orthographic: zoom). */
+  private readonly onViewEnd = () => {
+    window.clearTimeout(this.viewTimer);
+    if (!this.state) return;
+    const { eye, zoom } = getCameraEye(this.camera);
+    const c = this.state.camera;
+    const ortho = c.projection === 'orthographic';
+    this.events.onView?.({
+      eye: ortho ? c.eye : eye,
+      at: c.at,
+      zoom: ortho ? zoom : c.zoom,
+      rotation: getTrackballRotation(this.pivot),
+    });
   };
   private readonly onContextLost = () => {
     this.contextLost = true;
@@ -181,7 +213,6 @@ export class Viewer {
             this.lights,
           );
         });
-        this.syncOutline(state.material.outline && state.material.celBands > 0);
         this.captureGenerated();
       });
     }
@@ -189,6 +220,7 @@ export class Viewer {
     attempt('model', () => {
       const [x, y, z] = state.model.scale;
       this.mesh.scale.set(x, y, z);
+      this.outline.scale.set(x, y, z).multiplyScalar(1 + OUTLINE_WIDTH);
     });
     attempt('camera', () => this.applyCamera(state));
     attempt('sphere', () => this.applySphere(state));
@@ -201,7 +233,9 @@ export class Viewer {
         setTrackballRotation(this.pivot, state.trackball.rotation);
       }
     });
-    this.mover.speed = state.camera.moveSpeed;
+    attempt('camera', () => {
+      this.mover.moveSpeed = state.camera.moveSpeed;
+    });
     this.errors = errors;
     this.requestRender();
     return errors;
@@ -248,9 +282,9 @@ export class Viewer {
     } else if (c.fitAspect) {
       const half = ((c.top - c.bottom) / 2) * aspect;
       const mid = (c.right + c.left) / 2;
-      setCameraOrthographic(this.camera, mid + half, mid - half, c.top, c.bottom, c.near, c.far);
+      setCameraOrthographic(this.camera, mid + half, mid - half, c.top, c.bottom, c.near, c.far, c.zoom);
     } else {
-      setCameraOrthographic(this.camera, c.right, c.left, c.top, c.bottom, c.near, c.far);
+      setCameraOrthographic(this.camera, c.right, c.left, c.top, c.bottom, c.near, c.far, c.zoom);
     }
   }
 
@@ -271,21 +305,28 @@ export class Viewer {
       this.lastDetail = chooseDetail(this.radiusPx(state), state.sphere.maxErrorPx);
       ({ base, level } = this.lastDetail);
     }
-    const key = `${base}:${level}`;
-    if (key === this.geometryKey) return;
-    const geometry = createSphere(base, level);
-    this.geometry?.dispose();
-    this.geometry = geometry;
-    this.geometryKey = key;
-    this.mesh.geometry = geometry;
+    const shadings =
+      state.view === 'compare' ? COMPARE_COLUMNS.map((c) => c.shading) : [state.material.shading];
+    // Build first (a refused level throws here and the previous sphere stays), then swap.
+    const wanted = new Map<string, THREE.BufferGeometry>();
+    for (const shading of shadings) {
+      const key = sphereKey(base, level, shading);
+      if (wanted.has(key)) continue;
+      wanted.set(key, this.geometries.get(key) ?? createSphere(base, level, shading));
+    }
+    for (const [key, geometry] of this.geometries) if (!wanted.has(key)) geometry.dispose();
+    this.geometries = wanted;
+    this.sphere = { base, level };
+    this.applyGeometry(state.material.shading);
   }
 
-  private syncOutline(on: boolean) {
-    if (on && !this.outline) this.outline = createOutline(this.material);
-    if (!on && this.outline) {
-      this.outline.dispose();
-      this.outline = null;
-    }
+  /** Puts the sphere geometry for `shading` on the mesh (and its outline). */
+  private applyGeometry(shading: PlaygroundState['material']['shading']) {
+    if (!this.sphere) return;
+    const geometry = this.geometries.get(sphereKey(this.sphere.base, this.sphere.level, shading));
+    if (!geometry) return;
+    this.mesh.geometry = geometry;
+    this.outline.geometry = geometry;
   }
 
   // ---- shader editing ------------------------------------------------------------------------------------
@@ -369,27 +410,16 @@ export class Viewer {
     } catch {
       // The camera section already reported the error; keep the last good projection.
     }
-    if (columns === 1) {
+    try {
+      this.draw(w, h, columns);
+      if (this.renderError) this.events.onRenderError?.(null);
+      this.renderError = false;
+    } catch (error) {
+      // A throw from inside three (e.g. a material's onBeforeRender) must not stop the next frames.
+      this.renderError = true;
+      this.renderer.setScissorTest(false);
       this.mesh.material = this.material;
-      updateMaterialLights(this.material);
-      renderer.setScissorTest(false);
-      renderer.setViewport(0, 0, w, h);
-      renderer.render(this.scene, this.camera);
-    } else {
-      renderer.setScissorTest(true);
-      const cw = w / columns;
-      for (let i = 0; i < columns; i++) {
-        const material = this.compareMaterials[i]!;
-        this.mesh.material = material;
-        updateMaterialLights(material);
-        const x = Math.round(i * cw);
-        const next = Math.round((i + 1) * cw);
-        renderer.setViewport(x, 0, next - x, h);
-        renderer.setScissor(x, 0, next - x, h);
-        renderer.render(this.scene, this.camera);
-      }
-      renderer.setScissorTest(false);
-      this.mesh.material = this.material;
+      this.events.onRenderError?.(error instanceof Error ? error.message : String(error));
     }
     this.endGpuQuery(gl, query);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, _pixel);
@@ -403,6 +433,45 @@ export class Viewer {
       this.events.onFirstFrame?.(ms);
     }
     this.events.onStats?.(this.stats(cpuMs));
+    // The material settles some defines while drawing (analytic sphere normals, attenuation).
+    const key = variantKey(this.material);
+    if (key !== this.reportedVariant) {
+      this.reportedVariant = key;
+      this.captureGenerated();
+      this.events.onVariant?.();
+    }
+  }
+
+  private draw(w: number, h: number, columns: number) {
+    const { renderer } = this;
+    const state = this.state!;
+    this.outline.visible = state.material.outline && state.material.celBands > 0;
+    if (columns === 1) {
+      this.mesh.material = this.material;
+      this.applyGeometry(state.material.shading);
+      updateMaterialLights(this.material);
+      renderer.setScissorTest(false);
+      renderer.setViewport(0, 0, w, h);
+      renderer.render(this.scene, this.camera);
+    } else {
+      renderer.setScissorTest(true);
+      const cw = w / columns;
+      for (let i = 0; i < columns; i++) {
+        const material = this.compareMaterials[i]!;
+        this.mesh.material = material;
+        this.applyGeometry(COMPARE_COLUMNS[i]!.shading);
+        this.outline.visible = COMPARE_COLUMNS[i]!.cel && state.material.outline;
+        updateMaterialLights(material);
+        const x = Math.round(i * cw);
+        const next = Math.round((i + 1) * cw);
+        renderer.setViewport(x, 0, next - x, h);
+        renderer.setScissor(x, 0, next - x, h);
+        renderer.render(this.scene, this.camera);
+      }
+      renderer.setScissorTest(false);
+      this.mesh.material = this.material;
+      this.applyGeometry(state.material.shading);
+    }
   }
 
   private stats(cpuMs: number): FrameStats {
@@ -481,12 +550,13 @@ export class Viewer {
     this.trackball.dispose();
     this.mover.dispose();
     this.probe.dispose();
-    this.geometry?.dispose();
+    window.clearTimeout(this.viewTimer);
+    for (const geometry of this.geometries.values()) geometry.dispose();
     this.markerGeometry.dispose();
     this.markerMaterial.dispose();
     this.material.dispose();
     for (const m of this.compareMaterials) m.dispose();
-    this.outline?.dispose();
+    (this.outline.material as THREE.Material).dispose();
     this.renderer.dispose();
   }
 }

@@ -2,26 +2,35 @@
  * The one place the playground touches the shadelab packages. Everything else calls these functions, so a
  * package's API change (or swapping a stand-in for the real package) is a change to this file only.
  */
+
+import { Camera, CameraMovement } from '@shadelab/camera';
+import { PhongLight, ShadingMaterial } from '@shadelab/material';
+import { Trackball } from '@shadelab/trackball';
 import * as THREE from 'three';
-import type { LightState, PlaygroundState, SphereBase, TrackballMapping, Vec3 } from '../state/schema';
-import {
-  StandInCamera,
-  StandInLight,
-  StandInMaterial,
-  StandInMover,
-  StandInTrackball,
-  standInSphere,
-  vec,
-} from './standins';
+import type {
+  LightState,
+  PlaygroundState,
+  Shading,
+  SphereBase,
+  TrackballMapping,
+  Vec3,
+} from '../state/schema';
+import { standInSphere } from './standins';
 
 /** Which packages are real (false = a three.js stand-in is used); shown on the page. */
-export const REAL_PACKAGES = { sphere: false, camera: false, trackball: false, material: false };
+export const REAL_PACKAGES = { sphere: false, camera: true, trackball: true, material: true };
 
 // ---- sphere ------------------------------------------------------------------------------------------------
 
-export function createSphere(base: SphereBase, level: number): THREE.BufferGeometry {
+/** The unit sphere for `shading`: non-indexed for flat, indexed without normals (analytic) otherwise. */
+export function createSphere(base: SphereBase, level: number, _shading: Shading): THREE.BufferGeometry {
   if (!Number.isInteger(level) || level < 0) throw new RangeError(`level: ${level} is not an integer ≥ 0`);
   return standInSphere(base, level);
+}
+
+/** The geometry a shading needs differs only between flat and the others. */
+export function sphereKey(base: SphereBase, level: number, shading: Shading): string {
+  return `${base}:${level}:${shading === 'flat' ? 'faces' : 'shared'}`;
 }
 
 export interface Detail {
@@ -44,18 +53,15 @@ export function chooseDetail(radiusPx: number, maxErrorPx: number): Detail {
 
 // ---- camera -------------------------------------------------------------------------------------------------
 
-export type ViewCamera = StandInCamera;
+export type ViewCamera = Camera;
 
 export function createCamera(): ViewCamera {
-  return new StandInCamera();
+  return new Camera({ fovy: 90, aspect: 1, near: 0.1, far: 10 });
 }
 
+/** The lecture's `lookAt(eye, at, up)`; throws a RangeError naming the bad argument. */
 export function setCameraView(camera: ViewCamera, eye: Vec3, at: Vec3, up: Vec3): void {
-  if (eye.every((x, i) => x === at[i])) throw new RangeError(`lookAt: eye (${eye}) equals at`);
-  camera.position.copy(vec(eye));
-  camera.up.copy(vec(up));
-  camera.lookAt(vec(at));
-  camera.updateMatrixWorld(true);
+  camera.lookAt(eye, at, up);
 }
 
 export function setCameraPerspective(
@@ -64,14 +70,10 @@ export function setCameraPerspective(
   aspect: number,
   near: number,
   far: number,
+  zoom = 1,
 ) {
-  if (!(fovy > 0 && fovy < 180)) throw new RangeError(`fovy: ${fovy} is outside (0, 180) degrees`);
-  if (!(near > 0)) throw new RangeError(`near: ${near} is not > 0`);
-  if (!(far > near)) throw new RangeError(`far: ${far} is not > near (${near})`);
-  const top = near * Math.tan(THREE.MathUtils.degToRad(fovy / 2));
-  camera.projectionMatrix.makePerspective(-top * aspect, top * aspect, top, -top, near, far);
-  camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
-  camera.isOrthographic = false;
+  camera.zoom = zoom;
+  camera.setPerspective(fovy, aspect, near, far);
 }
 
 export function setCameraOrthographic(
@@ -82,59 +84,46 @@ export function setCameraOrthographic(
   b: number,
   n: number,
   f: number,
+  zoom = 1,
 ) {
-  if (r === l) throw new RangeError(`r: ${r} equals l`);
-  if (t === b) throw new RangeError(`t: ${t} equals b`);
-  if (!(f > n)) throw new RangeError(`far: ${f} is not > near (${n})`);
-  camera.projectionMatrix.makeOrthographic(l, r, t, b, n, f);
-  camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
-  camera.isOrthographic = true;
+  camera.zoom = zoom;
+  camera.setOrthographic(r, l, t, b, n, f);
 }
 
-/** The camera's eye, and an `at` on its gaze at `distance`, after the movement keys moved it. */
-export function getCameraEye(camera: ViewCamera, distance: number): { eye: Vec3; at: Vec3 } {
-  camera.updateMatrixWorld(true);
-  const e = camera.matrixWorld.elements;
-  const eye: Vec3 = [e[12]!, e[13]!, e[14]!];
-  const at: Vec3 = [eye[0] - e[8]! * distance, eye[1] - e[9]! * distance, eye[2] - e[10]! * distance];
-  return { eye, at };
+/** The camera's eye (after movement keys or a perspective zoom) and its zoom (after an orthographic zoom). */
+export function getCameraEye(camera: ViewCamera): { eye: Vec3; zoom: number } {
+  const { e } = camera.getFrame();
+  return { eye: [e.x, e.y, e.z], zoom: camera.zoom };
 }
 
 export interface Mover extends THREE.EventDispatcher<{ change: object }> {
-  speed: number;
+  moveSpeed: number;
   connect(element: HTMLElement): void;
   disconnect(): void;
   dispose(): void;
 }
 
-/** Keys that move the camera (documented on the page). */
-export const MOVE_KEYS = 'W/S forward/back, A/D left/right, R/F up/down';
+/** Keys that move the camera (documented on the page; @shadelab/camera's MOVEMENT_KEYS). */
+export const MOVE_KEYS = 'W/S or ↑/↓ forward/back, A/D or ←/→ left/right, E/Q up/down';
 
+/** Keyboard movement only: the pointer drag belongs to the trackball, so the gaze turn is off. */
 export function createMover(camera: ViewCamera): Mover {
-  return new StandInMover(camera);
+  return new CameraMovement(camera, null, { turnSpeed: 0 });
 }
 
 // ---- trackball ----------------------------------------------------------------------------------------------
 
-export interface TrackballHandle
-  extends THREE.EventDispatcher<{ change: object; start: object; end: object }> {
-  rotateSpeed: number;
-  zoomSpeed: number;
-  enabled: boolean;
-  connect(element: HTMLElement): void;
-  disconnect(): void;
-  dispose(): void;
-}
+export type TrackballHandle = Trackball;
 
 export function createTrackball(object: THREE.Object3D, camera: ViewCamera): TrackballHandle {
-  return new StandInTrackball(object, camera);
+  return new Trackball(object, null, { camera, mapping: 'arcball' });
 }
 
-export function setTrackballMapping(_trackball: TrackballHandle, _mapping: TrackballMapping): void {
-  // The stand-in has one mapping.
+export function setTrackballMapping(trackball: TrackballHandle, mapping: TrackballMapping): void {
+  trackball.mapping = mapping;
 }
 
-/** The trackball's accumulated rotation as [x, y, z, w]. */
+/** The object's rotation (what the trackball turned) as [x, y, z, w]. */
 export function getTrackballRotation(object: THREE.Object3D): [number, number, number, number] {
   return object.quaternion.toArray() as [number, number, number, number];
 }
@@ -146,50 +135,63 @@ export function setTrackballRotation(object: THREE.Object3D, q: [number, number,
 
 // ---- material -----------------------------------------------------------------------------------------------
 
-export type Light = StandInLight;
-export type Material = StandInMaterial;
+export type Light = PhongLight;
+export type Material = ShadingMaterial;
 
 export function createLight(): Light {
-  return new StandInLight();
+  return new PhongLight();
 }
 
 export function applyLight(light: Light, state: LightState): void {
-  const { a, b, c } = state.attenuation;
-  if (a === 0 && b === 0 && c === 0) throw new RangeError('attenuation: a = b = c = 0 would divide by zero');
   light.position.set(...state.position);
-  light.ambient.setRGB(...state.ambient);
-  light.diffuse.setRGB(...state.diffuse);
-  light.specular.setRGB(...state.specular);
-  light.attenuation = { a, b, c };
+  light.ambient = state.ambient;
+  light.diffuse = state.diffuse;
+  light.specular = state.specular;
+  light.attenuation = state.attenuation;
   light.updateMatrixWorld(true);
 }
 
 export type MaterialOptions = PlaygroundState['material'];
 
 export function createMaterial(): Material {
-  return new StandInMaterial();
+  return new ShadingMaterial();
 }
 
 export function applyMaterial(material: Material, options: MaterialOptions, lights: Light[]): void {
   material.shading = options.shading;
   material.lighting = options.lighting;
   material.celBands = options.celBands;
+  material.ka = options.ka;
+  material.kd = options.kd;
+  material.ks = options.ks;
+  material.shininess = options.shininess;
   material.phongLights = lights;
-  material.setColors(options.ka, options.kd, options.ks, options.shininess);
-  material.syncDefines();
 }
 
-/** Called before each render: light positions are read every frame. */
-export function updateMaterialLights(material: Material): void {
-  material.syncLights();
-}
+/** Light positions are read by the material itself every frame (onBeforeRender). */
+export function updateMaterialLights(_material: Material): void {}
 
-/** A key naming the compiled variant, so per-variant shader edits are kept apart. */
+/** A key naming the compiled variant (its defines), so per-variant shader edits are kept apart. */
 export function variantKey(material: Material): string {
-  return JSON.stringify(material.defines ?? {});
+  const defines = material.defines ?? {};
+  return Object.keys(defines)
+    .sort()
+    .map((k) => `${k}=${String(defines[k])}`)
+    .join(',');
 }
 
-/** An outline for cel shading, or null when the material package offers none. */
-export function createOutline(_material: Material): THREE.Material | null {
-  return null;
+/**
+ * Flat shading evaluates once per face, so it needs non-indexed triangles; Gouraud and Phong read the
+ * sphere's analytic normal (no normal attribute needed).
+ */
+export function needsNonIndexed(shading: Shading): boolean {
+  return shading === 'flat';
+}
+
+/**
+ * An inverted-hull outline for cel shading (the material package has none): the back faces of the
+ * sphere, pushed out by `width` of the radius, in black.
+ */
+export function createOutline(): THREE.Material {
+  return new THREE.MeshBasicMaterial({ color: 0x000000, side: THREE.BackSide });
 }

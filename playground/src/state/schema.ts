@@ -66,6 +66,8 @@ export interface PlaygroundState {
     top: number;
     bottom: number;
     fitAspect: boolean;
+    /** Zoom factor (the trackball's wheel zoom of an orthographic camera). */
+    zoom: number;
     /** Movement keys' speed, world units per key press. */
     moveSpeed: number;
   };
@@ -124,6 +126,7 @@ export function defaultState(): PlaygroundState {
       top: 1.5,
       bottom: -1.5,
       fitAspect: true,
+      zoom: 1,
       moveSpeed: 0.1,
     },
     trackball: { mapping: 'arcball', rotateSpeed: 1, zoomSpeed: 1, rotation: [0, 0, 0, 1] },
@@ -282,6 +285,7 @@ const stateParser = object<PlaygroundState>({
     top: num(-1e4, 1e4),
     bottom: num(-1e4, 1e4),
     fitAspect: bool,
+    zoom: num(0.01, 100),
     moveSpeed: num(0, 100, { openMin: true }),
   }),
   trackball: object({
