@@ -1,5 +1,11 @@
 import type { Quat, Vec3 } from './types.js';
 
+/** |v|: a plain square root (fast), Math.hypot only where the squares overflow or underflow. */
+function length(v: Readonly<Vec3>): number {
+  const s = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  return s > 1e-300 && s < Number.POSITIVE_INFINITY ? Math.sqrt(s) : Math.hypot(v[0], v[1], v[2]);
+}
+
 /**
  * The rotation that carries ball point `a` toward ball point `b` (three-free, allocation-free with `out`).
  *
@@ -23,8 +29,8 @@ export function arcRotation(a: Readonly<Vec3>, b: Readonly<Vec3>, speed = 1, out
   if (!(speed >= 0 && speed < Number.POSITIVE_INFINITY)) {
     throw new RangeError(`arcRotation: speed must be a finite number ≥ 0, got ${speed}`);
   }
-  const la = Math.hypot(a[0], a[1], a[2]);
-  const lb = Math.hypot(b[0], b[1], b[2]);
+  const la = length(a);
+  const lb = length(b);
   if (!(la > 0 && la < Number.POSITIVE_INFINITY)) {
     throw new RangeError(`arcRotation: a must be a finite non-zero vector, got [${a.join(', ')}]`);
   }
@@ -40,7 +46,7 @@ export function arcRotation(a: Readonly<Vec3>, b: Readonly<Vec3>, speed = 1, out
   let cx = ay * bz - az * by;
   let cy = az * bx - ax * bz;
   let cz = ax * by - ay * bx;
-  const sin = Math.hypot(cx, cy, cz);
+  const sin = Math.sqrt(cx * cx + cy * cy + cz * cz);
   const cos = ax * bx + ay * by + az * bz;
   const theta = Math.atan2(sin, cos);
   const half = speed * theta;
@@ -66,7 +72,7 @@ export function arcRotation(a: Readonly<Vec3>, b: Readonly<Vec3>, speed = 1, out
       cy = -ax;
       cz = 0;
     }
-    const l = Math.hypot(cx, cy, cz);
+    const l = Math.sqrt(cx * cx + cy * cy + cz * cz);
     cx /= l;
     cy /= l;
     cz /= l;

@@ -8,7 +8,8 @@ import type { Quat } from './types.js';
  * @returns `q`.
  */
 export function normalizeQuaternion(q: Quat): Quat {
-  const l = Math.hypot(q[0], q[1], q[2], q[3]);
+  const s = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  const l = s > 1e-300 && s < Number.POSITIVE_INFINITY ? Math.sqrt(s) : Math.hypot(q[0], q[1], q[2], q[3]);
   if (!(l > 0 && l < Number.POSITIVE_INFINITY)) {
     q[0] = 0;
     q[1] = 0;

@@ -29,13 +29,14 @@ export function projectToBall(
 ): Vec3 {
   if (!Number.isFinite(x)) throw new RangeError(`projectToBall: x must be a finite number, got ${x}`);
   if (!Number.isFinite(y)) throw new RangeError(`projectToBall: y must be a finite number, got ${y}`);
-  // hypot avoids overflow for pointers far outside the ball.
-  const r = Math.hypot(x, y);
+  // The plain square root is several times faster than Math.hypot; hypot only when the squares overflow.
+  const r2 = x * x + y * y;
+  const r = r2 < Number.POSITIVE_INFINITY ? Math.sqrt(r2) : Math.hypot(x, y);
   if (mapping === 'arcball') {
     if (r <= 1) {
       out[0] = x;
       out[1] = y;
-      out[2] = Math.sqrt(Math.max(0, 1 - r * r));
+      out[2] = Math.sqrt(Math.max(0, 1 - r2));
     } else {
       out[0] = x / r;
       out[1] = y / r;
@@ -46,7 +47,7 @@ export function projectToBall(
   if (mapping === 'bell') {
     out[0] = x;
     out[1] = y;
-    out[2] = r * r <= SQRT1_2_SQ ? Math.sqrt(1 - r * r) : 0.5 / r;
+    out[2] = r2 <= SQRT1_2_SQ ? Math.sqrt(1 - r2) : 0.5 / r;
     return out;
   }
   throw new TypeError(`projectToBall: mapping must be 'arcball' or 'bell', got ${String(mapping)}`);
