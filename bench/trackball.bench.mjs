@@ -30,11 +30,22 @@ const points = new Float64Array(2 * N);
 }
 
 // ── speed: the pure core, one drag step = 2 × projectToBall + arcRotation + multiply + normalise ──
+/** @typedef {import('../packages/trackball/dist/index.js').BallMapping} BallMapping */
+/** @typedef {import('../packages/trackball/dist/index.js').Vec3} Vec3 */
+/** @typedef {import('../packages/trackball/dist/index.js').Quat} Quat */
+/** @type {BallMapping[]} */
+const MAPPINGS = ['arcball', 'bell'];
+
+/** @type {Record<string, { medianNs: number, minNs: number, maxNs: number }>} */
 const core = {};
-for (const mapping of ['arcball', 'bell']) {
+for (const mapping of MAPPINGS) {
+  /** @type {Vec3} */
   const a = [0, 0, 1];
+  /** @type {Vec3} */
   const b = [0, 0, 1];
+  /** @type {Quat} */
   const dq = [0, 0, 0, 1];
+  /** @type {Quat} */
   const q = [0, 0, 0, 1];
   const t = measure(
     () => {
@@ -47,7 +58,7 @@ for (const mapping of ['arcball', 'bell']) {
     },
     { warmup: 5, runs: 21 },
   );
-  const per = (ms) => (ms * 1e6) / (N - 1);
+  const per = (/** @type {number} */ ms) => (ms * 1e6) / (N - 1);
   core[mapping] = { medianNs: per(t.median), minNs: per(t.min), maxNs: per(t.max) };
 }
 
@@ -62,18 +73,23 @@ const element = Object.assign(new FakeTarget(), {
   releasePointerCapture() {},
   hasPointerCapture: () => true,
 });
-const pointerEvent = (type, x, y) =>
+const pointerEvent = (/** @type {string} */ type, /** @type {number} */ x, /** @type {number} */ y) =>
   Object.assign(new Event(type), { pointerId: 1, pointerType: 'mouse', button: 0, clientX: x, clientY: y });
 const camera = new PerspectiveCamera();
 camera.position.set(1, 2, 5);
 camera.lookAt(0, 0, 0);
 const mesh = new Mesh();
+/** @type {Event[]} */
 const moves = [];
 for (let i = 0; i < 1000; i++)
   moves.push(pointerEvent('pointermove', 250 + 200 * Math.cos(i / 50), 250 + 150 * Math.sin(i / 30)));
+/** @type {Record<string, { medianUs: number, minUs: number, maxUs: number }>} */
 const handler = {};
-for (const mapping of ['arcball', 'bell']) {
-  const tb = new Trackball(mesh, element, { camera, mapping });
+for (const mapping of MAPPINGS) {
+  const tb = new Trackball(mesh, /** @type {HTMLElement} */ (/** @type {unknown} */ (element)), {
+    camera,
+    mapping,
+  });
   let changes = 0;
   tb.addEventListener('change', () => changes++);
   element.dispatchEvent(pointerEvent('pointerdown', 250, 250));
@@ -86,7 +102,7 @@ for (const mapping of ['arcball', 'bell']) {
   doc.dispatchEvent(pointerEvent('pointerup', 250, 250));
   tb.dispose();
   if (changes === 0) throw new Error('the trackball did not react to the synthetic moves');
-  const per = (ms) => (ms * 1e3) / moves.length;
+  const per = (/** @type {number} */ ms) => (ms * 1e3) / moves.length;
   handler[mapping] = { medianUs: per(t.median), minUs: per(t.min), maxUs: per(t.max) };
 }
 
@@ -110,6 +126,7 @@ for (const px of [1, 0.1, 0.01, 1e-3, 1e-4]) {
 }
 
 // ── accuracy: drift of the accumulated rotation over many drags, renormalised or not ──
+/** @param {Quat} qa */
 function orthonormalError(qa) {
   const m = new Quaternion(...qa);
   const { x, y, z, w } = m;
@@ -117,7 +134,8 @@ function orthonormalError(qa) {
   const c0 = [1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w)];
   const c1 = [2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w)];
   const c2 = [2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y)];
-  const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  const dot = (/** @type {number[]} */ u, /** @type {number[]} */ v) =>
+    u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
   return Math.max(
     Math.abs(dot(c0, c0) - 1),
     Math.abs(dot(c1, c1) - 1),
@@ -129,11 +147,15 @@ function orthonormalError(qa) {
 }
 const drift = [];
 for (const drags of [1e3, 1e5, 1e6]) {
-  const row = { drags };
+  const row = { drags, renormalised: 0, notRenormalised: 0 };
   for (const renormalise of [true, false]) {
+    /** @type {Quat} */
     const q = [0, 0, 0, 1];
+    /** @type {Vec3} */
     const a = [0, 0, 1];
+    /** @type {Vec3} */
     const b = [0, 0, 1];
+    /** @type {Quat} */
     const dq = [0, 0, 0, 1];
     for (let i = 0; i < drags; i++) {
       const j = (2 * i) % (2 * N - 4);
