@@ -125,6 +125,21 @@ for (const px of [1, 0.1, 0.01, 1e-3, 1e-4]) {
   });
 }
 
+// ── feel: rotation of a one-pixel radial move at distance r from the centre, 500 px ball (radius 250 px) ──
+const RADIUS_PX = 250;
+const perPixel = [];
+for (const rPx of [0, 125, 176, 200, 240, 248, 249, 250, 300, 500]) {
+  /** @type {Record<string, number>} */
+  const row = { rPx };
+  for (const mapping of MAPPINGS) {
+    const a = projectToBall(rPx / RADIUS_PX, 0, mapping);
+    const b = projectToBall((rPx + 1) / RADIUS_PX, 0, mapping);
+    const q = arcRotation(a, b);
+    row[`${mapping}Deg`] = (2 * Math.atan2(Math.hypot(q[0], q[1], q[2]), Math.abs(q[3])) * 180) / Math.PI;
+  }
+  perPixel.push(row);
+}
+
 // ── accuracy: drift of the accumulated rotation over many drags, renormalised or not ──
 /** @param {Quat} qa */
 function orthonormalError(qa) {
@@ -175,10 +190,12 @@ const results = {
   coreNsPerDragStep: core,
   pointerMoveUs: handler,
   tinyDragAngle: tiny,
+  degreesPerRadialPixel: perPixel,
   orthonormalityAfterDrags: drift,
 };
 console.log('core drag step (ns):', core);
 console.log('Trackball pointermove (µs):', handler);
 console.table(tiny);
+console.table(perPixel);
 console.table(drift);
 writeResults(results);

@@ -76,6 +76,19 @@ describe('arcRotation', () => {
     expect(angleOf(arcRotation(a, p)) / (2 * Math.asin(1 / 500))).toBeCloseTo(1, 14);
   });
 
+  it('Bell never turns faster than 2√2 rad per ball radius of pointer motion; the arcball does near the rim', () => {
+    const far = fc.double({ min: -4, max: 4, noNaN: true });
+    fc.assert(
+      fc.property(far, far, far, far, (x0, y0, x1, y1) => {
+        const angle = angleOf(arcRotation(projectToBall(x0, y0, 'bell'), projectToBall(x1, y1, 'bell')));
+        return angle <= 2 * Math.SQRT2 * Math.hypot(x1 - x0, y1 - y0) + 1e-12;
+      }),
+    );
+    // The arcball's last pixel before the rim of a 250 px-radius ball turns by more than 10°.
+    const lastPixel = arcRotation(projectToBall(249 / 250, 0, 'arcball'), projectToBall(1, 0, 'arcball'));
+    expect((angleOf(lastPixel) * 180) / Math.PI).toBeGreaterThan(10);
+  });
+
   it('composes exactly at speed 1: q(b→c)·q(a→b) = q(a→c) (property)', () => {
     fc.assert(
       fc.property(ballPoint, ballPoint, ballPoint, (a, b, c) => {
