@@ -267,6 +267,15 @@ describe('Camera matches three.js', () => {
     expectMatrixClose(camera.projectionMatrix, ortho.projectionMatrix, 1e-15);
   });
 
+  it('reversedDepth can be switched back off (three never does), updating the matrix', () => {
+    const camera = new Camera().setPerspective(50, 1, 0.1, 100);
+    const standard = camera.projectionMatrix.clone();
+    camera.reversedDepth = true;
+    expect(new Vector3(0, 0, -0.1).applyMatrix4(camera.projectionMatrix).z).toBeCloseTo(1, 12);
+    camera.reversedDepth = false;
+    expectMatrixClose(camera.projectionMatrix, standard, 0);
+  });
+
   it('copy/clone keep projection, frame and kind', () => {
     const camera = new Camera().lookAt([1, 2, 3], [0, 0, 0], [0, 0, 1]).setOrthographic(2, -2, 1, -1, 0.1, 9);
     const copy = camera.clone();

@@ -111,6 +111,21 @@ export class Camera extends ThreeCamera {
     return this._projection === 'orthographic';
   }
 
+  /**
+   * Whether `projectionMatrix` maps near → 1 and far → 0 (reversed-Z, clip z in [0, 1]), as three's cameras.
+   * A `WebGLRenderer` created with `reversedDepthBuffer: true` switches it on by itself before drawing and never
+   * off again; set it back to `false` (this setter updates the matrix) before using the camera with a standard
+   * renderer, or it renders with the depth order inverted.
+   * @defaultValue false
+   */
+  override get reversedDepth(): boolean {
+    return (this as unknown as { _reversedDepth: boolean })._reversedDepth;
+  }
+  override set reversedDepth(value: boolean) {
+    (this as unknown as { _reversedDepth: boolean })._reversedDepth = value;
+    this.updateProjectionMatrix();
+  }
+
   /** Alias of {@link Camera.fovy} (degrees) under three's name, for code written for `PerspectiveCamera`. */
   get fov(): number {
     return this.fovy;

@@ -1,0 +1,193 @@
+// Bare page for tests/camera.spec.ts and bench/camera-depth.bench.mjs.
+// 1. A small scene seen through @shadelab/camera's Camera, moved by CameraMovement (keys/drag on the canvas);
+//    renders only on `change`, and reports the frame on the canvas's data attributes.
+// 2. `window.cameraDepth`: renders two overlapping quads (red near, green farther, drawn last) in each depth mode
+//    and reads the centre pixel, to measure which separations stay in the right order.
+import { Camera, CameraMovement, type DepthMode, depthBufferParameters, depthModeOf } from '@shadelab/camera';
+import {
+  BoxGeometry,
+  Color,
+  DepthTexture,
+  FloatType,
+  GridHelper,
+  Mesh,
+  MeshBasicMaterial,
+  MeshNormalMaterial,
+  PlaneGeometry,
+  Scene,
+  UnsignedIntType,
+  WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+
+// ── 1. the movement scene ────────────────────────────────────────────────────────────────────────────────────
+const canvas = document.getElementById('viewport') as HTMLCanvasElement;
+const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+renderer.setPixelRatio(1);
+renderer.setSize(400, 300, false);
+
+const scene = new Scene();
+scene.background = new Color(0x202020);
+const colours = [0xd04040, 0x40b040, 0x4060d0, 0xd0b040, 0xb040d0];
+colours.forEach((colour, i) => {
+  const box = new Mesh(new BoxGeometry(1, 1, 1), new MeshBasicMaterial({ color: colour }));
+  box.position.set((i - 2) * 1.6, 0.5, -((i * 3) % 5));
+  scene.add(box);
+});
+scene.add(new Mesh(new BoxGeometry(0.6, 0.6, 0.6), new MeshNormalMaterial()));
+scene.add(new GridHelper(20, 20, 0x888888, 0x444444));
+
+const camera = new Camera({ fovy: 50, aspect: 400 / 300, near: 0.1, far: 100 });
+camera.lookAt([0, 2, 6], [0, 0.5, 0], [0, 1, 0]);
+const movement = new CameraMovement(camera, canvas, { moveSpeed: 0.5, turnSpeed: 0.005 });
+
+let frames = 0;
+function render(): void {
+  renderer.render(scene, camera);
+  frames++;
+  const { e, w } = camera.getFrame();
+  canvas.dataset.frames = String(frames);
+  canvas.dataset.eye = JSON.stringify(e.toArray());
+  canvas.dataset.w = JSON.stringify(w.toArray());
+}
+movement.addEventListener('change', render);
+render();
+
+// ── 2. depth-order probe ─────────────────────────────────────────────────────────────────────────────────────
+/**
+ * Depth modes probed: the three DepthModes into the canvas's default depth buffer, and standard/reversed into a
+ * render target with an explicit 32-bit float (`-float`) or 24-bit fixed-point (`-fixed24`) depth texture.
+ */
+type ProbeMode = DepthMode | `${'standard' | 'reversed'}-${'float' | 'fixed24'}`;
+
+interface Probe {
+  renderer: WebGLRenderer;
+  target: WebGLRenderTarget | null;
+  active: DepthMode;
+}
+
+const SIZE = 8;
+const probes = new Map<ProbeMode, Probe>();
+const depthScene = new Scene();
+depthScene.background = new Color(0x000000);
+const quad = new PlaneGeometry(1, 1);
+const nearQuad = new Mesh(quad, new MeshBasicMaterial({ color: 0xff0000 }));
+const farQuad = new Mesh(quad, new MeshBasicMaterial({ color: 0x00ff00 }));
+nearQuad.renderOrder = 0;
+farQuad.renderOrder = 1; // the farther quad is drawn last: only the depth test can keep it hidden
+depthScene.add(nearQuad, farQuad);
+const depthCamera = new Camera({ fovy: 60, aspect: 1, near: 0.01, far: 100 });
+const pixel = new Uint8Array(4);
+
+function probe(mode: ProbeMode): Probe {
+  let p = probes.get(mode);
+  if (p) return p;
+  const [base, buffer] = mode.split('-') as [DepthMode, 'float' | 'fixed24' | undefined];
+  const c = document.createElement('canvas');
+  c.width = SIZE;
+  c.height = SIZE;
+  const r = new WebGLRenderer({ canvas: c, antialias: false, ...depthBufferParameters(base) });
+  r.setPixelRatio(1);
+  r.setSize(SIZE, SIZE, false);
+  r.sortObjects = false;
+  let target: WebGLRenderTarget | null = null;
+  if (buffer !== undefined) {
+    target = new WebGLRenderTarget(SIZE, SIZE, {
+      depthBuffer: true,
+      depthTexture: new DepthTexture(SIZE, SIZE, buffer === 'float' ? FloatType : UnsignedIntType),
+    });
+  }
+  p = { renderer: r, target, active: depthModeOf(r) };
+  probes.set(mode, p);
+  return p;
+}
+
+/** Which colour wins the centre: 'near' (order kept), 'far' (order lost) or 'none'. */
+function centre(p: Probe): 'near' | 'far' | 'none' {
+  const { renderer: r, target } = p;
+  // One camera serves every renderer: a reversed-depth renderer switches reversedDepth on and never off.
+  depthCamera.reversedDepth = p.active === 'reversed';
+  r.setRenderTarget(target);
+  r.render(depthScene, depthCamera);
+  if (target) r.readRenderTargetPixels(target, SIZE / 2, SIZE / 2, 1, 1, pixel);
+  else
+    r.getContext().readPixels(
+      SIZE / 2,
+      SIZE / 2,
+      1,
+      1,
+      WebGL2RenderingContext.RGBA,
+      WebGL2RenderingContext.UNSIGNED_BYTE,
+      pixel,
+    );
+  r.setRenderTarget(null);
+  if (pixel[0] > 128 && pixel[1] < 64) return 'near';
+  if (pixel[1] > 128 && pixel[0] < 64) return 'far';
+  return 'none';
+}
+
+function place(near: number, far: number, z: number, dzRel: number): void {
+  depthCamera.setPerspective(60, 1, near, far);
+  // Quads facing the camera (which looks down −z from the origin), 4× wider than the view at their distance.
+  nearQuad.position.set(0, 0, -z);
+  nearQuad.scale.setScalar(4 * z);
+  const zf = z * (1 + dzRel);
+  farQuad.position.set(0, 0, -zf);
+  farQuad.scale.setScalar(4 * zf);
+}
+
+/** Does `mode` draw the red quad at distance z in front of the green one at z·(1 + dzRel)? */
+function kept(mode: ProbeMode, near: number, far: number, z: number, dzRel: number): 'near' | 'far' | 'none' {
+  place(near, far, z, dzRel);
+  return centre(probe(mode));
+}
+
+/**
+ * Smallest Δz/z on a log grid (`perDecade` steps per decade, from 1 down to 1e-9) such that the nearer quad wins
+ * at it and at every larger grid separation (rounding makes the order flicker just above the limit: this is the
+ * limit below which order is no longer guaranteed). `Infinity` when even Δz/z = 1 is lost, 1e-9 when nothing is
+ * lost, null when the case is invalid (z outside (near, far/2), or the far quad alone does not show).
+ */
+function threshold(mode: ProbeMode, near: number, far: number, z: number, perDecade = 20): number | null {
+  if (z * 2 >= far || z <= near) return null;
+  const p = probe(mode);
+  place(near, far, z, 1);
+  nearQuad.visible = false;
+  const farShows = centre(p) === 'far';
+  nearQuad.visible = true;
+  if (!farShows) return null;
+  let smallest = Number.POSITIVE_INFINITY;
+  for (let i = 0; i <= 9 * perDecade; i++) {
+    const separation = 10 ** (-i / perDecade);
+    if (kept(mode, near, far, z, separation) !== 'near') break;
+    smallest = separation;
+  }
+  return smallest;
+}
+
+declare global {
+  interface Window {
+    cameraDepth: {
+      modes: ProbeMode[];
+      activeMode(mode: ProbeMode): DepthMode;
+      kept: typeof kept;
+      threshold: typeof threshold;
+    };
+  }
+}
+
+window.cameraDepth = {
+  modes: [
+    'standard',
+    'logarithmic',
+    'reversed',
+    'standard-float',
+    'reversed-float',
+    'standard-fixed24',
+    'reversed-fixed24',
+  ],
+  activeMode: (mode) => probe(mode).active,
+  kept,
+  threshold,
+};
+canvas.dataset.ready = 'true';
