@@ -457,6 +457,21 @@ describe('Trackball: damping', () => {
     expectSameRotation(mesh.quaternion, tb.rotation);
   });
 
+  it('turns as far in one update(3/60) as in three update(1/60) calls', () => {
+    const run = (steps: number[]) => {
+      const element = makeElement();
+      const tb = trackball(null, element, { enableDamping: true, dampingFactor: 0.3 });
+      drag(element, [
+        [CX, CY],
+        [CX + 4, CY + 3],
+        [CX + 9, CY + 5],
+      ]);
+      for (const s of steps) tb.update(s);
+      return tb.rotation.clone();
+    };
+    expectSameRotation(run([3 / 60]), run([1 / 60, 1 / 60, 1 / 60]), 1e-14);
+  });
+
   it('does not spin when released after holding still, or when damping is off', () => {
     const element = makeElement();
     const tb = trackball(null, element, { enableDamping: true });

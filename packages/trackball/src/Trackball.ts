@@ -317,8 +317,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
   }
 
   /**
-   * Back to the start: identity rotation, the object's original orientation, zoom 1 (the camera moved
-   * or rescaled back), no spin. Sends `change`.
+   * Back to the start: identity rotation, the object's original orientation, zoom 1 (clamped to the
+   * limits; the camera moved or rescaled back), no spin. Sends `change`.
    */
   reset(): void {
     this._rotation.identity();
@@ -332,7 +332,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
   /**
    * Advance the damped spin (call once per frame when {@link Trackball.enableDamping} is on). After a
    * release the last pointer move's rotation repeats once per 1/60 s, losing
-   * {@link Trackball.dampingFactor} of its angle each time, until it is below 1e-6 rad.
+   * {@link Trackball.dampingFactor} of its angle each time, until it is below 1e-6 rad. A longer `delta`
+   * turns by the sum of the frames it covers.
    *
    * @param delta - Seconds since the last call. ≥ 0, finite. @defaultValue 1/60
    * @returns Whether anything moved (a `change` was sent).
@@ -341,10 +342,15 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     positive('delta', delta, true);
     if (!this.enableDamping || this._pointers.size > 0 || this._spinAngle <= SPIN_MIN) return false;
     const frames = delta * 60;
-    _delta.setFromAxisAngle(this._spinAxis, this._spinAngle * frames);
+    const keep = 1 - this._dampingFactor;
+    // The sum of the per-frame angles over `frames` frames (a geometric series), so one update(k/60) turns
+    // as far as k updates of 1/60 s.
+    const angle =
+      this._spinAngle * (keep === 0 ? Math.min(frames, 1) : (1 - keep ** frames) / this._dampingFactor);
+    _delta.setFromAxisAngle(this._spinAxis, angle);
     this._rotation.premultiply(_delta).normalize();
     this._rotateObject(_delta, this.object.quaternion);
-    this._spinAngle *= (1 - this._dampingFactor) ** frames;
+    this._spinAngle *= keep ** frames;
     if (this._spinAngle <= SPIN_MIN) this._spinAngle = 0;
     this.dispatchEvent(_changeEvent);
     return true;
