@@ -1,0 +1,74 @@
+import { expect, type Locator, test } from '@playwright/test';
+
+// playground/harness/camera.html: a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's Camera,
+// moved by CameraMovement (moveSpeed 0.5, turnSpeed 0.005); window.cameraDepth probes depth order per mode.
+
+async function state(canvas: Locator) {
+  return canvas.evaluate((el: HTMLCanvasElement) => ({
+    frames: Number(el.dataset.frames),
+    eye: JSON.parse(el.dataset.eye ?? '[]') as number[],
+    w: JSON.parse(el.dataset.w ?? '[]') as number[],
+    image: el.toDataURL('image/png'),
+  }));
+}
+
+async function open(page: import('@playwright/test').Page) {
+  await page.goto('/harness/camera.html');
+  const canvas = page.getByTestId('viewport');
+  await expect(canvas).toHaveAttribute('data-ready', 'true');
+  await expect(canvas).toHaveAttribute('data-frames', '1');
+  return canvas;
+}
+
+const dot = (a: number[], b: number[]) => a.reduce((s, x, i) => s + x * b[i], 0);
+
+test('pressing W moves the camera 0.5 along −w and the picture changes', async ({ page }) => {
+  const canvas = await open(page);
+  const before = await state(canvas);
+  await expect(canvas).toHaveScreenshot('before.png');
+  await canvas.focus();
+  await page.keyboard.press('KeyW');
+  await expect(canvas).toHaveAttribute('data-frames', '2');
+  const after = await state(canvas);
+  expect(after.image).not.toBe(before.image);
+  const moved = after.eye.map((x, i) => x - before.eye[i]);
+  expect(dot(moved, before.w)).toBeCloseTo(-0.5, 9);
+  expect(Math.hypot(...moved)).toBeCloseTo(0.5, 9);
+  await expect(canvas).toHaveScreenshot('after-w.png');
+});
+
+test('arrow keys strafe along u and a drag turns the gaze; the picture follows', async ({ page }) => {
+  const canvas = await open(page);
+  await canvas.click({ position: { x: 200, y: 150 } }); // focuses (zero-length drag: no turn)
+  const start = await state(canvas);
+  await page.keyboard.press('ArrowRight');
+  const strafed = await state(canvas);
+  expect(strafed.image).not.toBe(start.image);
+  expect(dot(strafed.w, start.w)).toBeCloseTo(1, 12);
+  await page.mouse.move(250, 200);
+  await page.mouse.down();
+  await page.mouse.move(290, 200, { steps: 4 });
+  await page.mouse.up();
+  const turned = await state(canvas);
+  expect(turned.image).not.toBe(strafed.image);
+  expect(turned.eye).toEqual(strafed.eye);
+  // 40 px × 0.005 rad/px = 0.2 rad about v.
+  expect(Math.acos(Math.min(1, dot(turned.w, strafed.w)))).toBeCloseTo(0.2, 6);
+});
+
+test('two surfaces 1 unit apart at z = 1e4 (near 0.01, far 1e6): which depth modes keep their order', async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => {
+    const d = window.cameraDepth;
+    const modes = ['standard', 'logarithmic', 'reversed', 'reversed-float'] as const;
+    return Object.fromEntries(modes.map((m) => [m, [d.activeMode(m), d.kept(m, 0.01, 1e6, 1e4, 1e-4)]]));
+  });
+  expect(result).toEqual({
+    standard: ['standard', 'far'], // standard depth loses Δz/z = 1e-4 at z/near = 1e6 (it needs ≈ 6e-8 · z/near)
+    logarithmic: ['logarithmic', 'near'],
+    reversed: ['reversed', 'near'], // EXT_clip_control is available under SwiftShader
+    'reversed-float': ['reversed', 'near'],
+  });
+});
