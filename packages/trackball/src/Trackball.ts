@@ -290,7 +290,6 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     super.connect(element);
     element.addEventListener('pointerdown', this._onPointerDown as EventListener);
     element.addEventListener('wheel', this._onWheel as EventListener, { passive: false });
-    element.addEventListener('contextmenu', this._onContextMenu);
     element.style.touchAction = 'none';
   }
 
@@ -300,7 +299,6 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     if (element) {
       element.removeEventListener('pointerdown', this._onPointerDown as EventListener);
       element.removeEventListener('wheel', this._onWheel as EventListener);
-      element.removeEventListener('contextmenu', this._onContextMenu);
       element.style.touchAction = '';
     }
     const wasDragging = this._pointers.size > 0;
@@ -560,9 +558,5 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
       this.dispatchEvent(_changeEvent);
     }
     this.dispatchEvent(_endEvent);
-  };
-
-  private readonly _onContextMenu = (event: Event): void => {
-    if (this.enabled) event.preventDefault();
   };
 }
