@@ -279,6 +279,19 @@ describe('Trackball: DESIGN.md extremes through the DOM', () => {
     expect(tb.rotation.toArray()).toEqual([0, 0, 0, 1]);
   });
 
+  it('captures the pointer on press and releases it on release', () => {
+    const element = makeElement();
+    const captured = new Set<number>();
+    element.setPointerCapture = (id: number) => void captured.add(id);
+    element.releasePointerCapture = (id: number) => void captured.delete(id);
+    element.hasPointerCapture = (id: number) => captured.has(id);
+    trackball(null, element);
+    pointer(element, 'pointerdown', CX, CY, { pointerId: 7 });
+    expect([...captured]).toEqual([7]);
+    pointer(element, 'pointerup', CX, CY, { pointerId: 7 });
+    expect(captured.size).toBe(0);
+  });
+
   it('ends cleanly when released outside the element, and the next drag works', () => {
     const element = makeElement();
     const outside = document.createElement('div');
