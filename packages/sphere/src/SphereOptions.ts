@@ -1,0 +1,119 @@
+import { assertLevel } from './assertLevel.js';
+import { describeValue } from './describeValue.js';
+import { assertSphereBase, type SphereBase } from './SphereBase.js';
+
+/** Which normals a subdivision sphere carries. */
+export type SphereNormals = 'smooth' | 'flat' | 'none';
+
+/** Default memory limit of `subdivideSphere` and `SubdivisionSphereGeometry`: 512 MiB. */
+export const DEFAULT_SPHERE_MAX_BYTES = 512 * 1024 * 1024;
+
+/** Options of `subdivideSphere` and `SubdivisionSphereGeometry`. */
+export interface SubdivideSphereOptions {
+  /**
+   * Subdivision level: how many times every triangle is split into four. An integer ≥ 0; the cost grows 4× per
+   * level, bounded only by `maxBytes`.
+   * @default 6 (the lecture's `Sphere(6)`)
+   */
+  level?: number;
+  /**
+   * Base solid. `'tetrahedron'` is the lecture's (a vertex at (0, 0, 1)); `'octahedron'` and `'icosahedron'`
+   * are three.js's `OctahedronGeometry` and `IcosahedronGeometry` at detail 0.
+   * @default 'tetrahedron'
+   */
+  base?: SphereBase;
+  /**
+   * Sphere radius, in scene units: every vertex lies at this distance from the origin. Finite and > 0.
+   * @default 1
+   */
+  radius?: number;
+  /**
+   * `'smooth'`: the exact sphere normal, position / radius. `'flat'`: each triangle's face normal on its three
+   * corners (needs non-indexed output, since a corner shared by several faces has several normals).
+   * `'none'`: no normal array (shaders can use the normalised position).
+   * @default 'smooth'
+   */
+  normals?: SphereNormals;
+  /**
+   * Indexed output (shared vertices, V = 2 + T/2, Uint16 indices while V ≤ 65,536, else Uint32) or a plain
+   * triangle soup (3 vertices per triangle). `normals: 'flat'` with `indexed: true` is a RangeError.
+   * @default true, or false when `normals` is 'flat'
+   */
+  indexed?: boolean;
+  /**
+   * Memory limit in bytes for everything the build allocates (outputs and scratch), checked against
+   * `estimateSphereBytes` before anything is allocated. > 0; `Infinity` disables the check.
+   * @default 536870912 (512 MiB, {@link DEFAULT_SPHERE_MAX_BYTES})
+   */
+  maxBytes?: number;
+}
+
+/** Options with every default applied and every value validated. */
+export interface SphereParameters {
+  /** Subdivision level, an integer ≥ 0. */
+  readonly level: number;
+  /** Base solid. */
+  readonly base: SphereBase;
+  /** Radius in scene units, > 0. */
+  readonly radius: number;
+  /** Normals carried. */
+  readonly normals: SphereNormals;
+  /** Whether vertices are shared through an index. */
+  readonly indexed: boolean;
+  /** Memory limit in bytes. */
+  readonly maxBytes: number;
+}
+
+const NORMALS: readonly SphereNormals[] = ['smooth', 'flat', 'none'];
+
+/**
+ * Apply defaults and validate. Throws RangeError / TypeError naming the option, the value and the allowed
+ * range.
+ * @internal
+ */
+export function resolveSphereOptions(caller: string, options: SubdivideSphereOptions): SphereParameters {
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`${caller}: options must be an object; got ${describeValue(options)}`);
+  }
+  const {
+    level = 6,
+    base = 'tetrahedron',
+    radius = 1,
+    normals = 'smooth',
+    maxBytes = DEFAULT_SPHERE_MAX_BYTES,
+  } = options;
+  assertLevel(caller, 'level', level);
+  assertSphereBase(caller, 'base', base);
+  if (typeof radius !== 'number') {
+    throw new TypeError(`${caller}: radius must be a finite number > 0; got ${describeValue(radius)}`);
+  }
+  if (!(radius > 0) || !Number.isFinite(radius)) {
+    throw new RangeError(`${caller}: radius must be a finite number > 0; got ${radius}`);
+  }
+  if (typeof normals !== 'string') {
+    throw new TypeError(
+      `${caller}: normals must be 'smooth', 'flat' or 'none'; got ${describeValue(normals)}`,
+    );
+  }
+  if (!NORMALS.includes(normals)) {
+    throw new RangeError(`${caller}: normals must be 'smooth', 'flat' or 'none'; got '${normals}'`);
+  }
+  const indexed = options.indexed ?? normals !== 'flat';
+  if (typeof indexed !== 'boolean') {
+    throw new TypeError(`${caller}: indexed must be true or false; got ${describeValue(indexed)}`);
+  }
+  if (indexed && normals === 'flat') {
+    throw new RangeError(
+      `${caller}: normals 'flat' needs indexed: false (a vertex shared by several faces has several face normals); got indexed: true`,
+    );
+  }
+  if (typeof maxBytes !== 'number') {
+    throw new TypeError(
+      `${caller}: maxBytes must be a number > 0 (Infinity allowed); got ${describeValue(maxBytes)}`,
+    );
+  }
+  if (!(maxBytes > 0)) {
+    throw new RangeError(`${caller}: maxBytes must be a number > 0 (Infinity allowed); got ${maxBytes}`);
+  }
+  return { level, base, radius, normals, indexed, maxBytes };
+}

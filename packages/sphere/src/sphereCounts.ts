@@ -1,0 +1,29 @@
+import { assertLevel } from './assertLevel.js';
+import { assertSphereBase, type SphereBase } from './SphereBase.js';
+
+/** Element counts of a subdivision sphere. */
+export interface SphereCounts {
+  /** Triangles: T = F0 · 4^level, with F0 = 4, 8 or 20 for the tetrahedron, octahedron or icosahedron. */
+  readonly triangles: number;
+  /** Distinct vertices (the indexed vertex count): V = 2 + T / 2 (Euler, V − E + F = 2). */
+  readonly vertices: number;
+  /** Distinct edges: E = 3T / 2. */
+  readonly edges: number;
+}
+
+/** Faces of each base solid. */
+const BASE_FACES: Readonly<Record<SphereBase, number>> = { tetrahedron: 4, octahedron: 8, icosahedron: 20 };
+
+/**
+ * Exact element counts of the sphere `subdivideSphere({ base, level })` builds, without building it.
+ *
+ * @param base - Base solid.
+ * @param level - Subdivision level, an integer ≥ 0 (counts past 2^53 lose precision, as numbers do).
+ * @throws RangeError / TypeError for an unknown base or a level that is not an integer ≥ 0.
+ */
+export function sphereCounts(base: SphereBase, level: number): SphereCounts {
+  assertSphereBase('sphereCounts', 'base', base);
+  assertLevel('sphereCounts', 'level', level);
+  const triangles = BASE_FACES[base] * 4 ** level;
+  return { triangles, vertices: 2 + triangles / 2, edges: (3 * triangles) / 2 };
+}

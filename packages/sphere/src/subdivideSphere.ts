@@ -1,0 +1,295 @@
+import { baseSolid } from './baseSolid.js';
+import { bytesFor } from './estimateSphereBytes.js';
+import type { SphereBase } from './SphereBase.js';
+import { resolveSphereOptions, type SubdivideSphereOptions } from './SphereOptions.js';
+
+/** The arrays of a subdivision sphere. */
+export interface SphereMesh {
+  /** Vertex positions in scene units, x, y, z per vertex; every vertex at `radius` from the origin. */
+  positions: Float32Array;
+  /** Unit normals, x, y, z per vertex; absent for `normals: 'none'`. */
+  normals?: Float32Array;
+  /**
+   * Vertex indices, 3 per triangle, counter-clockwise seen from outside; Uint16 while the vertex count is at
+   * most 65,536, else Uint32. Absent for `indexed: false`.
+   */
+  indices?: Uint16Array | Uint32Array;
+}
+
+/**
+ * Build a sphere by recursive subdivision, as in the lecture: start from a base solid inscribed in the unit
+ * sphere, split every triangle into four through its edge midpoints, push the midpoints out to the sphere, and
+ * repeat `level` times. No three.js needed.
+ *
+ * The result has T = F0 · 4^level triangles (F0 = 4, 8, 20), all counter-clockwise seen from outside. Indexed
+ * output makes every edge midpoint once, so it has V = 2 + T/2 shared vertices; non-indexed output has 3T.
+ *
+ * How: level by level on flat typed arrays, with no hashing. An edge table holds each edge's two endpoints and
+ * every triangle holds its three edge ids, each with a bit saying which way the triangle runs along it. At each
+ * level edge e gets the midpoint vertex V_old + e and splits into edges 2e and 2e + 1, and triangle t adds the
+ * interior edges 2·E_old + 3t + 0‥2 and becomes triangles 4t‥4t + 3, so every new id is arithmetic. Every array
+ * is allocated once, from the final counts.
+ *
+ * @example
+ * ```ts
+ * const { positions, normals, indices } = subdivideSphere({ level: 4, base: 'icosahedron', radius: 2 });
+ * // 5120 triangles, 2562 vertices at distance 2 from the origin, Uint16 indices
+ * ```
+ * @throws RangeError / TypeError naming the option for a bad option (see {@link SubdivideSphereOptions}).
+ * @throws RangeError with the estimated bytes when the build would allocate more than `maxBytes` (default
+ * 512 MiB); nothing is allocated then.
+ */
+export function subdivideSphere(options: SubdivideSphereOptions = {}): SphereMesh {
+  const params = resolveSphereOptions('subdivideSphere', options);
+  const bytes = bytesFor(params);
+  if (bytes > params.maxBytes) {
+    throw new RangeError(
+      `subdivideSphere: level ${params.level} of the ${params.base} (${params.indexed ? 'indexed' : 'non-indexed'}, normals '${params.normals}') needs about ${formatBytes(bytes)}, above maxBytes = ${formatBytes(params.maxBytes)}; lower the level or raise maxBytes`,
+    );
+  }
+  const { positions, indices } = buildIndexed(params.base, params.level, params.radius);
+  if (params.indexed) {
+    return params.normals === 'smooth'
+      ? { positions, normals: smoothNormals(positions), indices }
+      : { positions, indices };
+  }
+  const soup = expand(positions, indices);
+  if (params.normals === 'smooth') return { positions: soup, normals: smoothNormals(soup) };
+  if (params.normals === 'flat') return { positions: soup, normals: flatNormals(soup) };
+  return { positions: soup };
+}
+
+/** `1234567890` → `'1.23 GB (1234567890 bytes)'`. @internal */
+export function formatBytes(bytes: number): string {
+  if (!Number.isFinite(bytes)) return `${bytes} bytes`;
+  const units = ['bytes', 'kB', 'MB', 'GB', 'TB', 'PB', 'EB'];
+  let v = bytes;
+  let u = 0;
+  while (v >= 1000 && u < units.length - 1) {
+    v /= 1000;
+    u++;
+  }
+  return u === 0 ? `${bytes} bytes` : `${v.toPrecision(3)} ${units[u]} (${bytes} bytes)`;
+}
+
+type IndexArray = Uint16Array | Uint32Array;
+
+/** Positions (scaled by `radius`) and indices of the indexed sphere. */
+function buildIndexed(
+  base: SphereBase,
+  level: number,
+  radius: number,
+): { positions: Float32Array; indices: IndexArray } {
+  const { vertices, faces } = baseSolid(base);
+  const f0 = faces.length / 3;
+  const triangles = f0 * 4 ** level;
+  const vertexCount = 2 + triangles / 2;
+  const positions = new Float32Array(3 * vertexCount);
+  for (let i = 0; i < vertices.length; i++) positions[i] = vertices[i] * radius;
+  if (level === 0) return { positions, indices: Uint16Array.from(faces) };
+
+  const indices = vertexCount <= 65536 ? new Uint16Array(3 * triangles) : new Uint32Array(3 * triangles);
+  // Scratch: the edge table (2 endpoints per edge; 2E = 3T) and the edge ids of every triangle (3T) of one
+  // level. Levels alternate between two regions: A holds level L − 1 (and L − 3, …), B holds L − 2 (and L − 4, …).
+  const sizeA = (3 * triangles) / 4;
+  const edgesA = new Uint32Array(sizeA);
+  const trisA = new Uint32Array(sizeA);
+  const edgesB = level >= 2 ? new Uint32Array(sizeA / 4) : edgesA;
+  const trisB = level >= 2 ? new Uint32Array(sizeA / 4) : trisA;
+  const inA = (k: number) => (level - 1 - k) % 2 === 0;
+
+  // Level 0: each triangle edge gets an id, ×2, + 1 when the triangle runs against the stored direction.
+  let edges = inA(0) ? edgesA : edgesB;
+  let tris = inA(0) ? trisA : trisB;
+  let edgeCount = 0;
+  for (let c = 0; c < faces.length; c++) {
+    const u = faces[c];
+    const w = faces[c % 3 === 2 ? c - 2 : c + 1];
+    let id = -1;
+    for (let e = 0; e < edgeCount; e++) {
+      if (edges[2 * e] === w && edges[2 * e + 1] === u) id = 2 * e + 1;
+    }
+    if (id < 0) {
+      edges[2 * edgeCount] = u;
+      edges[2 * edgeCount + 1] = w;
+      id = 2 * edgeCount++;
+    }
+    tris[c] = id;
+  }
+
+  let vertexBase = vertices.length / 3;
+  let triangleCount = f0;
+  for (let k = 1; k < level; k++) {
+    const nextEdges = inA(k) ? edgesA : edgesB;
+    const nextTris = inA(k) ? trisA : trisB;
+    midpoints(positions, edges, edgeCount, vertexBase, radius);
+    refine(edges, tris, edgeCount, triangleCount, vertexBase, nextEdges, nextTris);
+    vertexBase += edgeCount;
+    edgeCount = 2 * edgeCount + 3 * triangleCount;
+    triangleCount *= 4;
+    edges = nextEdges;
+    tris = nextTris;
+  }
+  midpoints(positions, edges, edgeCount, vertexBase, radius);
+  finalTriangles(edges, tris, triangleCount, vertexBase, indices);
+  return { positions, indices };
+}
+
+/** Vertex `vertexBase + e` = the midpoint of edge e pushed out to the sphere of `radius`. */
+function midpoints(
+  positions: Float32Array,
+  edges: Uint32Array,
+  edgeCount: number,
+  vertexBase: number,
+  radius: number,
+): void {
+  for (let e = 0, o = 3 * vertexBase; e < edgeCount; e++, o += 3) {
+    const a = 3 * edges[2 * e];
+    const b = 3 * edges[2 * e + 1];
+    const x = positions[a] + positions[b];
+    const y = positions[a + 1] + positions[b + 1];
+    const z = positions[a + 2] + positions[b + 2];
+    const s = radius / Math.sqrt(x * x + y * y + z * z);
+    positions[o] = x * s;
+    positions[o + 1] = y * s;
+    positions[o + 2] = z * s;
+  }
+}
+
+/**
+ * The edge table and triangle edge ids of the next level. Edge e (u → w) with midpoint m becomes 2e (u → m)
+ * and 2e + 1 (m → w); triangle t with midpoints m0, m1, m2 (of its edges 0, 1, 2) adds interior edges
+ * m0 → m1, m1 → m2, m2 → m0 and becomes the corner triangles (a, m0, m2), (m0, b, m1), (m2, m1, c) and the
+ * centre (m0, m1, m2). A triangle's edge id p = 2·edge + flip; running along edge p, the first half is
+ * 2p + flip and the second 2p + 2 − 3·flip, with the same flip.
+ */
+function refine(
+  edges: Uint32Array,
+  tris: Uint32Array,
+  edgeCount: number,
+  triangleCount: number,
+  vertexBase: number,
+  nextEdges: Uint32Array,
+  nextTris: Uint32Array,
+): void {
+  for (let e = 0; e < edgeCount; e++) {
+    const m = vertexBase + e;
+    nextEdges[4 * e] = edges[2 * e];
+    nextEdges[4 * e + 1] = m;
+    nextEdges[4 * e + 2] = m;
+    nextEdges[4 * e + 3] = edges[2 * e + 1];
+  }
+  for (let t = 0, interior = 2 * edgeCount; t < triangleCount; t++, interior += 3) {
+    const p0 = tris[3 * t];
+    const p1 = tris[3 * t + 1];
+    const p2 = tris[3 * t + 2];
+    const f0 = p0 & 1;
+    const f1 = p1 & 1;
+    const f2 = p2 & 1;
+    const m0 = vertexBase + (p0 >>> 1);
+    const m1 = vertexBase + (p1 >>> 1);
+    const m2 = vertexBase + (p2 >>> 1);
+    const o = 2 * interior;
+    nextEdges[o] = m0;
+    nextEdges[o + 1] = m1;
+    nextEdges[o + 2] = m1;
+    nextEdges[o + 3] = m2;
+    nextEdges[o + 4] = m2;
+    nextEdges[o + 5] = m0;
+    const q0 = 2 * interior; // interior edges, forward
+    const c = 12 * t;
+    nextTris[c] = 2 * p0 + f0; // (a, m0, m2)
+    nextTris[c + 1] = q0 + 5;
+    nextTris[c + 2] = 2 * p2 + 2 - 3 * f2;
+    nextTris[c + 3] = 2 * p0 + 2 - 3 * f0; // (m0, b, m1)
+    nextTris[c + 4] = 2 * p1 + f1;
+    nextTris[c + 5] = q0 + 1;
+    nextTris[c + 6] = q0 + 3; // (m2, m1, c)
+    nextTris[c + 7] = 2 * p1 + 2 - 3 * f1;
+    nextTris[c + 8] = 2 * p2 + f2;
+    nextTris[c + 9] = q0; // (m0, m1, m2)
+    nextTris[c + 10] = q0 + 2;
+    nextTris[c + 11] = q0 + 4;
+  }
+}
+
+/** The last level's vertex indices; a triangle's corner i is where its edge id p_i starts: edges[p_i]. */
+function finalTriangles(
+  edges: Uint32Array,
+  tris: Uint32Array,
+  triangleCount: number,
+  vertexBase: number,
+  out: IndexArray,
+): void {
+  for (let t = 0; t < triangleCount; t++) {
+    const p0 = tris[3 * t];
+    const p1 = tris[3 * t + 1];
+    const p2 = tris[3 * t + 2];
+    const m0 = vertexBase + (p0 >>> 1);
+    const m1 = vertexBase + (p1 >>> 1);
+    const m2 = vertexBase + (p2 >>> 1);
+    const c = 12 * t;
+    out[c] = edges[p0];
+    out[c + 1] = m0;
+    out[c + 2] = m2;
+    out[c + 3] = m0;
+    out[c + 4] = edges[p1];
+    out[c + 5] = m1;
+    out[c + 6] = m2;
+    out[c + 7] = m1;
+    out[c + 8] = edges[p2];
+    out[c + 9] = m0;
+    out[c + 10] = m1;
+    out[c + 11] = m2;
+  }
+}
+
+/** The triangle soup of an indexed mesh. */
+function expand(positions: Float32Array, indices: IndexArray): Float32Array {
+  const out = new Float32Array(3 * indices.length);
+  for (let i = 0, o = 0; i < indices.length; i++, o += 3) {
+    const a = 3 * indices[i];
+    out[o] = positions[a];
+    out[o + 1] = positions[a + 1];
+    out[o + 2] = positions[a + 2];
+  }
+  return out;
+}
+
+/** position / |position|: the exact normal of a sphere centred at the origin. */
+function smoothNormals(positions: Float32Array): Float32Array {
+  const out = new Float32Array(positions.length);
+  for (let i = 0; i < positions.length; i += 3) {
+    const x = positions[i];
+    const y = positions[i + 1];
+    const z = positions[i + 2];
+    const s = 1 / Math.sqrt(x * x + y * y + z * z);
+    out[i] = x * s;
+    out[i + 1] = y * s;
+    out[i + 2] = z * s;
+  }
+  return out;
+}
+
+/** Each triangle's unit face normal on its three corners (a triangle soup). */
+function flatNormals(soup: Float32Array): Float32Array {
+  const out = new Float32Array(soup.length);
+  for (let i = 0; i < soup.length; i += 9) {
+    const ux = soup[i + 3] - soup[i];
+    const uy = soup[i + 4] - soup[i + 1];
+    const uz = soup[i + 5] - soup[i + 2];
+    const vx = soup[i + 6] - soup[i];
+    const vy = soup[i + 7] - soup[i + 1];
+    const vz = soup[i + 8] - soup[i + 2];
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    const s = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz);
+    for (let k = 0; k < 9; k += 3) {
+      out[i + k] = nx * s;
+      out[i + k + 1] = ny * s;
+      out[i + k + 2] = nz * s;
+    }
+  }
+  return out;
+}
