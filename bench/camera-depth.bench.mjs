@@ -17,6 +17,8 @@ import { chromium } from '@playwright/test';
 import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
 import { summarize, writeResults } from './lib/bench.mjs';
 
+/** @typedef {import('../playground/harness/camera').CameraDepthProbe} CameraDepthProbe (types window.cameraDepth) */
+
 const root = fileURLToPath(new URL('..', import.meta.url));
 const outDir = mkdtempSync(join(tmpdir(), 'shadelab-camera-depth-'));
 const RATIOS = [1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
@@ -30,6 +32,7 @@ const build = spawnSync(
 );
 if (build.status !== 0) process.exit(build.status ?? 1);
 
+/** @type {Record<string, string>} */
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css' };
 const server = createServer((req, res) => {
   const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
@@ -73,6 +76,7 @@ try {
     }
   }
   // Cost of one probe frame (render + 1×1 readPixels) per mode, milliseconds.
+  /** @type {Record<string, ReturnType<typeof summarize>>} */
   const frameTimes = {};
   for (const mode of modes) {
     const times = await page.evaluate((m) => {
@@ -87,6 +91,7 @@ try {
     frameTimes[mode] = summarize(times);
   }
 
+  /** @param {number | null} x */
   const fmt = (x) =>
     x === null ? '—' : x === Number.POSITIVE_INFINITY ? '> 1' : x <= 1e-9 ? '≤ 1e-9' : x.toExponential(1);
   console.log('\nSmallest Δz/z still drawn in the right order (near = 0.01, far = 0.01 · far/near)');

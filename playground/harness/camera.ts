@@ -165,14 +165,20 @@ function threshold(mode: ProbeMode, near: number, far: number, z: number, perDec
   return smallest;
 }
 
+/** What the page exposes as `window.cameraDepth` (typed for tests/camera.spec.ts and the bench). */
+export interface CameraDepthProbe {
+  /** Every probe mode, in table order. */
+  modes: ProbeMode[];
+  /** The depth mode the renderer behind a probe mode really runs. */
+  activeMode(mode: ProbeMode): DepthMode;
+  kept: typeof kept;
+  threshold: typeof threshold;
+}
+export type { ProbeMode };
+
 declare global {
   interface Window {
-    cameraDepth: {
-      modes: ProbeMode[];
-      activeMode(mode: ProbeMode): DepthMode;
-      kept: typeof kept;
-      threshold: typeof threshold;
-    };
+    cameraDepth: CameraDepthProbe;
   }
 }
 

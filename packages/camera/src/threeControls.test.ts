@@ -5,7 +5,7 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { describe, expect, it } from 'vitest';
 
 /** Drive three's OrbitControls the same way on a shadelab Camera and on three's own camera. */
-function orbit(camera: Camera | PerspectiveCamera | OrthographicCamera) {
+function orbit<C extends Camera | PerspectiveCamera | OrthographicCamera>(camera: C): C {
   const el = document.createElement('div');
   document.body.appendChild(el);
   const controls = new OrbitControls(camera, el);
