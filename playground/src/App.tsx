@@ -3,7 +3,7 @@ import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { MOVE_KEYS, REAL_PACKAGES } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
 import { COMPARE_COLUMNS, type SectionErrors, Viewer } from './engine/Viewer';
-import { loadInitialState, saveState, stateUrl } from './state/persist';
+import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import { defaultLight, defaultState, MAX_LIGHTS, type PlaygroundState, validateState } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
 import { ShaderEditor } from './ui/ShaderEditor';
@@ -79,6 +79,18 @@ export function App() {
       viewerRef.current = null;
     };
   }, [feed, update, refreshVariant]);
+
+  // A link pasted into this tab changes only the hash: take its state (or refuse it) without a reload.
+  useEffect(() => {
+    const onHash = () => {
+      const result = readUrlState();
+      if (!result) return;
+      if (result.ok) setState(result.state);
+      else setNotices((n) => [...n, `The state in the URL was refused: ${result.error}`]);
+    };
+    window.addEventListener('hashchange', onHash);
+    return () => window.removeEventListener('hashchange', onHash);
+  }, []);
 
   // Every state change: validate against the schema, apply what changed, persist when it all held.
   useEffect(() => {

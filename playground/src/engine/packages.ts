@@ -4,7 +4,8 @@
  */
 
 import { Camera, CameraMovement } from '@shadelab/camera';
-import { PhongLight, ShadingMaterial } from '@shadelab/material';
+import { PhongLight, ShadingMaterial, SPHERE_FLAG } from '@shadelab/material';
+import { SPHERE_BASES, sphereError, subdivideSphere } from '@shadelab/sphere';
 import { Trackball } from '@shadelab/trackball';
 import * as THREE from 'three';
 import type {
@@ -15,17 +16,21 @@ import type {
   TrackballMapping,
   Vec3,
 } from '../state/schema';
-import { standInSphere } from './standins';
 
 /** Which packages are real (false = a three.js stand-in is used); shown on the page. */
-export const REAL_PACKAGES = { sphere: false, camera: true, trackball: true, material: true };
+export const REAL_PACKAGES = { sphere: true, camera: true, trackball: true, material: true };
 
 // ---- sphere ------------------------------------------------------------------------------------------------
 
-/** The unit sphere for `shading`: non-indexed for flat, indexed without normals (analytic) otherwise. */
-export function createSphere(base: SphereBase, level: number, _shading: Shading): THREE.BufferGeometry {
-  if (!Number.isInteger(level) || level < 0) throw new RangeError(`level: ${level} is not an integer ≥ 0`);
-  return standInSphere(base, level);
+/** The unit sphere for `shading`: non-indexed for flat, indexed otherwise; no normal attribute (analytic). */
+export function createSphere(base: SphereBase, level: number, shading: Shading): THREE.BufferGeometry {
+  const mesh = subdivideSphere({ base, level, normals: 'none', indexed: shading !== 'flat' });
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(mesh.positions, 3));
+  if (mesh.indices) geometry.setIndex(new THREE.BufferAttribute(mesh.indices, 1));
+  geometry.userData[SPHERE_FLAG] = true;
+  geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 1);
+  return geometry;
 }
 
 /** The geometry a shading needs differs only between flat and the others. */
@@ -40,15 +45,31 @@ export interface Detail {
   errorPx: number;
 }
 
-/** The cheapest sphere whose radial error stays under `maxErrorPx` for a sphere `radiusPx` pixels across. */
+const FACES: Record<SphereBase, number> = { tetrahedron: 4, octahedron: 8, icosahedron: 20 };
+
+/**
+ * The cheapest sphere (fewest triangles) whose exact radial error, `sphereError(base, level)` × `radiusPx`,
+ * stays within `maxErrorPx` (levels 0 … 10).
+ */
 export function chooseDetail(radiusPx: number, maxErrorPx: number): Detail {
-  // Stand-in: the tetrahedron level whose error (≈ edge sagitta) meets the budget.
-  for (let level = 0; level <= 10; level++) {
-    const edge = 1.63 / 2 ** level;
-    const errorPx = radiusPx * (1 - Math.sqrt(Math.max(0, 1 - (edge * edge) / 3)));
-    if (errorPx <= maxErrorPx) return { base: 'tetrahedron', level, triangles: 4 * 4 ** level, errorPx };
+  let best: Detail | null = null;
+  for (const base of SPHERE_BASES) {
+    for (let level = 0; level <= 10; level++) {
+      const errorPx = sphereError(base, level) * radiusPx;
+      if (errorPx > maxErrorPx) continue;
+      const triangles = FACES[base] * 4 ** level;
+      if (!best || triangles < best.triangles) best = { base, level, triangles, errorPx };
+      break;
+    }
   }
-  return { base: 'tetrahedron', level: 10, triangles: 4 * 4 ** 10, errorPx: 0 };
+  return (
+    best ?? {
+      base: 'icosahedron',
+      level: 10,
+      triangles: 20 * 4 ** 10,
+      errorPx: sphereError('icosahedron', 10) * radiusPx,
+    }
+  );
 }
 
 // ---- camera -------------------------------------------------------------------------------------------------
@@ -190,8 +211,8 @@ export function needsNonIndexed(shading: Shading): boolean {
 
 /**
  * An inverted-hull outline for cel shading (the material package has none): the back faces of the
- * sphere, pushed out by `width` of the radius, in black.
+ * sphere, pushed out a little, drawn light so that it shows on the lecture's black background.
  */
 export function createOutline(): THREE.Material {
-  return new THREE.MeshBasicMaterial({ color: 0x000000, side: THREE.BackSide });
+  return new THREE.MeshBasicMaterial({ color: 0xf2f2f2, side: THREE.BackSide });
 }

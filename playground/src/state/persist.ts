@@ -2,7 +2,7 @@
  * Where the state lives outside the page: the URL hash (`#s=<json>`, shareable) and localStorage (kept across
  * reloads). Both are untrusted on the way in and go through the strict {@link parseState}.
  */
-import { defaultState, type PlaygroundState, parseState, serializeState } from './schema';
+import { defaultState, type ParseResult, type PlaygroundState, parseState, serializeState } from './schema';
 
 const STORAGE_KEY = 'shadelab.state';
 const SHADER_PREFIX = 'shadelab.glsl.';
@@ -37,6 +37,12 @@ function writeStorage(key: string, value: string | null) {
   } catch {
     // Storage full or disabled: the URL still carries the state.
   }
+}
+
+/** The state in the URL hash now (after the user pasted a link into the same tab), or null if none. */
+export function readUrlState(): ParseResult | null {
+  const text = readHash();
+  return text === null ? null : parseState(text);
 }
 
 /** URL first (a shared link wins), then localStorage, then the lecture's scene. */

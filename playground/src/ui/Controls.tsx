@@ -313,7 +313,7 @@ export function LightControls({
   };
   const n = index + 1;
   useFolder(
-    `Lights.light ${n}`,
+    `Light ${n}`,
     {
       [`light${n}Position`]: {
         input: vec3('position', 0.5),

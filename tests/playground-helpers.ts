@@ -1,0 +1,109 @@
+import { expect, type Page } from '@playwright/test';
+
+/** Overlays drawn over the canvas (stats, hints, messages): hidden in canvas screenshots. */
+export const HIDE_OVERLAYS = '.stats, .hint, .messages, .compare-labels { visibility: hidden !important; }';
+
+/** The playground URL for a (partial) state: the same `#s=<json>` the app writes. */
+export function stateUrl(state: object): string {
+  const params = new URLSearchParams();
+  params.set('s', JSON.stringify(state));
+  return `/#${params}`;
+}
+
+/** Frames rendered so far (the canvas's `data-frames`). */
+export async function frames(page: Page): Promise<number> {
+  return Number((await page.getByTestId('viewport').getAttribute('data-frames')) ?? 0);
+}
+
+/** Rendering is on demand: wait for a first frame, then until no frame came for `quietMs`. */
+export async function settle(page: Page, quietMs = 400): Promise<void> {
+  await expect(page.getByTestId('viewport')).toHaveAttribute('data-frames', /[1-9]/);
+  let last = -1;
+  for (let i = 0; i < 50; i++) {
+    const n = await frames(page);
+    if (n === last) return;
+    last = n;
+    await page.waitForTimeout(quietMs);
+  }
+}
+
+/** Opens the playground (optionally on a state) with fresh storage and waits until it rests. */
+export async function open(page: Page, state?: object): Promise<void> {
+  await page.goto(state ? stateUrl(state) : '/');
+  await settle(page);
+}
+
+/** The canvas's own pixels (no overlays) as a PNG data URL: equal strings = equal pixels. */
+export async function picture(page: Page): Promise<string> {
+  return page.getByTestId('viewport').evaluate((canvas: HTMLCanvasElement) => canvas.toDataURL('image/png'));
+}
+
+/** One pixel of the canvas (x, y as fractions of the size, y from the top), RGBA. */
+export async function pixel(page: Page, fx: number, fy: number): Promise<number[]> {
+  return page.getByTestId('viewport').evaluate(
+    (canvas: HTMLCanvasElement, [x, y]) => {
+      const gl = canvas.getContext('webgl2')!;
+      const out = new Uint8Array(4);
+      gl.readPixels(
+        Math.floor(canvas.width * x),
+        Math.floor(canvas.height * (1 - y)),
+        1,
+        1,
+        gl.RGBA,
+        gl.UNSIGNED_BYTE,
+        out,
+      );
+      return Array.from(out);
+    },
+    [fx, fy] as const,
+  );
+}
+
+/** Types a value into a leva input (by its path id, e.g. `Material.shininess` or `Camera.eye.z`). */
+export async function typeInto(page: Page, id: string, value: string): Promise<void> {
+  const input = page.locator(`[id="${id}"]`);
+  await input.fill(value);
+  await input.press('Enter');
+  await settle(page);
+}
+
+/** Picks an option of a leva select (by its path id) by its label. */
+export async function choose(page: Page, id: string, label: string): Promise<void> {
+  await page.locator(`[id="${id}"]`).selectOption({ label });
+  await settle(page);
+}
+
+/** Toggles a leva checkbox (by its path id). */
+export async function toggle(page: Page, id: string): Promise<void> {
+  await page.locator(`label[for="${id}"]`).last().click();
+  await settle(page);
+}
+
+/** Clicks a leva button by its text. */
+export async function press(page: Page, text: string): Promise<void> {
+  await page.getByRole('button', { name: text, exact: true }).click();
+  await settle(page);
+}
+
+/** The state the page last wrote to its URL. */
+export async function urlState(page: Page): Promise<Record<string, unknown>> {
+  await page.waitForTimeout(300);
+  const hash = new URL(page.url()).hash.slice(1);
+  return JSON.parse(new URLSearchParams(hash).get('s') ?? '{}');
+}
+
+/** Drags on the canvas from one point to another (fractions of its box), in steps. */
+export async function drag(
+  page: Page,
+  from: [number, number],
+  to: [number, number],
+  steps = 12,
+): Promise<void> {
+  const box = (await page.getByTestId('viewport').boundingBox())!;
+  const at = ([fx, fy]: [number, number]) => [box.x + box.width * fx, box.y + box.height * fy] as const;
+  await page.mouse.move(...at(from));
+  await page.mouse.down();
+  await page.mouse.move(...at(to), { steps });
+  await page.mouse.up();
+  await settle(page);
+}

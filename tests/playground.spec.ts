@@ -1,0 +1,337 @@
+import { expect, type Page, test } from '@playwright/test';
+import {
+  choose,
+  drag,
+  frames,
+  open,
+  picture,
+  pixel,
+  press,
+  settle,
+  stateUrl,
+  toggle,
+  typeInto,
+  urlState,
+} from './playground-helpers';
+
+/** Runs each step and checks that the canvas pixels differ from the previous step's. */
+async function eachChangesThePicture(page: Page, steps: [string, () => Promise<void>][]) {
+  let before = await picture(page);
+  for (const [name, step] of steps) {
+    await step();
+    const after = await picture(page);
+    expect(after === before, `${name} changes the picture`).toBe(false);
+    before = after;
+  }
+}
+
+test.describe('the playground', () => {
+  test('opens on the lecture scene and reports the first frame', async ({ page }) => {
+    const logs: string[] = [];
+    page.on('console', (m) => logs.push(m.text()));
+    await open(page);
+    await expect(page.getByTestId('stats-triangles')).toHaveText('16,384');
+    await expect(page.locator('[id="Sphere.base"]')).toHaveValue('0');
+    await expect(page.locator('[id="Camera.eye.z"]')).toHaveValue('3.0');
+    await expect(page.locator('[id="Camera.fovy"]')).toHaveValue('90');
+    await expect(page.locator('[id="Lights.light 1.light1Position"]')).toHaveValue('-5.0');
+    const ms = Number(await page.getByTestId('viewport').getAttribute('data-first-frame-ms'));
+    expect(ms).toBeGreaterThan(0);
+    expect(logs.some((l) => l.startsWith('[shadelab] first frame rendered'))).toBe(true);
+    test.info().annotations.push({ type: 'first frame (ms after navigation)', description: ms.toFixed(1) });
+    console.log(`first frame: ${ms.toFixed(1)} ms after navigation start`);
+  });
+
+  test('every material control changes the picture', async ({ page }) => {
+    test.setTimeout(120_000);
+    await open(page);
+    await eachChangesThePicture(page, [
+      ['shading flat', () => choose(page, 'Material.shading', 'flat')],
+      ['shading gouraud', () => choose(page, 'Material.shading', 'gouraud')],
+      ['shading phong', () => choose(page, 'Material.shading', 'phong')],
+      ['lighting blinn-phong', () => choose(page, 'Material.lighting', 'blinn-phong')],
+      ['cel bands', () => typeInto(page, 'Material.celBands', '3')],
+      ['outline', () => toggle(page, 'Material.outline')],
+      ['ka', () => typeInto(page, 'Material.ka', '0.1')],
+      ['kd', () => typeInto(page, 'Material.kd.y', '0.9')],
+      ['ks', () => typeInto(page, 'Material.ks.z', '0.2')],
+      ['shininess', () => typeInto(page, 'Material.shininess', '5')],
+    ]);
+  });
+
+  test('every light control changes the picture; lights are added and removed', async ({ page }) => {
+    test.setTimeout(120_000);
+    await open(page);
+    const l = 'Light 1.light1';
+    await eachChangesThePicture(page, [
+      ['position', () => typeInto(page, `${l}Position`, '5')],
+      ['Ia', () => typeInto(page, `${l}Ia`, '0.6')],
+      ['Id', () => typeInto(page, `${l}Id.y`, '0.4')],
+      ['Is', () => typeInto(page, `${l}Is.z`, '0.1')],
+      ['attenuation b', () => typeInto(page, `${l}B`, '0.05')],
+      ['attenuation c', () => typeInto(page, `${l}C`, '0.01')],
+      ['attenuation a', () => typeInto(page, `${l}A`, '0.5')],
+      ['add light', () => press(page, 'add light')],
+      ['remove light', () => press(page, 'remove light 2')],
+      ['remove the last light', () => press(page, 'remove light 1')],
+    ]);
+    expect((await urlState(page))['lights']).toHaveLength(0);
+  });
+
+  test('every sphere, model and view control changes the picture', async ({ page }) => {
+    test.setTimeout(120_000);
+    await open(page);
+    await eachChangesThePicture(page, [
+      ['base', () => choose(page, 'Sphere.base', 'icosahedron')],
+      ['level', () => typeInto(page, 'Sphere.level', '1')],
+      ['auto detail', () => toggle(page, 'Sphere.auto')],
+      ['max error', () => typeInto(page, 'Sphere.maxErrorPx', '40')],
+      ['model scale', () => typeInto(page, 'Sphere.scale.y', '1.8')],
+      ['compare view', () => choose(page, 'View.view', 'flat | Gouraud | Phong | cel')],
+    ]);
+  });
+
+  test('every camera control changes the picture', async ({ page }) => {
+    test.setTimeout(120_000);
+    await open(page);
+    await eachChangesThePicture(page, [
+      ['eye', () => typeInto(page, 'Camera.eye.z', '4')],
+      ['at', () => typeInto(page, 'Camera.at', '0.5')],
+      ['up', () => typeInto(page, 'Camera.up', '0.5')],
+      ['fovy', () => typeInto(page, 'Camera.fovy', '60')],
+      ['near', () => typeInto(page, 'Camera.near', '2.5')],
+      ['far', () => typeInto(page, 'Camera.far', '2.8')],
+      ['orthographic', () => choose(page, 'Camera.projection', 'orthographic')],
+      ['ortho top', () => typeInto(page, 'Camera.top', '3')],
+      ['ortho fit aspect off', () => toggle(page, 'Camera.fitAspect')],
+      ['ortho right', () => typeInto(page, 'Camera.right', '4')],
+      ['ortho left', () => typeInto(page, 'Camera.left', '-1')],
+      ['ortho bottom', () => typeInto(page, 'Camera.bottom', '-2')],
+    ]);
+  });
+
+  test('a trackball drag rotates the sphere, and its speed and mapping matter', async ({ page }) => {
+    await open(page);
+    const start = await picture(page);
+    await drag(page, [0.5, 0.5], [0.7, 0.5]);
+    const turned = await picture(page);
+    expect(turned).not.toBe(start);
+    const rotation = ((await urlState(page))['trackball'] as { rotation: number[] }).rotation;
+    expect(rotation[1]).toBeGreaterThan(0.05); // a turn about the camera's v axis = world y here
+    expect(Math.hypot(...rotation)).toBeCloseTo(1, 9);
+
+    // Same drag at twice the speed turns further.
+    await press(page, 'reset rotation');
+    expect(await picture(page)).toBe(start);
+    await typeInto(page, 'Trackball.rotateSpeed', '2');
+    await drag(page, [0.5, 0.5], [0.7, 0.5]);
+    expect(await picture(page)).not.toBe(turned);
+
+    // A drag past the rim maps differently on Bell's sheet than on the arcball.
+    await typeInto(page, 'Trackball.rotateSpeed', '1');
+    const rim = async () => {
+      await press(page, 'reset rotation');
+      await drag(page, [0.5, 0.5], [0.98, 0.9]);
+      return picture(page);
+    };
+    const arcball = await rim();
+    await choose(page, 'Trackball.mapping', 'bell');
+    expect(await rim()).not.toBe(arcball);
+  });
+
+  test('the wheel zooms, by zoomSpeed', async ({ page }) => {
+    await open(page);
+    const canvas = page.getByTestId('viewport');
+    const box = (await canvas.boundingBox())!;
+    const wheel = async () => {
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      await page.mouse.wheel(0, -200);
+      await settle(page);
+      return ((await urlState(page))['camera'] as { eye: number[] }).eye[2]!;
+    };
+    const z1 = await wheel();
+    expect(z1).toBeLessThan(3);
+    await typeInto(page, 'Trackball.zoomSpeed', '3');
+    const z2 = await wheel();
+    expect(3 - z2).toBeGreaterThan((3 - z1) * 1.5);
+  });
+
+  test('camera keys move the camera along its frame, by moveSpeed', async ({ page }) => {
+    await open(page);
+    const canvas = page.getByTestId('viewport');
+    await canvas.focus();
+    const before = await picture(page);
+    await page.keyboard.press('KeyW');
+    await settle(page);
+    expect(await picture(page)).not.toBe(before);
+    let camera = (await urlState(page))['camera'] as { eye: number[]; at: number[] };
+    expect(camera.eye[2]).toBeCloseTo(2.9, 9);
+    expect(camera.at[2]).toBeCloseTo(-0.1, 9);
+    await page.keyboard.press('KeyD');
+    await page.keyboard.press('KeyE');
+    await settle(page);
+    camera = (await urlState(page))['camera'] as { eye: number[]; at: number[] };
+    expect(camera.eye[0]).toBeCloseTo(0.1, 9);
+    expect(camera.eye[1]).toBeCloseTo(0.1, 9);
+    await typeInto(page, 'Camera.moveSpeed', '0.5');
+    await canvas.focus();
+    await page.keyboard.press('KeyS');
+    await settle(page);
+    camera = (await urlState(page))['camera'] as { eye: number[]; at: number[] };
+    expect(camera.eye[2]).toBeCloseTo(3.4, 9);
+  });
+
+  test('a shared URL reproduces the same pixels', async ({ page, browser }) => {
+    await open(page);
+    await choose(page, 'Material.shading', 'gouraud');
+    await typeInto(page, 'Material.celBands', '4');
+    await drag(page, [0.4, 0.4], [0.6, 0.7]);
+    const url = page.url();
+    const original = await picture(page);
+    const other = await browser.newPage(); // a fresh context: no localStorage
+    await other.goto(url);
+    await settle(other);
+    expect(await picture(other)).toBe(original);
+    await other.close();
+  });
+
+  test('the state survives a reload (localStorage) and the URL wins over it', async ({ page }) => {
+    await open(page);
+    await typeInto(page, 'Material.shininess', '7');
+    await page.waitForTimeout(300);
+    await page.goto('/');
+    await settle(page);
+    await expect(page.locator('[id="Material.shininess"]')).toHaveValue('7');
+    await page.goto('about:blank');
+    await page.goto(stateUrl({ material: { shininess: 9 } }));
+    await settle(page);
+    await expect(page.locator('[id="Material.shininess"]')).toHaveValue('9');
+  });
+
+  test('a broken shader edit shows the error line, keeps rendering and keeps the text after a reload', async ({
+    page,
+  }) => {
+    await open(page);
+    const text = page.getByTestId('shader-text');
+    const good = await picture(page);
+    const source = await text.inputValue();
+    const lines = source.split('\n');
+    const at = lines.findIndex((l) => l.includes('void main()'));
+    lines.splice(at + 1, 0, '  this is not glsl;');
+    const broken = lines.join('\n');
+    await text.fill(broken);
+    await expect(page.getByTestId('shader-errors')).toContainText(`fragment line ${at + 2}:`);
+    await expect(page.getByTestId('shader-status')).toHaveText(/last good program keeps rendering/);
+    await settle(page);
+    expect(await picture(page)).toBe(good);
+    // It keeps rendering: a change still draws a new frame with the last good program.
+    const n = await frames(page);
+    await typeInto(page, 'Material.shininess', '5');
+    expect(await frames(page)).toBeGreaterThan(n);
+    expect(Math.max(...(await pixel(page, 0.5, 0.5)).slice(0, 3))).toBeGreaterThan(40);
+    // The edit is never lost.
+    await page.reload();
+    await settle(page);
+    await expect(page.getByTestId('shader-text')).toHaveValue(broken);
+    await expect(page.getByTestId('shader-errors')).toContainText(`fragment line ${at + 2}:`);
+    // A working edit recompiles live.
+    const red = source.replace(/}\s*$/, '  gl_FragColor = vec4(1.0, 0.0, 0.0, 1.0);\n}\n');
+    await page.getByTestId('shader-text').fill(red);
+    await expect(page.getByTestId('shader-status')).toHaveText(/compiled and rendering/);
+    await settle(page);
+    const centre = await pixel(page, 0.5, 0.5);
+    expect(centre.slice(0, 3)).toEqual([255, 0, 0]);
+    await page.getByRole('button', { name: 'reset to generated' }).click();
+    await settle(page);
+    await typeInto(page, 'Material.shininess', '50');
+    expect(await picture(page)).toBe(good);
+  });
+
+  test('bad typed values show an error naming the parameter and keep what was typed', async ({ page }) => {
+    await open(page);
+    const good = await picture(page);
+    await typeInto(page, 'Camera.fovy', '200');
+    await expect(page.getByTestId('input-error')).toContainText('camera.fovy');
+    await expect(page.locator('[id="Camera.fovy"]')).toHaveValue('200');
+    expect(await picture(page)).toBe(good);
+    await typeInto(page, 'Camera.fovy', '90');
+    await expect(page.getByTestId('input-error')).toHaveCount(0);
+    // A cross-parameter error comes from the package itself and names the parameter.
+    await typeInto(page, 'Camera.near', '20');
+    await expect(page.getByTestId('input-error')).toContainText(/camera: .*(far|near)/);
+    await expect(page.locator('[id="Camera.near"]')).toHaveValue(/^20(\.0+)?$/);
+    expect(await picture(page)).toBe(good);
+    // A sphere too big to build is refused before allocating, and the page stays responsive.
+    await typeInto(page, 'Camera.near', '0.1');
+    await typeInto(page, 'Sphere.level', '16');
+    await expect(page.getByTestId('input-error')).toContainText(/sphere|level/);
+    expect(await picture(page)).toBe(good);
+  });
+
+  test('hostile URL state is refused with a message and never executed', async ({ page }) => {
+    const hostile = [
+      '{"__proto__":{"polluted":true}}',
+      '{"view":"<img src=x onerror=window.__pwned=1>"}',
+      `{"view":"single"${' '.repeat(20_000)}}`,
+      '{"camera":{"fovy":1e308}}',
+      '{not json',
+    ];
+    for (const text of hostile) {
+      const params = new URLSearchParams();
+      params.set('s', text);
+      await page.goto('about:blank');
+      await page.goto(`/#${params}`);
+      await settle(page);
+      await expect(page.getByTestId('notice').first()).toContainText('The state in the URL was refused');
+      const pwned = await page.evaluate(() => ({
+        pwned: (window as unknown as { __pwned?: number }).__pwned,
+        polluted: ({} as Record<string, unknown>)['polluted'],
+      }));
+      expect(pwned).toEqual({ pwned: undefined, polluted: undefined });
+      await expect(page.getByTestId('stats-triangles')).toHaveText(/\d/);
+    }
+  });
+
+  test('WebGL context loss shows a message and recovers with the scene intact', async ({ page }) => {
+    await open(page);
+    await choose(page, 'Material.shading', 'flat');
+    const before = await picture(page);
+    await page.evaluate(() => {
+      const canvas = document.querySelector('canvas')!;
+      const ext = canvas.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
+      (window as unknown as { __lose: WEBGL_lose_context }).__lose = ext;
+      ext.loseContext();
+    });
+    await expect(page.getByTestId('context-message')).toContainText('lost');
+    await page.evaluate(() => (window as unknown as { __lose: WEBGL_lose_context }).__lose.restoreContext());
+    await expect(page.getByTestId('context-message')).toContainText('restored');
+    await settle(page);
+    expect(await picture(page)).toBe(before);
+    await expect(page.locator('[id="Material.shading"]')).toHaveValue('0');
+  });
+
+  test('exports the canvas as PNG', async ({ page }) => {
+    await open(page);
+    const download = page.waitForEvent('download');
+    await page.getByRole('button', { name: 'export PNG' }).click();
+    const file = await download;
+    expect(file.suggestedFilename()).toBe('shadelab.png');
+    const stream = await file.createReadStream();
+    const chunks: Buffer[] = [];
+    for await (const chunk of stream) chunks.push(chunk as Buffer);
+    expect(Buffer.concat(chunks).subarray(1, 4).toString()).toBe('PNG');
+  });
+
+  test('the controls are labelled and reachable by keyboard', async ({ page }) => {
+    await open(page);
+    await expect(page.getByLabel('shading')).toBeVisible();
+    await expect(page.getByLabel('shininess')).toBeVisible();
+    await expect(page.getByRole('img', { name: /Lit sphere/ })).toBeVisible();
+    await expect(page.getByLabel('fragment shader GLSL')).toBeVisible();
+    // Tab to the shading select and change it with the keyboard alone.
+    await page.getByLabel('shading').focus();
+    await page.keyboard.press('ArrowUp');
+    await settle(page);
+    expect(((await urlState(page))['material'] as { shading: string }).shading).toBe('gouraud');
+  });
+});
