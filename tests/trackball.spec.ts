@@ -11,6 +11,15 @@ async function state(canvas: Locator) {
     dragging: el.dataset.dragging,
     distance: Number(el.dataset.distance),
     image: el.toDataURL('image/png'),
+    // Pixels the box covers (the background is cleared to black).
+    covered: (() => {
+      const gl = el.getContext('webgl2')!;
+      const all = new Uint8Array(el.width * el.height * 4);
+      gl.readPixels(0, 0, el.width, el.height, gl.RGBA, gl.UNSIGNED_BYTE, all);
+      let n = 0;
+      for (let i = 0; i < all.length; i += 4) if (all[i] || all[i + 1] || all[i + 2]) n++;
+      return n;
+    })(),
     centre: (() => {
       const gl = el.getContext('webgl2')!;
       const out = new Uint8Array(4);
@@ -20,8 +29,8 @@ async function state(canvas: Locator) {
   }));
 }
 
-async function open(page: Page, mapping = 'bell') {
-  await page.goto(`/harness/trackball.html?mapping=${mapping}`);
+async function open(page: Page, mapping = 'bell', camera = 'perspective') {
+  await page.goto(`/harness/trackball.html?mapping=${mapping}&camera=${camera}`);
   const canvas = page.getByTestId('viewport');
   await expect(canvas).toHaveAttribute('data-frames', '1');
   return canvas;
@@ -93,14 +102,19 @@ test('releasing outside the canvas ends the drag, and the trackball keeps workin
   });
 });
 
-test('the wheel zooms the perspective camera in and out', async ({ page }) => {
-  const canvas = await open(page);
-  const before = await state(canvas);
-  await page.mouse.move(CX, CY);
-  await page.mouse.wheel(0, -200);
-  await expect.poll(async () => (await state(canvas)).distance).toBeLessThan(before.distance);
-  const zoomedIn = await state(canvas);
-  expect(zoomedIn.image).not.toBe(before.image);
-  await page.mouse.wheel(0, 400);
-  await expect.poll(async () => (await state(canvas)).distance).toBeGreaterThan(before.distance);
-});
+for (const camera of ['perspective', 'ortho']) {
+  test(`the wheel zooms the ${camera === 'ortho' ? 'orthographic' : camera} camera in and out: the box grows and shrinks on screen`, async ({
+    page,
+  }) => {
+    const canvas = await open(page, 'bell', camera);
+    const before = await state(canvas);
+    await page.mouse.move(CX, CY);
+    await page.mouse.wheel(0, -200); // up: in
+    await expect.poll(async () => (await state(canvas)).frames).toBeGreaterThan(before.frames);
+    const zoomedIn = await state(canvas);
+    expect(zoomedIn.covered).toBeGreaterThan(before.covered * 1.2);
+    await page.mouse.wheel(0, 600); // down: out, past the start
+    await expect.poll(async () => (await state(canvas)).covered).toBeLessThan(before.covered / 1.2);
+    if (camera === 'perspective') expect((await state(canvas)).distance).toBeGreaterThan(before.distance);
+  });
+}
