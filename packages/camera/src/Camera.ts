@@ -214,8 +214,12 @@ export class Camera extends ThreeCamera {
   /**
    * Use an orthographic projection, in the lecture's argument order (three's `OrthographicCamera` takes
    * `left, right, top, bottom, near, far`). Planes are camera-space, world units.
-   * @param r - Right plane x. @param l - Left plane x, ≠ r. @param t - Top plane y. @param b - Bottom plane y, ≠ t.
-   * @param n - Near plane distance (any finite value). @param f - Far plane distance, > n.
+   * @param r - Right plane, camera-space x, world units.
+   * @param l - Left plane, camera-space x, ≠ r (r < l mirrors the picture, as in three).
+   * @param t - Top plane, camera-space y.
+   * @param b - Bottom plane, camera-space y, ≠ t.
+   * @param n - Near plane distance along the gaze (any finite value, 0 and negative included).
+   * @param f - Far plane distance along the gaze, > n.
    * Also sets {@link Camera.aspect} to |r − l| / |t − b|.
    * @throws RangeError naming the first bad parameter (NaN included).
    */

@@ -2,8 +2,11 @@ import { Controls, type Object3D } from 'three';
 
 /** Events of {@link CameraMovement}: `change` after every move or turn, `start`/`end` around a pointer drag. */
 export interface CameraMovementEventMap {
+  /** The camera moved or turned. */
   change: object;
+  /** A pointer drag began (primary button down on the element). */
   start: object;
+  /** The pointer drag ended (button up or pointer cancelled). */
   end: object;
 }
 
