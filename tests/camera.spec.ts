@@ -73,3 +73,29 @@ test('two surfaces 1 unit apart at z = 1e4 (near 0.01, far 1e6): which depth mod
     'reversed-float': ['reversed', 'near'],
   });
 });
+
+test('far/near from 10 to 1e9 (DESIGN.md extremes): logarithmic and reversed keep Δz/z = 1e-5 at z = far/4', async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => {
+    const d = window.cameraDepth;
+    const modes = ['standard', 'logarithmic', 'reversed', 'reversed-float'] as const;
+    const near = 0.01;
+    return Object.fromEntries(
+      modes.map((m) => [
+        m,
+        [1, 2, 3, 4, 5, 6, 7, 8, 9].map((e) => {
+          const far = near * 10 ** e;
+          return d.kept(m, near, far, far / 4, 1e-5);
+        }),
+      ]),
+    );
+  });
+  expect(result.logarithmic).toEqual(Array(9).fill('near'));
+  expect(result.reversed).toEqual(Array(9).fill('near'));
+  expect(result['reversed-float']).toEqual(Array(9).fill('near'));
+  // Standard depth needs Δz/z ≳ 6e-8 · z/near: kept while z/near = 2.5 and 25, lost at z/near = 2.5e8.
+  expect(result.standard.slice(0, 2)).toEqual(['near', 'near']);
+  expect(result.standard[8]).toBe('far');
+});
