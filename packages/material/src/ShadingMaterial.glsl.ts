@@ -94,11 +94,11 @@ void main() {
   vec3 p0 = fetchPosition(first);
   vec3 p1 = fetchPosition(first + 1);
   vec3 p2 = fetchPosition(first + 2);
-  vec3 centroid = (modelMatrix * vec4((p0 + p1 + p2) / 3.0, 1.0)).xyz;
+  vec3 faceCentre = (modelMatrix * vec4((p0 + p1 + p2) / 3.0, 1.0)).xyz;
   vec3 faceNormal = cross(p1 - p0, p2 - p0);
   float m = max(max(abs(faceNormal.x), abs(faceNormal.y)), abs(faceNormal.z));
   faceNormal = m > 0.0 ? faceNormal / m : vec3(0.0); // rescaled so it neither overflows nor underflows
-  vColor = shadeColor(centroid, shadingNormalMatrix * faceNormal);
+  vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
 #else
 #ifdef SPHERE_NORMALS
   vec3 objectNormal = position;

@@ -1,0 +1,516 @@
+// Harness for tests/material.spec.ts: renders the lecture's scene with ShadingMaterial and compares every
+// pixel with shade() evaluated on the CPU for the same fragment. The CPU finds each pixel's triangle and
+// barycentrics with three's Raycaster (ray through the pixel centre, nearest hit), using a screen-tile
+// binning of the triangles so that each ray tests only the few triangles whose screen box covers it.
+import {
+  computeNormalMatrix,
+  eyeOf,
+  type Lighting,
+  linearToSrgb8,
+  PhongLight,
+  type ShadeLight,
+  type ShadeMaterial,
+  type Shading,
+  ShadingMaterial,
+  shade,
+} from '@shadelab/material';
+import {
+  BufferGeometry,
+  type Camera,
+  Float32BufferAttribute,
+  Matrix3,
+  Mesh,
+  OrthographicCamera,
+  PerspectiveCamera,
+  Raycaster,
+  Scene,
+  Triangle,
+  Vector2,
+  Vector3,
+  Vector4,
+  WebGLRenderer,
+} from 'three';
+
+/** The lecture's sphere: a tetrahedron subdivided `level` times, vertices pushed to the unit sphere. */
+function tetrahedronSphere(level: number): Float32Array {
+  const s2 = Math.SQRT2;
+  const s6 = Math.sqrt(6);
+  const a = [0, 0, 1];
+  const b = [0, (2 * s2) / 3, -1 / 3];
+  const c = [-s6 / 3, -s2 / 3, -1 / 3];
+  const d = [s6 / 3, -s2 / 3, -1 / 3];
+  const out: number[] = [];
+  const mid = (p: number[], q: number[]) => {
+    const m = [p[0] + q[0], p[1] + q[1], p[2] + q[2]];
+    const l = Math.hypot(m[0], m[1], m[2]);
+    return [m[0] / l, m[1] / l, m[2] / l];
+  };
+  const divide = (p: number[], q: number[], r: number[], n: number): void => {
+    if (n === 0) {
+      out.push(...p, ...q, ...r);
+      return;
+    }
+    const pq = mid(p, q);
+    const pr = mid(p, r);
+    const qr = mid(q, r);
+    divide(p, pq, pr, n - 1);
+    divide(pq, q, qr, n - 1);
+    divide(qr, r, pr, n - 1);
+    divide(pq, qr, pr, n - 1);
+  };
+  divide(d, c, b, level);
+  divide(a, b, c, level);
+  divide(a, d, b, level);
+  divide(a, c, d, level);
+  return new Float32Array(out);
+}
+
+const geometries = new Map<string, BufferGeometry>();
+/** Non-indexed sphere; `normals: false` drops the normal attribute and flags it for analytic normals. */
+function sphereGeometry(level: number, normals: boolean): BufferGeometry {
+  const key = `${level}/${normals}`;
+  let g = geometries.get(key);
+  if (g === undefined) {
+    g = new BufferGeometry();
+    const positions = tetrahedronSphere(level);
+    g.setAttribute('position', new Float32BufferAttribute(positions, 3));
+    if (normals) g.setAttribute('normal', new Float32BufferAttribute(positions.slice(), 3));
+    else g.userData.isSphere = true;
+    geometries.set(key, g);
+  }
+  return g;
+}
+
+export interface CompareConfig {
+  shading: Shading;
+  lighting: Lighting;
+  celBands?: number;
+  level?: number;
+  scale?: [number, number, number];
+  rotation?: [number, number, number];
+  analytic?: boolean;
+  orthographic?: boolean;
+  shininess?: number;
+  ks?: [number, number, number];
+  kd?: [number, number, number];
+  /** World position of the light. @default the lecture's (−5, 10, 20) */
+  light?: [number, number, number];
+  attenuation?: { a?: number; b?: number; c?: number };
+  size?: number;
+}
+
+export interface CompareStats {
+  compared: number;
+  maxError: number;
+  mismatches: number;
+  boundarySkipped: number;
+  covered: number;
+  facesChecked: number;
+  facesMultiColour: number;
+  darkPixels: number;
+  worst: unknown;
+}
+
+const canvas = document.getElementById('viewport') as HTMLCanvasElement;
+const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+renderer.setPixelRatio(1);
+renderer.setClearColor(0x0000ff, 1); // pure blue: a NaN pixel (black) or a hole is never mistaken for it
+
+function makeCamera(orthographic: boolean): Camera {
+  const camera = orthographic
+    ? new OrthographicCamera(-3, 3, 3, -3, 0.1, 10)
+    : new PerspectiveCamera(90, 1, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+interface Hits {
+  triangle: Int32Array; // per pixel, −1 = miss
+  bary: Float32Array; // 3 per pixel
+  point: Float64Array; // 3 per pixel, world
+}
+
+/** Per-pixel nearest triangle and barycentrics with three's Raycaster; candidates from screen tiles. */
+function raycastPixels(world: Float64Array, camera: Camera, size: number, mirrored: boolean): Hits {
+  const triangles = world.length / 9;
+  const tile = 8;
+  const tiles = Math.ceil(size / tile);
+  const bins: number[][] = Array.from({ length: tiles * tiles }, () => []);
+  const v = new Vector3();
+  const px = new Float64Array(6);
+  for (let t = 0; t < triangles; t++) {
+    let minX = Number.POSITIVE_INFINITY;
+    let minY = Number.POSITIVE_INFINITY;
+    let maxX = Number.NEGATIVE_INFINITY;
+    let maxY = Number.NEGATIVE_INFINITY;
+    for (let k = 0; k < 3; k++) {
+      v.set(world[9 * t + 3 * k], world[9 * t + 3 * k + 1], world[9 * t + 3 * k + 2]).project(camera);
+      px[2 * k] = ((v.x + 1) / 2) * size;
+      px[2 * k + 1] = ((v.y + 1) / 2) * size;
+      minX = Math.min(minX, px[2 * k]);
+      maxX = Math.max(maxX, px[2 * k]);
+      minY = Math.min(minY, px[2 * k + 1]);
+      maxY = Math.max(maxY, px[2 * k + 1]);
+    }
+    if (!Number.isFinite(minX + maxX + minY + maxY)) continue;
+    const x0 = Math.max(0, Math.floor((minX - 1) / tile));
+    const x1 = Math.min(tiles - 1, Math.floor((maxX + 1) / tile));
+    const y0 = Math.max(0, Math.floor((minY - 1) / tile));
+    const y1 = Math.min(tiles - 1, Math.floor((maxY + 1) / tile));
+    for (let ty = y0; ty <= y1; ty++) for (let tx = x0; tx <= x1; tx++) bins[ty * tiles + tx].push(t);
+  }
+  const raycaster = new Raycaster();
+  const ndc = new Vector2();
+  const a = new Vector3();
+  const b = new Vector3();
+  const c = new Vector3();
+  const hit = new Vector3();
+  const best = new Vector3();
+  const bc = new Vector3();
+  const triangle = new Int32Array(size * size).fill(-1);
+  const bary = new Float32Array(3 * size * size);
+  const point = new Float64Array(3 * size * size);
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      const bin = bins[Math.floor(y / tile) * tiles + Math.floor(x / tile)];
+      if (bin.length === 0) continue;
+      ndc.set(((x + 0.5) / size) * 2 - 1, ((y + 0.5) / size) * 2 - 1);
+      raycaster.setFromCamera(ndc, camera);
+      let bestT = -1;
+      let bestD = Number.POSITIVE_INFINITY;
+      for (const t of bin) {
+        a.fromArray(world, 9 * t);
+        b.fromArray(world, 9 * t + 3);
+        c.fromArray(world, 9 * t + 6);
+        // Cull back faces as three does (its front face flips when the determinant is negative).
+        const hitTriangle = mirrored
+          ? raycaster.ray.intersectTriangle(a, c, b, true, hit)
+          : raycaster.ray.intersectTriangle(a, b, c, true, hit);
+        if (hitTriangle === null) continue;
+        const dist = hit.distanceTo(raycaster.ray.origin);
+        if (dist < bestD) {
+          bestD = dist;
+          bestT = t;
+          best.copy(hit);
+        }
+      }
+      if (bestT < 0) continue;
+      const i = y * size + x;
+      triangle[i] = bestT;
+      a.fromArray(world, 9 * bestT);
+      b.fromArray(world, 9 * bestT + 3);
+      c.fromArray(world, 9 * bestT + 6);
+      Triangle.getBarycoord(best, a, b, c, bc);
+      bary[3 * i] = bc.x;
+      bary[3 * i + 1] = bc.y;
+      bary[3 * i + 2] = bc.z;
+      point[3 * i] = best.x;
+      point[3 * i + 1] = best.y;
+      point[3 * i + 2] = best.z;
+    }
+  }
+  return { triangle, bary, point };
+}
+
+const hitCache = new Map<string, Hits>();
+
+function render(config: CompareConfig): {
+  pixels: Uint8Array;
+  mesh: Mesh;
+  material: ShadingMaterial;
+  light: PhongLight;
+  camera: Camera;
+  size: number;
+} {
+  const size = config.size ?? 256;
+  if (canvas.width !== size) renderer.setSize(size, size, false);
+  const light = new PhongLight({ ambient: [0.2, 0.2, 0.2], diffuse: [1, 1, 1], specular: [0.8, 0.8, 0.8] });
+  light.position.set(...(config.light ?? [-5, 10, 20]));
+  if (config.attenuation) light.attenuation = config.attenuation;
+  const material = new ShadingMaterial({
+    shading: config.shading,
+    lighting: config.lighting,
+    celBands: config.celBands ?? 0,
+    lights: [light],
+    ...(config.shininess !== undefined ? { shininess: config.shininess } : {}),
+    ...(config.ks ? { ks: config.ks } : {}),
+    ...(config.kd ? { kd: config.kd } : {}),
+  });
+  const analytic = config.analytic ?? config.shading !== 'gouraud';
+  const mesh = new Mesh(sphereGeometry(config.level ?? 6, !analytic), material);
+  mesh.scale.set(...(config.scale ?? [2, 1, 2]));
+  mesh.rotation.set(...(config.rotation ?? [0, 0, 0]));
+  const scene = new Scene();
+  scene.add(mesh, light);
+  const camera = makeCamera(config.orthographic ?? false);
+  renderer.render(scene, camera);
+  const gl = renderer.getContext();
+  const pixels = new Uint8Array(4 * size * size);
+  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  return { pixels, mesh, material, light, camera, size };
+}
+
+/** Render `config` on the GPU and compare every covered pixel away from the silhouette with shade(). */
+function compare(config: CompareConfig): CompareStats {
+  const { pixels, mesh, material, light, camera, size } = render(config);
+  const positions = mesh.geometry.getAttribute('position').array as Float32Array;
+  const count = positions.length / 3;
+  // World positions and world normals of the vertices, as the vertex shader computes them.
+  const nm = computeNormalMatrix(mesh.matrixWorld, new Matrix3());
+  const world = new Float64Array(3 * count);
+  const normals = new Float64Array(3 * count);
+  const v = new Vector3();
+  for (let i = 0; i < count; i++) {
+    v.fromArray(positions, 3 * i).applyMatrix4(mesh.matrixWorld);
+    world.set([v.x, v.y, v.z], 3 * i);
+    v.fromArray(positions, 3 * i).applyMatrix3(nm);
+    const l = v.length();
+    if (l > 0) v.divideScalar(l);
+    normals.set([v.x, v.y, v.z], 3 * i);
+  }
+  // Screen positions (pixels) of the vertices, for the flat shading edge margin.
+  const screen = new Float64Array(2 * count);
+  for (let i = 0; i < count; i++) {
+    v.fromArray(world, 3 * i).project(camera);
+    screen[2 * i] = ((v.x + 1) / 2) * size;
+    screen[2 * i + 1] = ((v.y + 1) / 2) * size;
+  }
+  /** Distance in pixels from (x, y) to the nearest edge line of screen triangle t. */
+  const edgeDistance = (t: number, x: number, y: number): number => {
+    let d = Number.POSITIVE_INFINITY;
+    for (let k = 0; k < 3; k++) {
+      const i = 3 * t + k;
+      const j = 3 * t + ((k + 1) % 3);
+      const ex = screen[2 * j] - screen[2 * i];
+      const ey = screen[2 * j + 1] - screen[2 * i + 1];
+      const len = Math.hypot(ex, ey);
+      if (!(len > 0)) return 0;
+      d = Math.min(d, Math.abs((x - screen[2 * i]) * ey - (y - screen[2 * i + 1]) * ex) / len);
+    }
+    return d;
+  };
+  const key = `${config.level ?? 6}/${mesh.matrixWorld.elements.join(',')}/${config.orthographic ?? false}/${size}`;
+  let hits = hitCache.get(key);
+  if (hits === undefined) {
+    hits = raycastPixels(world, camera, size, mesh.matrixWorld.determinant() < 0);
+    hitCache.set(key, hits);
+  }
+  const e = eyeOf(camera, new Vector4());
+  const eye = [e.x, e.y, e.z, e.w];
+  const m: ShadeMaterial = {
+    ka: material.ka.toArray(),
+    kd: material.kd.toArray(),
+    ks: material.ks.toArray(),
+    shininess: material.shininess,
+    lighting: material.lighting,
+    celBands: material.celBands,
+  };
+  const lightPosition = light.getWorldPosition(new Vector3()).toArray();
+  const lights: ShadeLight[] = [
+    {
+      position: lightPosition,
+      ambient: light.ambient.toArray(),
+      diffuse: light.diffuse.toArray(),
+      specular: light.specular.toArray(),
+      attenuation: light.attenuation,
+    },
+  ];
+  const bands = material.celBands;
+  /**
+   * Near a discontinuity of the lighting, where GPU (float32) and CPU (float64) may round to either side:
+   * a cel band edge, the cel highlight edge, or the terminator (l·n = 0) when the specular jumps there
+   * (shininess 0 or cel).
+   */
+  const atDiscontinuity = (position: ArrayLike<number>, normal: ArrayLike<number>): boolean => {
+    if (bands === 0 && m.shininess !== 0) return false;
+    const n = new Vector3().fromArray(normal).normalize();
+    const l = new Vector3().fromArray(lightPosition).sub(new Vector3().fromArray(position)).normalize();
+    const ndl = n.dot(l);
+    if (Math.abs(ndl) < 0.01) return true;
+    if (bands === 0) return false;
+    const scaled = Math.max(ndl, 0) * bands;
+    const edge = Math.round(scaled);
+    if (Math.abs(scaled - edge) < 0.02 && edge > 0 && edge < bands) return true;
+    const raw = shade(
+      { position, normal, eye },
+      { ...m, celBands: 0, ka: [0, 0, 0], kd: [0, 0, 0], ks: [1, 1, 1] },
+      [{ ...lights[0], ambient: [0, 0, 0], specular: [1, 1, 1], attenuation: { a: 1, b: 0, c: 0 } }],
+    );
+    return Math.abs(raw[0] - 0.5) < 0.02;
+  };
+  // Per-vertex (gouraud) and per-face (flat) CPU colours, linear.
+  const vertexColour = new Float64Array(3 * count);
+  const faceColour = new Float64Array(count);
+  const faceBoundary = new Uint8Array(count / 3);
+  const vertexBoundary = new Uint8Array(count);
+  if (config.shading === 'gouraud') {
+    for (let i = 0; i < count; i++) {
+      vertexBoundary[i] = atDiscontinuity(
+        world.subarray(3 * i, 3 * i + 3),
+        normals.subarray(3 * i, 3 * i + 3),
+      )
+        ? 1
+        : 0;
+      vertexColour.set(
+        shade(
+          { position: world.subarray(3 * i, 3 * i + 3), normal: normals.subarray(3 * i, 3 * i + 3), eye },
+          m,
+          lights,
+        ),
+        3 * i,
+      );
+    }
+  }
+  if (config.shading === 'flat') {
+    const p0 = new Vector3();
+    const p1 = new Vector3();
+    const p2 = new Vector3();
+    for (let t = 0; t < count / 3; t++) {
+      p0.fromArray(positions, 9 * t);
+      p1.fromArray(positions, 9 * t + 3);
+      p2.fromArray(positions, 9 * t + 6);
+      const centroid = p0.clone().add(p1).add(p2).divideScalar(3).applyMatrix4(mesh.matrixWorld).toArray();
+      const faceNormal = p1.clone().sub(p0).cross(p2.clone().sub(p0)).applyMatrix3(nm).toArray();
+      faceColour.set(shade({ position: centroid, normal: faceNormal, eye }, m, lights), 3 * t);
+      faceBoundary[t] = atDiscontinuity(centroid, faceNormal) ? 1 : 0;
+    }
+  }
+  const stats: CompareStats = {
+    compared: 0,
+    maxError: 0,
+    mismatches: 0,
+    boundarySkipped: 0,
+    covered: 0,
+    facesChecked: 0,
+    facesMultiColour: 0,
+    darkPixels: 0,
+    worst: null,
+  };
+  const floor = linearToSrgb8([m.ka[0] * 0.2, m.ka[1] * 0.2, m.ka[2] * 0.2]);
+  const faceSeen = new Map<number, number>();
+  const expected = [0, 0, 0] as [number, number, number];
+  const linear: [number, number, number] = [0, 0, 0];
+  const normal = [0, 0, 0];
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      const i = y * size + x;
+      const r = pixels[4 * i];
+      const g = pixels[4 * i + 1];
+      const b = pixels[4 * i + 2];
+      const isClear = r === 0 && g === 0 && b === 255;
+      if (!isClear) {
+        stats.covered++;
+        // Every lit colour is ≥ ka·Ia (≈ sRGB 97, 75, 56 here): a (near-)black pixel means NaN.
+        if (Math.max(r, g, b) < Math.min(32, floor[0] - 1)) stats.darkPixels++;
+      }
+      const t = hits.triangle[i];
+      if (t < 0) continue;
+      // Away from the silhouette: all 8 neighbours hit the mesh too.
+      let interior = x > 0 && y > 0 && x < size - 1 && y < size - 1;
+      for (let dy = -1; interior && dy <= 1; dy++)
+        for (let dx = -1; interior && dx <= 1; dx++)
+          if (hits.triangle[i + dy * size + dx] < 0) interior = false;
+      if (!interior) continue;
+      const b0 = hits.bary[3 * i];
+      const b1 = hits.bary[3 * i + 1];
+      const b2 = hits.bary[3 * i + 2];
+      const position = hits.point.subarray(3 * i, 3 * i + 3);
+      if (config.shading === 'phong') {
+        for (let k = 0; k < 3; k++)
+          normal[k] = b0 * normals[9 * t + k] + b1 * normals[9 * t + 3 + k] + b2 * normals[9 * t + 6 + k];
+        if (atDiscontinuity(position, normal)) {
+          stats.boundarySkipped++;
+          continue;
+        }
+        shade({ position, normal, eye }, m, lights, linear);
+      } else if (config.shading === 'gouraud') {
+        // A vertex colour quantised on the other side of an edge changes the whole triangle.
+        if (vertexBoundary[3 * t] || vertexBoundary[3 * t + 1] || vertexBoundary[3 * t + 2]) {
+          stats.boundarySkipped++;
+          continue;
+        }
+        for (let k = 0; k < 3; k++)
+          linear[k] =
+            b0 * vertexColour[9 * t + k] +
+            b1 * vertexColour[9 * t + 3 + k] +
+            b2 * vertexColour[9 * t + 6 + k];
+      } else {
+        // Flat: pixel centres within 0.1 px of an edge may belong to the neighbour on the GPU, whose
+        // rasteriser snaps vertices to a sub-pixel grid.
+        if (edgeDistance(t, x + 0.5, y + 0.5) < 0.1 || faceBoundary[t]) {
+          stats.boundarySkipped++;
+          continue;
+        }
+        linear[0] = faceColour[3 * t];
+        linear[1] = faceColour[3 * t + 1];
+        linear[2] = faceColour[3 * t + 2];
+        const packed = (r << 16) | (g << 8) | b;
+        const seen = faceSeen.get(t);
+        if (seen === undefined) faceSeen.set(t, packed);
+        else if (seen !== packed && seen !== -1) {
+          stats.facesMultiColour++;
+          faceSeen.set(t, -1);
+        }
+      }
+      linearToSrgb8(linear, expected);
+      const err = Math.max(Math.abs(expected[0] - r), Math.abs(expected[1] - g), Math.abs(expected[2] - b));
+      stats.compared++;
+      if (err > stats.maxError) {
+        stats.maxError = err;
+        stats.worst = { x, y, gpu: [r, g, b], cpu: [...expected], triangle: t, bary: [b0, b1, b2] };
+      }
+      if (err > 2) stats.mismatches++;
+    }
+  }
+  stats.facesChecked = faceSeen.size;
+  material.dispose();
+  return stats;
+}
+
+/** Flip options `flips` times, rendering after each flip; report the live program count. */
+function flipPrograms(flips: number): { before: number; after: number; max: number; variants: number } {
+  const size = 64;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const material = new ShadingMaterial({ lights: [light] });
+  const mesh = new Mesh(sphereGeometry(3, false), material);
+  mesh.scale.set(2, 1, 2);
+  const scene = new Scene();
+  scene.add(mesh, light);
+  const camera = makeCamera(false);
+  renderer.render(scene, camera);
+  const before = renderer.info.programs?.length ?? 0;
+  let max = before;
+  const shadings: Shading[] = ['flat', 'gouraud', 'phong'];
+  const lightings: Lighting[] = ['phong', 'blinn-phong'];
+  const variants = new Set<string>();
+  let seed = 12345;
+  const random = () => {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    return seed / 2147483648;
+  };
+  for (let i = 0; i < flips; i++) {
+    material.shading = shadings[Math.floor(random() * 3)];
+    material.lighting = lightings[Math.floor(random() * 2)];
+    material.celBands = random() < 0.5 ? 0 : 4;
+    material.shininess = random() * 100;
+    renderer.render(scene, camera);
+    variants.add(JSON.stringify(material.defines));
+    max = Math.max(max, renderer.info.programs?.length ?? 0);
+  }
+  const after = renderer.info.programs?.length ?? 0;
+  material.dispose();
+  return { before, after, max, variants: variants.size };
+}
+
+const api = { compare, flipPrograms };
+declare global {
+  interface Window {
+    materialHarness: typeof api;
+  }
+}
+window.materialHarness = api;
+document.body.dataset.ready = '1';
