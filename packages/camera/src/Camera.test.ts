@@ -177,6 +177,17 @@ describe('Camera matches three.js', () => {
     expect(clip.z / clip.w).toBeCloseTo((10 + 0.1) / (10 - 0.1) - (2 * 10 * 0.1) / (10 - 0.1) / 3, 12);
   });
 
+  it('accepts Vector3, {x, y, z}, [x, y, z] and typed arrays alike', () => {
+    const reference = new Camera().lookAt(new Vector3(1, 2, 3), new Vector3(0, 0, 0), new Vector3(0, 1, 0));
+    const inputs = [
+      new Camera().lookAt({ x: 1, y: 2, z: 3 }, { x: 0, y: 0, z: 0 }, { x: 0, y: 1, z: 0 }),
+      new Camera().lookAt([1, 2, 3], [0, 0, 0], [0, 1, 0]),
+      new Camera().lookAt(new Float32Array([1, 2, 3]), new Float64Array(3), new Float32Array([0, 1, 0])),
+    ];
+    for (const c of inputs) expectMatrixClose(c.matrixWorldInverse, reference.matrixWorldInverse, 0);
+    expect(() => new Camera().lookAt(new Float32Array(4), [0, 0, 0], [0, 1, 0])).toThrow(TypeError);
+  });
+
   it('lookAt with a rotated, translated parent still puts the world frame where asked', () => {
     const parent = new Group();
     parent.position.set(5, -2, 1);

@@ -1,7 +1,10 @@
 import type { Vector3, Vector3Like } from 'three';
 
-/** A point or direction: a three.js `Vector3`, any `{ x, y, z }`, or an `[x, y, z]` tuple (the lecture's vec3). */
-export type Vec3Input = Vector3Like | readonly [number, number, number];
+/**
+ * A point or direction: a three.js `Vector3`, any `{ x, y, z }`, an `[x, y, z]` tuple (the lecture's vec3) or a
+ * 3-element `Float32Array`/`Float64Array`.
+ */
+export type Vec3Input = Vector3Like | readonly [number, number, number] | Float32Array | Float64Array;
 
 /**
  * Copy `input` into `target`, refusing what is not three finite numbers.
@@ -12,12 +15,17 @@ export function readVector3(input: unknown, name: string, target: Vector3): Vect
   let x: unknown;
   let y: unknown;
   let z: unknown;
-  if (Array.isArray(input) && input.length === 3) {
+  if (
+    (Array.isArray(input) || input instanceof Float32Array || input instanceof Float64Array) &&
+    input.length === 3
+  ) {
     [x, y, z] = input;
   } else if (typeof input === 'object' && input !== null && 'x' in input && 'y' in input && 'z' in input) {
     ({ x, y, z } = input as Vector3Like);
   } else {
-    throw new TypeError(`${name} must be a Vector3, {x, y, z} or [x, y, z], got ${String(input)}`);
+    throw new TypeError(
+      `${name} must be a Vector3, {x, y, z}, [x, y, z] or a 3-element Float32Array/Float64Array, got ${String(input)}`,
+    );
   }
   if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') {
     throw new TypeError(`${name} must have numeric x, y, z, got (${String(x)}, ${String(y)}, ${String(z)})`);
