@@ -118,3 +118,39 @@ for (const camera of ['perspective', 'ortho']) {
     if (camera === 'perspective') expect((await state(canvas)).distance).toBeGreaterThan(before.distance);
   });
 }
+
+test('a two-finger pinch zooms in, and the remaining finger then rotates', async ({ browser }) => {
+  const context = await browser.newContext({ hasTouch: true, viewport: { width: 800, height: 600 } });
+  const page = await context.newPage();
+  const canvas = await open(page);
+  const before = await state(canvas);
+  const cdp = await context.newCDPSession(page);
+  const touch = (
+    type: 'touchStart' | 'touchMove' | 'touchEnd',
+    points: { x: number; y: number; id: number }[],
+  ) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points });
+  await touch('touchStart', [{ x: CX - 30, y: CY, id: 1 }]);
+  await touch('touchStart', [
+    { x: CX - 30, y: CY, id: 1 },
+    { x: CX + 30, y: CY, id: 2 },
+  ]);
+  for (let i = 1; i <= 5; i++) {
+    await touch('touchMove', [
+      { x: CX - 30 - 6 * i, y: CY, id: 1 },
+      { x: CX + 30 + 6 * i, y: CY, id: 2 },
+    ]);
+  }
+  const pinched = await state(canvas);
+  expect(pinched.distance).toBeCloseTo(before.distance / 2, 6); // span 60 → 120 px: zoom × 2
+  expect(pinched.quaternion).toEqual(before.quaternion); // no rotation while pinching
+  // CDP's touchEnd lists the points that lift.
+  await touch('touchEnd', [{ x: CX + 60, y: CY, id: 2 }]);
+  const lifted = await state(canvas);
+  expect(lifted.quaternion).toEqual(pinched.quaternion); // no jump when a finger lifts
+  for (let i = 1; i <= 5; i++) await touch('touchMove', [{ x: CX - 60 + 12 * i, y: CY, id: 1 }]);
+  await touch('touchEnd', [{ x: CX, y: CY, id: 1 }]);
+  const turned = await state(canvas);
+  expect(turned.quaternion).not.toEqual(pinched.quaternion);
+  expect(turned.dragging).toBe('false');
+  await context.close();
+});
