@@ -1,0 +1,125 @@
+// Frame and GPU time of ShadingMaterial variants against three's MeshPhongMaterial, MeshLambertMaterial and
+// MeshToonMaterial: a sphere filling most of a 1280×720 canvas in headless Chromium (SwiftShader), levels
+// 4, 6 and 8 of the lecture's tetrahedron sphere. Each frame is followed by a 1×1 readPixels (SwiftShader's
+// gl.finish() does not wait); GPU time from EXT_disjoint_timer_query_webgl2.
+//
+//   node bench/material.bench.mjs [--json PATH] [--levels 4,6,8] [--frames 25]
+import { execFileSync } from 'node:child_process';
+import { createReadStream, existsSync, statSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { extname, join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from '@playwright/test';
+import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
+import { writeResults } from './lib/bench.mjs';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const arg = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? process.argv[i + 1] : fallback;
+};
+const levels = arg('--levels', '4,6,8').split(',').map(Number);
+const frames = Number(arg('--frames', '25'));
+
+// 1. Build the harness pages into a folder of our own (git-ignored by the dist-e2e-* pattern).
+const outDir = 'dist-e2e-bench-material';
+execFileSync(
+  'npx',
+  ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
+  {
+    cwd: root,
+    stdio: 'inherit',
+  },
+);
+const served = join(root, 'playground', outDir);
+
+// 2. A tiny static server on a free port.
+const types = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.json': 'application/json',
+};
+const server = createServer((req, res) => {
+  const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
+    /^(\.\.[/\\])+/,
+    '',
+  );
+  const file = join(served, path);
+  if (!file.startsWith(served) || !existsSync(file) || !statSync(file).isFile()) {
+    res.writeHead(404).end();
+    return;
+  }
+  res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
+  createReadStream(file).pipe(res);
+});
+await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
+const address = server.address();
+const port = typeof address === 'object' && address ? address.port : 0;
+
+// 3. Run every variant at every level.
+const executablePath = chromiumExecutable() ?? undefined;
+const browser = await chromium.launch({ executablePath, args: chromiumArgs });
+const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+await page.goto(`http://127.0.0.1:${port}/harness/material-bench.html`);
+await page.waitForFunction(() => document.body.dataset.ready === '1');
+const hasTimer = await page.evaluate(() => window.materialBench.hasTimer);
+
+/** @type {Array<[string, import('../playground/harness/material-bench').BenchVariant]>} */
+const variants = [];
+for (const shading of ['flat', 'gouraud', 'phong']) {
+  for (const lighting of ['phong', 'blinn-phong']) {
+    for (const celBands of [0, 4]) {
+      variants.push([
+        `${shading} × ${lighting}${celBands ? ' × cel 4' : ''}`,
+        { kind: 'shadelab', shading, lighting, celBands },
+      ]);
+    }
+  }
+}
+variants.push([
+  'phong × phong, 2 lights',
+  { kind: 'shadelab', shading: 'phong', lighting: 'phong', lights: 2 },
+]);
+variants.push([
+  'gouraud × phong, 2 lights',
+  { kind: 'shadelab', shading: 'gouraud', lighting: 'phong', lights: 2 },
+]);
+variants.push(['three MeshPhongMaterial', { kind: 'three-phong' }]);
+variants.push(['three MeshPhongMaterial, 2 lights', { kind: 'three-phong', lights: 2 }]);
+variants.push(['three MeshLambertMaterial', { kind: 'three-lambert' }]);
+variants.push(['three MeshToonMaterial', { kind: 'three-toon' }]);
+
+const results = { width: 1280, height: 720, frames, gpuTimer: hasTimer, levels: {} };
+for (const level of levels) {
+  const memory = await page.evaluate((l) => window.materialBench.memory(l), level);
+  const rows = {};
+  for (const [name, variant] of variants) {
+    rows[name] = await page.evaluate(
+      ([v, l, f]) => window.materialBench.run(v, l, f),
+      [variant, level, frames],
+    );
+  }
+  const phong = rows['phong × phong'].frameMs.median;
+  const targets = {
+    phongVsMeshPhong: phong / rows['three MeshPhongMaterial'].frameMs.median,
+    gouraudVsPhong: rows['gouraud × phong'].frameMs.median / phong,
+    flatVsPhong: rows['flat × phong'].frameMs.median / phong,
+    twoLightsVsOne: rows['phong × phong, 2 lights'].frameMs.median / phong,
+  };
+  results.levels[level] = { triangles: 4 * 4 ** level, memory, rows, targets };
+  console.log(`\nlevel ${level} (${4 * 4 ** level} triangles), 1280×720, median of ${frames} frames`);
+  console.log('| variant | frame ms (median) | min | max | GPU ms |');
+  console.log('| --- | ---: | ---: | ---: | ---: |');
+  for (const [name, r] of Object.entries(rows)) {
+    const f = r.frameMs;
+    const g = r.gpuMs === null ? 'n/a' : r.gpuMs.toFixed(2);
+    console.log(`| ${name} | ${f.median.toFixed(2)} | ${f.min.toFixed(2)} | ${f.max.toFixed(2)} | ${g} |`);
+  }
+  console.log(
+    `targets: phong/MeshPhong ${targets.phongVsMeshPhong.toFixed(3)} (≤ 1), gouraud/phong ${targets.gouraudVsPhong.toFixed(3)}, flat/phong ${targets.flatVsPhong.toFixed(3)} (< 1), 2 lights/1 light ${targets.twoLightsVsOne.toFixed(3)} (< 2)`,
+  );
+}
+await browser.close();
+server.close();
+writeResults(results);

@@ -1,0 +1,156 @@
+// Benchmark page for bench/material.bench.mjs: frame time (a 1×1 readPixels after each frame) and GPU time
+// (EXT_disjoint_timer_query_webgl2) of a sphere filling most of a 1280×720 canvas, ShadingMaterial variants
+// against three's MeshPhongMaterial, MeshLambertMaterial and MeshToonMaterial on the same geometry.
+import { type Lighting, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
+import {
+  AmbientLight,
+  type Material,
+  Mesh,
+  MeshLambertMaterial,
+  MeshPhongMaterial,
+  MeshToonMaterial,
+  PerspectiveCamera,
+  PointLight,
+  Scene,
+  WebGLRenderer,
+} from 'three';
+import { sphereGeometry } from './material-sphere';
+
+export interface BenchVariant {
+  /** 'shadelab' or one of three's materials. */
+  kind: 'shadelab' | 'three-phong' | 'three-lambert' | 'three-toon';
+  shading?: Shading;
+  lighting?: Lighting;
+  celBands?: number;
+  lights?: number;
+}
+
+export interface BenchResult {
+  frameMs: { median: number; min: number; max: number };
+  gpuMs: number | null;
+  programs: number;
+}
+
+const width = 1280;
+const height = 720;
+const canvas = document.getElementById('viewport') as HTMLCanvasElement;
+const renderer = new WebGLRenderer({ canvas, antialias: false });
+renderer.setPixelRatio(1);
+renderer.setSize(width, height, false);
+const gl = renderer.getContext() as WebGL2RenderingContext;
+const timer = gl.getExtension('EXT_disjoint_timer_query_webgl2') as { TIME_ELAPSED_EXT: number } | null;
+const pixel = new Uint8Array(4);
+
+function material(variant: BenchVariant, scene: Scene): Material {
+  const n = variant.lights ?? 1;
+  const positions: Array<[number, number, number]> = [
+    [-5, 10, 20],
+    [8, -3, 10],
+    [0, 12, 6],
+    [-9, -6, 8],
+  ];
+  if (variant.kind === 'shadelab') {
+    const lights = Array.from({ length: n }, (_, i) => {
+      const light = new PhongLight();
+      light.position.set(...positions[i % positions.length]);
+      scene.add(light);
+      return light;
+    });
+    return new ShadingMaterial({
+      shading: variant.shading ?? 'phong',
+      lighting: variant.lighting ?? 'phong',
+      celBands: variant.celBands ?? 0,
+      lights,
+    });
+  }
+  scene.add(new AmbientLight(0xffffff, 0.2));
+  for (let i = 0; i < n; i++) {
+    const light = new PointLight(0xffffff, 1, 0, 0);
+    light.position.set(...positions[i % positions.length]);
+    scene.add(light);
+  }
+  const color = 0xc89664;
+  if (variant.kind === 'three-phong') return new MeshPhongMaterial({ color, shininess: 32 });
+  if (variant.kind === 'three-lambert') return new MeshLambertMaterial({ color });
+  return new MeshToonMaterial({ color });
+}
+
+async function gpuTimes(queries: WebGLQuery[]): Promise<number | null> {
+  if (timer === null || queries.length === 0) return null;
+  const times: number[] = [];
+  for (const q of queries) {
+    for (let tries = 0; tries < 200; tries++) {
+      if (gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE)) break;
+      await new Promise((r) => setTimeout(r, 5));
+    }
+    if (gl.getParameter(0x8fbb /* GPU_DISJOINT_EXT */)) return null;
+    if (!gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE)) return null;
+    times.push(gl.getQueryParameter(q, gl.QUERY_RESULT) / 1e6);
+    gl.deleteQuery(q);
+  }
+  times.sort((a, b) => a - b);
+  return times[times.length >> 1];
+}
+
+/** Render `frames` timed frames (after `warmup`), each followed by a 1×1 readPixels. */
+async function run(variant: BenchVariant, level: number, frames = 25, warmup = 5): Promise<BenchResult> {
+  const scene = new Scene();
+  const mat = material(variant, scene);
+  // Ours reads only what the shading needs (positions; analytic sphere normals); three's need normals.
+  const geometry = sphereGeometry(level, variant.kind !== 'shadelab');
+  const mesh = new Mesh(geometry, mat);
+  mesh.scale.setScalar(2);
+  scene.add(mesh);
+  const camera = new PerspectiveCamera(90, width / height, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  const frame = () => {
+    renderer.render(scene, camera);
+    gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+  };
+  for (let i = 0; i < warmup; i++) frame();
+  const times: number[] = [];
+  const queries: WebGLQuery[] = [];
+  for (let i = 0; i < frames; i++) {
+    let query: WebGLQuery | null = null;
+    if (timer !== null) {
+      query = gl.createQuery();
+      gl.beginQuery(timer.TIME_ELAPSED_EXT, query!);
+    }
+    const t0 = performance.now();
+    renderer.render(scene, camera);
+    if (query !== null) {
+      gl.endQuery(timer!.TIME_ELAPSED_EXT);
+      queries.push(query);
+    }
+    gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    times.push(performance.now() - t0);
+  }
+  const gpuMs = await gpuTimes(queries);
+  times.sort((a, b) => a - b);
+  const mid = times.length >> 1;
+  const median = times.length % 2 ? times[mid] : (times[mid - 1] + times[mid]) / 2;
+  const programs = renderer.info.programs?.length ?? 0;
+  mat.dispose();
+  return { frameMs: { median, min: times[0], max: times[times.length - 1] }, gpuMs, programs };
+}
+
+/** Memory of a geometry and of flat shading's face-position texture, bytes. */
+function memory(level: number): { positionsBytes: number; normalsBytes: number; flatTextureBytes: number } {
+  const g = sphereGeometry(level, true);
+  const count = g.getAttribute('position').count;
+  return {
+    positionsBytes: count * 12,
+    normalsBytes: count * 12,
+    flatTextureBytes: 2048 * Math.ceil(count / 2048) * 12,
+  };
+}
+
+const api = { run, memory, hasTimer: timer !== null };
+declare global {
+  interface Window {
+    materialBench: typeof api;
+  }
+}
+window.materialBench = api;
+document.body.dataset.ready = '1';
