@@ -34,7 +34,7 @@ test.describe('the playground', () => {
     await expect(page.locator('[id="Sphere.base"]')).toHaveValue('0');
     await expect(page.locator('[id="Camera.eye.z"]')).toHaveValue('3.0');
     await expect(page.locator('[id="Camera.fovy"]')).toHaveValue('90');
-    await expect(page.locator('[id="Lights.light 1.light1Position"]')).toHaveValue('-5.0');
+    await expect(page.locator('[id="Light 1.light1Position"]')).toHaveValue('-5.0');
     const ms = Number(await page.getByTestId('viewport').getAttribute('data-first-frame-ms'));
     expect(ms).toBeGreaterThan(0);
     expect(logs.some((l) => l.startsWith('[shadelab] first frame rendered'))).toBe(true);

@@ -2,7 +2,7 @@ import { Leva } from 'leva';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { MOVE_KEYS, REAL_PACKAGES } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
-import { COMPARE_COLUMNS, type SectionErrors, Viewer } from './engine/Viewer';
+import { COMPARE_COLUMNS, compareLayout, type Layout, type SectionErrors, Viewer } from './engine/Viewer';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import { defaultLight, defaultState, MAX_LIGHTS, type PlaygroundState, validateState } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
@@ -26,6 +26,7 @@ export function App() {
   const feed = useMemo(() => new StatsFeed(), []);
   const goodState = useRef<PlaygroundState | null>(null);
   const [renderError, setRenderError] = useState<string | null>(null);
+  const [layout, setLayout] = useState<Layout>({ cols: 2, rows: 2 });
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -69,6 +70,7 @@ export function App() {
     });
     viewerRef.current = viewer;
     const observer = new ResizeObserver(() => {
+      setLayout(compareLayout(canvas.clientWidth || 1, canvas.clientHeight || 1));
       if (goodState.current) viewer.apply(goodState.current);
       viewer.requestRender();
     });
@@ -167,7 +169,14 @@ export function App() {
           onPointerDown={(e) => e.currentTarget.focus()}
         />
         {state.view === 'compare' && (
-          <ol className="compare-labels" aria-label="comparison columns">
+          <ol
+            className="compare-labels"
+            aria-label="comparison columns"
+            style={{
+              gridTemplateColumns: `repeat(${layout.cols}, 1fr)`,
+              gridTemplateRows: `repeat(${layout.rows}, 1fr)`,
+            }}
+          >
             {COMPARE_COLUMNS.map((c) => (
               <li key={c.label}>{c.label}</li>
             ))}

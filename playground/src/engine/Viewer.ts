@@ -71,6 +71,17 @@ export const COMPARE_COLUMNS = [
   { label: 'cel', shading: 'phong', cel: true },
 ] as const;
 
+/** Cells of the compare view. */
+export interface Layout {
+  cols: number;
+  rows: number;
+}
+
+/** The compare view in one row on wide canvases, 2 × 2 otherwise (cells as close to square as possible). */
+export function compareLayout(width: number, height: number): Layout {
+  return width / height >= 2 ? { cols: COMPARE_COLUMNS.length, rows: 1 } : { cols: 2, rows: 2 };
+}
+
 /** Inverted-hull outline thickness, as a fraction of the radius. */
 const OUTLINE_WIDTH = 0.03;
 
@@ -262,17 +273,19 @@ export class Viewer {
   private applyCamera(state: PlaygroundState) {
     const c = state.camera;
     setCameraView(this.camera, c.eye, c.at, c.up);
-    this.updateProjection(this.aspect(this.columns()));
+    this.updateProjection(this.aspect(this.layout()));
   }
 
-  private columns() {
-    return this.state?.view === 'compare' ? COMPARE_COLUMNS.length : 1;
-  }
-
-  private aspect(columns: number) {
+  private layout(): Layout {
     const w = Math.max(1, this.canvas.clientWidth || this.canvas.width);
     const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
-    return w / columns / h;
+    return this.state?.view === 'compare' ? compareLayout(w, h) : { cols: 1, rows: 1 };
+  }
+
+  private aspect({ cols, rows }: Layout) {
+    const w = Math.max(1, this.canvas.clientWidth || this.canvas.width);
+    const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
+    return w / cols / (h / rows);
   }
 
   private updateProjection(aspect: number) {
@@ -404,14 +417,14 @@ export class Viewer {
     const gl = renderer.getContext() as WebGL2RenderingContext;
     const query = this.beginGpuQuery(gl);
     renderer.info.reset();
-    const columns = this.columns();
+    const layout = this.layout();
     try {
-      this.updateProjection(this.aspect(columns));
+      this.updateProjection(this.aspect(layout));
     } catch {
       // The camera section already reported the error; keep the last good projection.
     }
     try {
-      this.draw(w, h, columns);
+      this.draw(w, h, layout);
       if (this.renderError) this.events.onRenderError?.(null);
       this.renderError = false;
     } catch (error) {
@@ -442,11 +455,11 @@ export class Viewer {
     }
   }
 
-  private draw(w: number, h: number, columns: number) {
+  private draw(w: number, h: number, { cols, rows }: Layout) {
     const { renderer } = this;
     const state = this.state!;
     this.outline.visible = state.material.outline && state.material.celBands > 0;
-    if (columns === 1) {
+    if (cols * rows === 1) {
       this.mesh.material = this.material;
       this.applyGeometry(state.material.shading);
       updateMaterialLights(this.material);
@@ -455,17 +468,22 @@ export class Viewer {
       renderer.render(this.scene, this.camera);
     } else {
       renderer.setScissorTest(true);
-      const cw = w / columns;
-      for (let i = 0; i < columns; i++) {
+      const cw = w / cols;
+      const ch = h / rows;
+      for (let i = 0; i < COMPARE_COLUMNS.length; i++) {
         const material = this.compareMaterials[i]!;
         this.mesh.material = material;
         this.applyGeometry(COMPARE_COLUMNS[i]!.shading);
         this.outline.visible = COMPARE_COLUMNS[i]!.cel && state.material.outline;
         updateMaterialLights(material);
-        const x = Math.round(i * cw);
-        const next = Math.round((i + 1) * cw);
-        renderer.setViewport(x, 0, next - x, h);
-        renderer.setScissor(x, 0, next - x, h);
+        const col = i % cols;
+        const row = Math.floor(i / cols);
+        const x = Math.round(col * cw);
+        const width = Math.round((col + 1) * cw) - x;
+        const y = Math.round(h - (row + 1) * ch);
+        const height = Math.round(h - row * ch) - y;
+        renderer.setViewport(x, y, width, height);
+        renderer.setScissor(x, y, width, height);
         renderer.render(this.scene, this.camera);
       }
       renderer.setScissorTest(false);

@@ -1,0 +1,61 @@
+import { expect, type Page, test } from '@playwright/test';
+import { HIDE_OVERLAYS, open } from './playground-helpers';
+
+// Visual regression of the canvas (overlays hidden). Renders are pixel-deterministic under SwiftShader with the
+// shared Playwright flags, so the tolerance is zero (playwright.config.ts: maxDiffPixels 0, threshold 0).
+// Update the baselines after an intended change with:
+//   SHADELAB_E2E_PORT=4105 npx playwright test tests/playground-visual.spec.ts --update-snapshots
+
+async function shot(page: Page, name: string) {
+  await page.addStyleTag({ content: HIDE_OVERLAYS });
+  await expect(page.getByTestId('viewport')).toHaveScreenshot(name);
+}
+
+for (const shading of ['flat', 'gouraud', 'phong'] as const) {
+  for (const lighting of ['phong', 'blinn-phong'] as const) {
+    test(`lecture scene, ${shading} shading, ${lighting} lighting`, async ({ page }) => {
+      await open(page, { material: { shading, lighting } });
+      await shot(page, `lecture-${shading}-${lighting}.png`);
+    });
+  }
+}
+
+test('cel shading with 3 bands', async ({ page }) => {
+  await open(page, { material: { celBands: 3 } });
+  await shot(page, 'cel-3-bands.png');
+});
+
+test('cel shading with 3 bands and the outline', async ({ page }) => {
+  await open(page, { material: { celBands: 3, outline: true }, model: { scale: [1.5, 1, 1.5] } });
+  await shot(page, 'cel-3-bands-outline.png');
+});
+
+test('orthographic camera', async ({ page }) => {
+  await open(page, { camera: { projection: 'orthographic', top: 2.2, bottom: -2.2 } });
+  await shot(page, 'orthographic.png');
+});
+
+test('two lights', async ({ page }) => {
+  const light = (position: number[], diffuse: number[]) => ({
+    position,
+    ambient: [0.1, 0.1, 0.1],
+    diffuse,
+    specular: [0.8, 0.8, 0.8],
+    attenuation: { a: 1, b: 0, c: 0 },
+  });
+  await open(page, { lights: [light([-5, 10, 20], [1, 1, 1]), light([6, -4, 8], [0.2, 0.4, 1])] });
+  await shot(page, 'two-lights.png');
+});
+
+test('non-uniform scale, turned by the trackball', async ({ page }) => {
+  await open(page, {
+    model: { scale: [0.6, 1.6, 1.2] },
+    trackball: { rotation: [0.25881904510252074, 0.2, 0, 0.9450287318402637] },
+  });
+  await shot(page, 'non-uniform-scale.png');
+});
+
+test('comparison view: flat | Gouraud | Phong | cel', async ({ page }) => {
+  await open(page, { view: 'compare', model: { scale: [1, 1, 1] }, camera: { eye: [0, 0, 2.6] } });
+  await shot(page, 'compare.png');
+});
