@@ -1,6 +1,8 @@
 export { computeNormalMatrix } from './computeNormalMatrix.js';
+export { createOutline } from './createOutline.js';
 export { eyeOf } from './eyeOf.js';
 export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
+export { OutlineMaterial, type OutlineMaterialOptions } from './OutlineMaterial.js';
 export { PhongLight, type PhongLightOptions } from './PhongLight.js';
 export {
   MAX_CEL_BANDS,

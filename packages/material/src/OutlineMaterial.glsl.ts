@@ -1,0 +1,31 @@
+// GLSL of OutlineMaterial: the inverted hull. Back faces of the mesh, pushed out along the world normal.
+
+/** Vertex stage: world position + thickness · unit world normal. */
+export const vertexShader = /* glsl */ `
+uniform mat3 shadingNormalMatrix;
+uniform float thickness;
+
+void main() {
+#ifdef SPHERE_NORMALS
+  vec3 objectNormal = position;
+#else
+  vec3 objectNormal = normal;
+#endif
+  vec3 n = shadingNormalMatrix * objectNormal;
+  float len = length(n);
+  n = len > 0.0 ? n / len : vec3(0.0);
+  vec4 worldPosition = modelMatrix * vec4(position, 1.0);
+  worldPosition.xyz += thickness * n;
+  gl_Position = projectionMatrix * viewMatrix * worldPosition;
+}
+`;
+
+/** Fragment stage: one colour. */
+export const fragmentShader = /* glsl */ `
+uniform vec3 outlineColor;
+
+void main() {
+  gl_FragColor = vec4(outlineColor, 1.0);
+  #include <colorspace_fragment>
+}
+`;

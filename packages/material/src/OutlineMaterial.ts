@@ -1,0 +1,92 @@
+import {
+  BackSide,
+  type BufferGeometry,
+  type Camera,
+  Color,
+  type Group,
+  Matrix3,
+  type Object3D,
+  type Scene,
+  ShaderMaterial,
+  type WebGLRenderer,
+} from 'three';
+import { computeNormalMatrix } from './computeNormalMatrix.js';
+import { fragmentShader, vertexShader } from './OutlineMaterial.glsl.js';
+import { SPHERE_FLAG } from './ShadingMaterial.js';
+import { type ColorInput, checkNonNegative, setColor } from './validate.js';
+
+/** Options of {@link OutlineMaterial}. */
+export interface OutlineMaterialOptions {
+  /** Outline width in world units, measured along the surface normal. Finite, ≥ 0. @default 0.03 */
+  thickness?: number;
+  /** Outline colour (linear RGB; hex and CSS strings are sRGB). @default 0x000000 */
+  color?: ColorInput;
+}
+
+/**
+ * The inverted-hull outline for cel shading: draws the back faces of a mesh pushed out by `thickness`
+ * along the (robust, world-space) normal, in one colour. Use it on a second mesh sharing the geometry, or
+ * through `createOutline`. Reads the `normal` attribute, or the position on a sphere flagged like for
+ * `ShadingMaterial` (`SubdivisionSphereGeometry` or `userData.isSphere`).
+ */
+export class OutlineMaterial extends ShaderMaterial {
+  /** Always true. */
+  readonly isOutlineMaterial = true;
+  override type = 'OutlineMaterial';
+  readonly #color = new Color(0, 0, 0);
+
+  constructor({ thickness = 0.03, color = 0x000000 }: OutlineMaterialOptions = {}) {
+    super({
+      vertexShader,
+      fragmentShader,
+      uniforms: {
+        shadingNormalMatrix: { value: new Matrix3() },
+        thickness: { value: 0.03 },
+        outlineColor: { value: new Color() },
+      },
+      side: BackSide,
+    });
+    this.toneMapped = false;
+    this.fog = false;
+    this.thickness = thickness;
+    this.color = color;
+  }
+
+  /** Outline width in world units (finite, ≥ 0). @default 0.03 */
+  get thickness(): number {
+    return this.uniforms.thickness.value;
+  }
+  set thickness(value: number) {
+    this.uniforms.thickness.value = checkNonNegative('OutlineMaterial.thickness', value);
+  }
+
+  /** Outline colour (linear RGB). @default Color(0, 0, 0) */
+  get color(): Color {
+    return this.#color;
+  }
+  set color(value: ColorInput) {
+    setColor('OutlineMaterial.color', this.#color, value);
+    this.uniforms.outlineColor.value.copy(this.#color);
+  }
+
+  /** Per draw: the robust normal matrix, and analytic sphere normals when the geometry has none. */
+  override onBeforeRender(
+    _renderer: WebGLRenderer,
+    _scene: Scene,
+    _camera: Camera,
+    geometry: BufferGeometry,
+    object: Object3D,
+    _group: Group,
+  ): void {
+    const sphere =
+      geometry.getAttribute('normal') === undefined &&
+      (geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true);
+    if (sphere !== (this.defines.SPHERE_NORMALS !== undefined)) {
+      this.defines = sphere ? { SPHERE_NORMALS: '' } : {};
+      this.needsUpdate = true;
+    }
+    computeNormalMatrix(object.matrixWorld, this.uniforms.shadingNormalMatrix.value);
+    this.uniforms.outlineColor.value.copy(this.#color);
+    this.uniformsNeedUpdate = true;
+  }
+}
