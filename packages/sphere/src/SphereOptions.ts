@@ -8,6 +8,12 @@ export type SphereNormals = 'smooth' | 'flat' | 'none';
 /** Default memory limit of `subdivideSphere` and `SubdivisionSphereGeometry`: 512 MiB. */
 export const DEFAULT_SPHERE_MAX_BYTES = 512 * 1024 * 1024;
 
+/** Smallest radius accepted: 1e-30 (positions are float32; much smaller ones lose precision, then vanish). */
+export const MIN_SPHERE_RADIUS = 1e-30;
+
+/** Largest radius accepted: 1e30 (positions are float32, whose largest value is about 3.4e38). */
+export const MAX_SPHERE_RADIUS = 1e30;
+
 /** Options of `subdivideSphere` and `SubdivisionSphereGeometry`. */
 export interface SubdivideSphereOptions {
   /**
@@ -23,7 +29,8 @@ export interface SubdivideSphereOptions {
    */
   base?: SphereBase;
   /**
-   * Sphere radius, in scene units: every vertex lies at this distance from the origin. Finite and > 0.
+   * Sphere radius, in scene units: every vertex lies at this distance from the origin. From 1e-30 to 1e30
+   * ({@link MIN_SPHERE_RADIUS}, {@link MAX_SPHERE_RADIUS}): positions are float32.
    * @default 1
    */
   radius?: number;
@@ -85,10 +92,12 @@ export function resolveSphereOptions(caller: string, options: SubdivideSphereOpt
   assertLevel(caller, 'level', level);
   assertSphereBase(caller, 'base', base);
   if (typeof radius !== 'number') {
-    throw new TypeError(`${caller}: radius must be a finite number > 0; got ${describeValue(radius)}`);
+    throw new TypeError(
+      `${caller}: radius must be a number from 1e-30 to 1e30; got ${describeValue(radius)}`,
+    );
   }
-  if (!(radius > 0) || !Number.isFinite(radius)) {
-    throw new RangeError(`${caller}: radius must be a finite number > 0; got ${radius}`);
+  if (!(radius >= MIN_SPHERE_RADIUS && radius <= MAX_SPHERE_RADIUS)) {
+    throw new RangeError(`${caller}: radius must be a number from 1e-30 to 1e30; got ${radius}`);
   }
   if (typeof normals !== 'string') {
     throw new TypeError(
