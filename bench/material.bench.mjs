@@ -14,6 +14,7 @@ import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
 import { writeResults } from './lib/bench.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
+/** @param {string} name @param {string} fallback */
 const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);
   return i >= 0 ? process.argv[i + 1] : fallback;
@@ -34,6 +35,7 @@ execFileSync(
 const served = join(root, 'playground', outDir);
 
 // 2. A tiny static server on a free port.
+/** @type {Record<string, string>} */
 const types = {
   '.html': 'text/html',
   '.js': 'text/javascript',
@@ -67,8 +69,8 @@ const hasTimer = await page.evaluate(() => window.materialBench.hasTimer);
 
 /** @type {Array<[string, import('../playground/harness/material-bench').BenchVariant]>} */
 const variants = [];
-for (const shading of ['flat', 'gouraud', 'phong']) {
-  for (const lighting of ['phong', 'blinn-phong']) {
+for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {
+  for (const lighting of /** @type {const} */ (['phong', 'blinn-phong'])) {
     for (const celBands of [0, 4]) {
       variants.push([
         `${shading} × ${lighting}${celBands ? ' × cel 4' : ''}`,
@@ -90,15 +92,19 @@ variants.push(['three MeshPhongMaterial, 2 lights', { kind: 'three-phong', light
 variants.push(['three MeshLambertMaterial', { kind: 'three-lambert' }]);
 variants.push(['three MeshToonMaterial', { kind: 'three-toon' }]);
 
+/** @typedef {import('../playground/harness/material-bench').BenchResult} BenchResult */
+/** @type {{ width: number, height: number, frames: number, gpuTimer: boolean, levels: Record<number, unknown> }} */
 const results = { width: 1280, height: 720, frames, gpuTimer: hasTimer, levels: {} };
 for (const level of levels) {
   const memory = await page.evaluate((l) => window.materialBench.memory(l), level);
+  /** @type {Record<string, BenchResult>} */
   const rows = {};
   for (const [name, variant] of variants) {
-    rows[name] = await page.evaluate(
-      ([v, l, f]) => window.materialBench.run(v, l, f),
-      [variant, level, frames],
-    );
+    rows[name] = await page.evaluate((a) => window.materialBench.run(a.variant, a.level, a.frames), {
+      variant,
+      level,
+      frames,
+    });
   }
   const phong = rows['phong × phong'].frameMs.median;
   const targets = {
