@@ -335,3 +335,26 @@ test.describe('the playground', () => {
     expect(((await urlState(page))['material'] as { shading: string }).shading).toBe('gouraud');
   });
 });
+
+test('a light moves with the gizmo', async ({ page }) => {
+  await open(page);
+  await press(page, 'add light'); // light 2 at (0.4, 0.3, 2.4), in front of the sphere
+  const before = await picture(page);
+  await press(page, 'move light 2 with the gizmo');
+  expect((await picture(page)) === before, 'the gizmo is drawn').toBe(false);
+  // Project the light with the lecture camera (eye (0, 0, 3), fovy 90) to find the gizmo's centre.
+  const box = (await page.getByTestId('viewport').boundingBox())!;
+  const depth = 3 - 2.4;
+  const x = box.x + box.width / 2 + ((0.4 / depth) * box.height) / 2;
+  const y = box.y + box.height / 2 - ((0.3 / depth) * box.height) / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 30, y + 20, { steps: 6 });
+  await page.mouse.up();
+  await settle(page);
+  const [lx, ly] = ((await urlState(page))['lights'] as { position: number[] }[])[1]!.position;
+  expect(lx).toBeGreaterThan(0.44);
+  expect(ly).toBeLessThan(0.29);
+  // The drag moved the light, not the sphere.
+  expect(((await urlState(page))['trackball'] as { rotation: number[] }).rotation).toEqual([0, 0, 0, 1]);
+});

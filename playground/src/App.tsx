@@ -61,6 +61,11 @@ export function App() {
         }),
       onVariant: () => refreshVariant(viewer),
       onRenderError: (message) => setRenderError(message),
+      onLightMoved: (index, position) =>
+        update((d) => {
+          const light = d.lights[index];
+          if (light) light.position = position;
+        }),
       onStats: (stats) => feed.push(stats),
       onContext: (status) => setContext(status),
       onFirstFrame: (ms) => {
@@ -136,7 +141,7 @@ export function App() {
       reset: () => setState(defaultState()),
       addLight: () =>
         update((d) => {
-          if (d.lights.length < MAX_LIGHTS) d.lights.push({ ...defaultLight(), position: [5, 5, 10] });
+          if (d.lights.length < MAX_LIGHTS) d.lights.push({ ...defaultLight(), position: [0.4, 0.3, 2.4] });
         }),
     }),
     [update],
@@ -147,6 +152,12 @@ export function App() {
     [],
   );
   const clearShader = useCallback(() => viewerRef.current?.clearShaderOverride(), []);
+  const [gizmo, setGizmo] = useState<number | null>(null);
+  const toggleGizmo = useCallback((index: number) => setGizmo((g) => (g === index ? null : index)), []);
+  useEffect(() => {
+    const index = gizmo !== null && gizmo < state.lights.length ? gizmo : null;
+    viewerRef.current?.selectLight(index);
+  }, [gizmo, state.lights.length]);
 
   const errors = [
     ...(schemaError ? [`Not applied: ${schemaError}`] : []),
@@ -222,7 +233,7 @@ export function App() {
       <SceneControls state={state} update={update} actions={actions} />
       {state.lights.map((_, i) => (
         // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.
-        <LightControls key={i} index={i} state={state} update={update} />
+        <LightControls key={i} index={i} state={state} update={update} onGizmo={toggleGizmo} />
       ))}
     </div>
   );

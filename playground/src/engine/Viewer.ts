@@ -3,6 +3,7 @@
  * changed), and renders on demand — after a change, trackball/camera events, a resize — never in a loop.
  */
 import * as THREE from 'three';
+import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import type { LightState, PlaygroundState, Vec3 } from '../state/schema';
 import {
   applyLight,
@@ -54,6 +55,8 @@ export type SectionErrors = Partial<Record<string, string>>;
 export interface ViewerEvents {
   /** The camera moved (movement keys) or the trackball turned; the new values for the state. */
   onView?: (view: { eye: Vec3; at: Vec3; zoom: number; rotation: [number, number, number, number] }) => void;
+  /** The gizmo moved light `index` to `position`. */
+  onLightMoved?: (index: number, position: Vec3) => void;
   /** Drawing failed (the message), or succeeded again (null). */
   onRenderError?: (message: string | null) => void;
   /** The compiled variant changed (its key and generated GLSL). */
@@ -98,6 +101,9 @@ export class Viewer {
   readonly material: Material;
   readonly trackball: TrackballHandle;
   readonly mover: Mover;
+  /** Moves the selected light's marker (three's TransformControls); the trackball pauses while it drags. */
+  readonly gizmo: TransformControls;
+  private gizmoLight: number | null = null;
 
   private readonly compareMaterials: Material[];
   private readonly outline: THREE.Mesh;
@@ -142,6 +148,14 @@ export class Viewer {
     this.outline.visible = false;
     this.pivot.add(this.mesh, this.outline);
     this.scene.add(this.pivot);
+    // The gizmo listens first, so that grabbing a handle disables the trackball before it sees the press.
+    this.gizmo = new TransformControls(this.camera, canvas);
+    this.gizmo.setSize(0.8);
+    this.gizmo.addEventListener('dragging-changed', this.onGizmoDragging);
+    this.gizmo.addEventListener('change', this.onGizmoChange);
+    this.gizmo.addEventListener('objectChange', this.onGizmoMove);
+    this.gizmo.addEventListener('mouseUp', this.onGizmoDone);
+    this.scene.add(this.gizmo.getHelper());
     this.trackball = createTrackball(this.pivot, this.camera);
     this.mover = createMover(this.camera);
     this.trackball.addEventListener('change', this.onTrackballChange);
@@ -153,6 +167,32 @@ export class Viewer {
     this.probe = new ShaderProbe(this.renderer);
     canvas.addEventListener('webglcontextlost', this.onContextLost);
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
+  }
+
+  private readonly onGizmoDragging = (event: { value: unknown }) => {
+    this.trackball.enabled = !event.value;
+  };
+  private readonly onGizmoChange = () => this.requestRender();
+  private readonly onGizmoMove = () => {
+    const i = this.gizmoLight;
+    if (i === null) return;
+    this.lights[i]?.position.copy(this.markers[i]!.position);
+    this.lights[i]?.updateMatrixWorld(true);
+    this.requestRender();
+  };
+  private readonly onGizmoDone = () => {
+    const i = this.gizmoLight;
+    if (i === null || !this.markers[i]) return;
+    const p = this.markers[i]!.position;
+    this.events.onLightMoved?.(i, [p.x, p.y, p.z]);
+  };
+
+  /** Puts the move gizmo on light `index` (0-based), or removes it (null). */
+  selectLight(index: number | null) {
+    this.gizmoLight = index !== null && this.markers[index] ? index : null;
+    if (this.gizmoLight === null) this.gizmo.detach();
+    else this.gizmo.attach(this.markers[this.gizmoLight]!);
+    this.requestRender();
   }
 
   private viewTimer = 0;
@@ -262,7 +302,9 @@ export class Viewer {
       this.markers.push(marker);
     }
     while (this.lights.length > states.length) {
-      this.scene.remove(this.lights.pop()!, this.markers.pop()!);
+      const marker = this.markers.pop()!;
+      if (this.gizmo.object === marker) this.selectLight(null);
+      this.scene.remove(this.lights.pop()!, marker);
     }
     states.forEach((s, i) => {
       applyLight(this.lights[i]!, s);
@@ -565,6 +607,11 @@ export class Viewer {
     this.trackball.removeEventListener('change', this.onTrackballChange);
     this.trackball.removeEventListener('end', this.onViewEnd);
     this.mover.removeEventListener('change', this.onMoverChange);
+    this.gizmo.removeEventListener('dragging-changed', this.onGizmoDragging);
+    this.gizmo.removeEventListener('change', this.onGizmoChange);
+    this.gizmo.removeEventListener('objectChange', this.onGizmoMove);
+    this.gizmo.removeEventListener('mouseUp', this.onGizmoDone);
+    this.gizmo.dispose();
     this.trackball.dispose();
     this.mover.dispose();
     this.probe.dispose();

@@ -301,10 +301,13 @@ export function LightControls({
   index,
   state,
   update,
+  onGizmo,
 }: {
   index: number;
   state: PlaygroundState;
   update: Update;
+  /** Toggles the move gizmo on this light. */
+  onGizmo: (index: number) => void;
 }) {
   const at = (s: PlaygroundState) => s.lights[index] ?? defaultLight();
   const edit = (d: PlaygroundState, f: (l: PlaygroundState['lights'][number]) => void) => {
@@ -375,6 +378,7 @@ export function LightControls({
     state,
     update,
     {
+      [`move light ${n} with the gizmo`]: button(() => onGizmo(index)),
       [`remove light ${n}`]: button(() =>
         update((d) => {
           d.lights.splice(index, 1);
