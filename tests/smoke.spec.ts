@@ -24,3 +24,21 @@ test('the playground opens on a lit sphere over a black background', async ({ pa
   expect(Math.max(...pixels.centre.slice(0, 3))).toBeGreaterThan(40);
   expect(pixels.corner.slice(0, 3)).toEqual([0, 0, 0]);
 });
+
+test('the playground renders on demand, not in a loop, and reports its first frame', async ({ page }) => {
+  await page.goto('/');
+  const canvas = page.getByTestId('viewport');
+  await expect(canvas).toHaveAttribute('data-frames', /[1-9]/);
+  await expect(canvas).toHaveAttribute('data-first-frame-ms', /^\d+(\.\d+)?$/);
+  await page.waitForTimeout(1000);
+  const rested = await canvas.getAttribute('data-frames');
+  await page.waitForTimeout(1000);
+  expect(await canvas.getAttribute('data-frames')).toBe(rested);
+  // A change renders exactly when asked: the frame counter moves.
+  await page.locator('[id="Material.shininess"]').fill('10');
+  await page.locator('[id="Material.shininess"]').press('Enter');
+  await expect
+    .poll(async () => Number(await canvas.getAttribute('data-frames')))
+    .toBeGreaterThan(Number(rested));
+  console.log(`first frame: ${await canvas.getAttribute('data-first-frame-ms')} ms after navigation start`);
+});
