@@ -43,7 +43,7 @@ export interface SphereDetail {
  * @example
  * ```ts
  * chooseSphereDetail({ radiusPx: 300, maxErrorPx: 0.5 });
- * // → { base: 'icosahedron', level: 5, triangles: 20480, errorPx: 0.0875… }
+ * // → { base: 'icosahedron', level: 4, triangles: 5120, errorPx: 0.341… }
  * ```
  * @throws RangeError / TypeError naming the option for a bad radiusPx, maxErrorPx, bases or maxLevel.
  * @throws RangeError when no base in `bases` meets the budget at `maxLevel` or below (it gives the smallest

@@ -64,6 +64,15 @@ export function computeVertexNormals(
     }
   }
 
+  // Normals do not depend on scale: work on a copy scaled by a power of two near 1 / max |coordinate|, so that
+  // meshes at 1e-150 or 1e150 neither underflow nor overflow in the cross products and their sums.
+  let largest = 0;
+  for (let i = 0; i < positions.length; i++) {
+    const x = Math.abs(positions[i]);
+    if (x > largest && x !== Number.POSITIVE_INFINITY) largest = x;
+  }
+  const scale = largest > 0 ? 2 ** -Math.round(Math.log2(largest)) : 1;
+  const p = Float64Array.from(positions, (x) => x * scale);
   const sum = new Float64Array(positions.length); // weighted sums
   const area = new Float64Array(positions.length); // area-weighted sums, the first fallback
   const corner = (c: number) => 3 * (indices == null ? c : indices[c]);
@@ -71,12 +80,12 @@ export function computeVertexNormals(
     const a = corner(c);
     const b = corner(c + 1);
     const d = corner(c + 2);
-    const abx = positions[b] - positions[a];
-    const aby = positions[b + 1] - positions[a + 1];
-    const abz = positions[b + 2] - positions[a + 2];
-    const adx = positions[d] - positions[a];
-    const ady = positions[d + 1] - positions[a + 1];
-    const adz = positions[d + 2] - positions[a + 2];
+    const abx = p[b] - p[a];
+    const aby = p[b + 1] - p[a + 1];
+    const abz = p[b + 2] - p[a + 2];
+    const adx = p[d] - p[a];
+    const ady = p[d + 1] - p[a + 1];
+    const adz = p[d + 2] - p[a + 2];
     const nx = aby * adz - abz * ady;
     const ny = abz * adx - abx * adz;
     const nz = abx * ady - aby * adx;
@@ -95,8 +104,8 @@ export function computeVertexNormals(
       add(sum, b, ux, uy, uz);
       add(sum, d, ux, uy, uz);
     } else if (weighting === 'angle') {
-      const wa = angle(positions, a, b, d);
-      const wb = angle(positions, b, d, a);
+      const wa = angle(p, a, b, d);
+      const wb = angle(p, b, d, a);
       const wd = Math.max(0, Math.PI - wa - wb);
       add(sum, a, wa * ux, wa * uy, wa * uz);
       add(sum, b, wb * ux, wb * uy, wb * uz);

@@ -93,7 +93,7 @@ type Vec = readonly [number, number, number];
  * The lecture's `divideTriangle` recursion, in double precision: split (a, b, c) into (a, ab, ac), (ab, b, bc),
  * (bc, c, ac), (ab, bc, ac) with normalised midpoints, `level` times. Returns unit triangles.
  */
-export function lectureSubdivision(triangles: readonly (readonly [Vec, Vec, Vec])[], level: number): Vec[][] {
+export function lectureSubdivision(triangles: readonly (readonly Vec[])[], level: number): Vec[][] {
   const out: Vec[][] = [];
   const mid = (p: Vec, q: Vec): Vec => {
     const m: Vec = [p[0] + q[0], p[1] + q[1], p[2] + q[2]];
