@@ -3,7 +3,7 @@
 // 4, 6 and 8 of the lecture's tetrahedron sphere. Each frame is followed by a 1×1 readPixels (SwiftShader's
 // gl.finish() does not wait); GPU time from EXT_disjoint_timer_query_webgl2.
 //
-//   node bench/material.bench.mjs [--json PATH] [--levels 4,6,8] [--frames 25]
+//   node bench/material.bench.mjs [--json PATH] [--levels 4,6,8] [--frames 25] [--only NAME,...]
 import { execFileSync } from 'node:child_process';
 import { createReadStream, existsSync, statSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -21,6 +21,7 @@ const arg = (name, fallback) => {
 };
 const levels = arg('--levels', '4,6,8').split(',').map(Number);
 const frames = Number(arg('--frames', '25'));
+const only = arg('--only', ''); // run only the variants whose name contains one of these (comma-separated)
 
 // 1. Build the harness pages into a folder of our own (git-ignored by the dist-e2e-* pattern).
 const outDir = 'dist-e2e-bench-material';
@@ -100,6 +101,14 @@ for (const level of levels) {
   /** @type {Record<string, BenchResult>} */
   const rows = {};
   for (const [name, variant] of variants) {
+    if (
+      only &&
+      !only.split(',').some((o) => name.includes(o)) &&
+      !/^phong × phong$|^three MeshPhongMaterial$|^gouraud × phong$|^flat × phong$|^phong × phong, 2 lights$/.test(
+        name,
+      )
+    )
+      continue;
     rows[name] = await page.evaluate((a) => window.materialBench.run(a.variant, a.level, a.frames), {
       variant,
       level,

@@ -21,50 +21,67 @@ uniform vec3 lightAttenuation[NUM_LIGHTS]; // a, b, c
 #endif
 #endif
 
-vec3 shadeColor(vec3 p, vec3 normal) {
-  vec3 toEye = shadingEye.xyz - p * shadingEye.w;
-  float eyeDistance = length(toEye);
-  vec3 v = eyeDistance > 0.0 ? toEye / eyeDistance : vec3(0.0, 0.0, 1.0);
-  float normalLength = length(normal);
-  vec3 n = normalLength > 0.0 ? normal / normalLength : v;
-  v = eyeDistance > 0.0 ? v : n;
-  vec3 color = ambientTerm;
-#if NUM_LIGHTS > 0
-  for (int i = 0; i < NUM_LIGHTS; i++) {
-    vec3 toLight = lightPosition[i] - p;
-    float t = length(toLight);
-    vec3 l = t > 0.0 ? toLight / t : n;
-    float ndl = dot(n, l);
-    float diffuse = max(ndl, 0.0);
-#ifdef LIGHTING_BLINN
-    vec3 h = l + v;
-    float hLength = length(h);
-    float x = hLength > 0.0 ? max(dot(n, h) / hLength, 0.0) : 0.0;
+#ifdef USE_ATTENUATION
+#define LIGHT_ATTENUATION(i) lightAttenuation[i]
 #else
-    // v·r with r = 2(l·n)n − l
-    float x = max(2.0 * ndl * dot(v, n) - dot(v, l), 0.0);
+#define LIGHT_ATTENUATION(i) vec3(1.0, 0.0, 0.0)
 #endif
-    // pow(0, 0) is undefined in GLSL: 0^0 = 1 (shininess 0 lights the whole lit side), 0^α = 0 for α > 0.
-    float spec = x > 0.0 ? pow(x, shininess) : step(shininess, 0.0);
-    spec = ndl > 0.0 ? spec : 0.0;
+
+// One light's attenuated diffuse + specular term (kdId = kd·Id, ksIs = ks·Is, k = (a, b, c)).
+vec3 lightTerm(vec3 p, vec3 n, vec3 v, vec3 lightPos, vec3 kdId, vec3 ksIs, vec3 k) {
+  // inversesqrt and multiplies instead of length and divisions (cheaper on every GPU); the selects keep
+  // the degenerate cases of shade(): a light at the point lights it head-on.
+  vec3 toLight = lightPos - p;
+  float t2 = dot(toLight, toLight);
+  float invT = inversesqrt(t2);
+  vec3 l = t2 > 0.0 ? toLight * invT : n;
+  float ndl = dot(n, l);
+  float diffuse = max(ndl, 0.0);
+#ifdef LIGHTING_BLINN
+  vec3 h = l + v;
+  float h2 = dot(h, h);
+  float x = h2 > 0.0 ? max(dot(n, h) * inversesqrt(h2), 0.0) : 0.0;
+#else
+  // v·r with r = 2(l·n)n − l
+  float x = max(2.0 * ndl * dot(v, n) - dot(v, l), 0.0);
+#endif
+  // pow(0, 0) is undefined in GLSL: 0^0 = 1 (shininess 0 lights the whole lit side), 0^α = 0 for α > 0.
+  float spec = x > 0.0 ? pow(x, shininess) : step(shininess, 0.0);
+  spec = ndl > 0.0 ? spec : 0.0;
 #if CEL_BANDS > 0
-    diffuse = min(floor(diffuse * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
-    spec = step(0.5, spec);
+  diffuse = min(floor(diffuse * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
+  spec = step(0.5, spec);
 #endif
 #ifdef USE_ATTENUATION
-    vec3 k = lightAttenuation[i];
-    float att = 1.0 / max(k.x + k.y * t + k.z * t * t, 1e-6);
-    diffuse *= att;
-    spec *= att;
+  float t = t2 > 0.0 ? t2 * invT : 0.0;
+  float att = 1.0 / max(k.x + k.y * t + k.z * t2, 1e-6);
+  diffuse *= att;
+  spec *= att;
 #endif
-    color += diffuse * lightDiffuse[i] + spec * lightSpecular[i];
+  return diffuse * kdId + spec * ksIs;
+}
+
+vec3 shadeColor(vec3 p, vec3 normal) {
+  vec3 toEye = shadingEye.xyz - p * shadingEye.w;
+  float e2 = dot(toEye, toEye);
+  vec3 v = e2 > 0.0 ? toEye * inversesqrt(e2) : vec3(0.0, 0.0, 1.0);
+  float n2 = dot(normal, normal);
+  vec3 n = n2 > 0.0 ? normal * inversesqrt(n2) : v;
+  v = e2 > 0.0 ? v : n;
+  vec3 color = ambientTerm;
+#if NUM_LIGHTS > 0
+  // Unrolled by three (LIGHT_COUNT_LITERAL is replaced by the number of lights before compiling).
+  #pragma unroll_loop_start
+  for ( int i = 0; i < LIGHT_COUNT_LITERAL; i ++ ) {
+    color += lightTerm(p, n, v, lightPosition[ i ], lightDiffuse[ i ], lightSpecular[ i ], LIGHT_ATTENUATION(UNROLLED_LOOP_INDEX));
   }
+  #pragma unroll_loop_end
 #endif
   return color;
 }
 `;
 
-/** Vertex stage. */
+/** Vertex stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights (see {@link withLightCount}). */
 export const vertexShader = /* glsl */ `
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
 
@@ -118,7 +135,7 @@ void main() {
 }
 `;
 
-/** Fragment stage. */
+/** Fragment stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights. */
 export const fragmentShader = /* glsl */ `
 #if defined(SHADING_FLAT)
 flat in vec3 vColor;
@@ -140,3 +157,8 @@ void main() {
   #include <colorspace_fragment>
 }
 `;
+
+/** `source` with its light loop bound set to `count`, so that three unrolls the loop. */
+export function withLightCount(source: string, count: number): string {
+  return source.replace(/LIGHT_COUNT_LITERAL/g, String(count));
+}

@@ -14,7 +14,7 @@ import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { eyeOf } from './eyeOf.js';
 import { facePositionTexture } from './facePositionTexture.js';
 import { PhongLight } from './PhongLight.js';
-import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
+import { fragmentShader, vertexShader, withLightCount } from './ShadingMaterial.glsl.js';
 import { LIGHTINGS, type Lighting } from './shade.js';
 import { type ColorInput, checkColorChannels, checkNonNegative, checkOneOf, setColor } from './validate.js';
 
@@ -114,8 +114,8 @@ export class ShadingMaterial extends ShaderMaterial {
     lights = [],
   }: ShadingMaterialOptions = {}) {
     super({
-      vertexShader,
-      fragmentShader,
+      vertexShader: withLightCount(vertexShader, 0),
+      fragmentShader: withLightCount(fragmentShader, 0),
       uniforms: {
         shadingNormalMatrix: { value: new Matrix3() },
         shadingEye: { value: new Vector4(0, 0, 1, 0) },
@@ -288,6 +288,10 @@ export class ShadingMaterial extends ShaderMaterial {
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);
     if (same) return;
     this.defines = defines;
+    if (old.NUM_LIGHTS !== defines.NUM_LIGHTS) {
+      this.vertexShader = withLightCount(vertexShader, this.#lights.length);
+      this.fragmentShader = withLightCount(fragmentShader, this.#lights.length);
+    }
     this.needsUpdate = true;
   }
 
