@@ -56,6 +56,11 @@ test('non-uniform scale, turned by the trackball', async ({ page }) => {
 });
 
 test('comparison view: flat | Gouraud | Phong | cel', async ({ page }) => {
-  await open(page, { view: 'compare', model: { scale: [1, 1, 1] }, camera: { eye: [0, 0, 2.6] } });
+  await open(page, {
+    view: 'compare',
+    sphere: { level: 3 },
+    model: { scale: [1, 1, 1] },
+    camera: { eye: [0, 0, 1.9] },
+  });
   await shot(page, 'compare.png');
 });
