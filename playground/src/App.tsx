@@ -1,6 +1,6 @@
 import { Leva } from 'leva';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { MOVE_KEYS, REAL_PACKAGES } from './engine/packages';
+import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
 import { COMPARE_COLUMNS, compareLayout, type Layout, type SectionErrors, Viewer } from './engine/Viewer';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
@@ -164,9 +164,6 @@ export function App() {
     ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
     ...(renderError ? [`render: ${renderError}`] : []),
   ];
-  const standIns = Object.entries(REAL_PACKAGES)
-    .filter(([, real]) => !real)
-    .map(([name]) => `@shadelab/${name}`);
 
   return (
     <div className="app">
@@ -219,10 +216,7 @@ export function App() {
           ))}
         </div>
         <Stats feed={feed} />
-        <p className="hint">
-          Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS}
-          {standIns.length > 0 && ` · three.js stand-ins for ${standIns.join(', ')}`}
-        </p>
+        <p className="hint">Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS}</p>
       </main>
       <aside className="side">
         <div className="panel">

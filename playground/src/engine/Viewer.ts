@@ -13,7 +13,7 @@ import {
   createLight,
   createMaterial,
   createMover,
-  createOutline,
+  createOutlineMesh,
   createSphere,
   createTrackball,
   type Detail,
@@ -85,9 +85,6 @@ export function compareLayout(width: number, height: number): Layout {
   return width / height >= 2 ? { cols: COMPARE_COLUMNS.length, rows: 1 } : { cols: 2, rows: 2 };
 }
 
-/** Inverted-hull outline thickness, as a fraction of the radius. */
-const OUTLINE_WIDTH = 0.03;
-
 const _size = /* @__PURE__ */ new THREE.Vector2();
 const _pixel = /* @__PURE__ */ new Uint8Array(4);
 
@@ -144,9 +141,9 @@ export class Viewer {
     this.material = createMaterial();
     this.compareMaterials = COMPARE_COLUMNS.map(() => createMaterial());
     this.mesh = new THREE.Mesh(new THREE.BufferGeometry(), this.material);
-    this.outline = new THREE.Mesh(this.mesh.geometry, createOutline());
+    this.outline = createOutlineMesh(this.mesh);
     this.outline.visible = false;
-    this.pivot.add(this.mesh, this.outline);
+    this.pivot.add(this.mesh);
     this.scene.add(this.pivot);
     // The gizmo listens first, so that grabbing a handle disables the trackball before it sees the press.
     this.gizmo = new TransformControls(this.camera, canvas);
@@ -271,7 +268,6 @@ export class Viewer {
     attempt('model', () => {
       const [x, y, z] = state.model.scale;
       this.mesh.scale.set(x, y, z);
-      this.outline.scale.set(x, y, z).multiplyScalar(1 + OUTLINE_WIDTH);
     });
     attempt('camera', () => this.applyCamera(state));
     attempt('sphere', () => this.applySphere(state));

@@ -4,10 +4,10 @@
  */
 
 import { Camera, CameraMovement } from '@shadelab/camera';
-import { PhongLight, ShadingMaterial, SPHERE_FLAG } from '@shadelab/material';
-import { SPHERE_BASES, sphereError, subdivideSphere } from '@shadelab/sphere';
+import { createOutline, PhongLight, ShadingMaterial } from '@shadelab/material';
+import { chooseSphereDetail, type SphereDetail, SubdivisionSphereGeometry } from '@shadelab/sphere';
 import { Trackball } from '@shadelab/trackball';
-import * as THREE from 'three';
+import type * as THREE from 'three';
 import type {
   LightState,
   PlaygroundState,
@@ -17,20 +17,11 @@ import type {
   Vec3,
 } from '../state/schema';
 
-/** Which packages are real (false = a three.js stand-in is used); shown on the page. */
-export const REAL_PACKAGES = { sphere: true, camera: true, trackball: true, material: true };
-
 // ---- sphere ------------------------------------------------------------------------------------------------
 
 /** The unit sphere for `shading`: non-indexed for flat, indexed otherwise; no normal attribute (analytic). */
 export function createSphere(base: SphereBase, level: number, shading: Shading): THREE.BufferGeometry {
-  const mesh = subdivideSphere({ base, level, normals: 'none', indexed: shading !== 'flat' });
-  const geometry = new THREE.BufferGeometry();
-  geometry.setAttribute('position', new THREE.BufferAttribute(mesh.positions, 3));
-  if (mesh.indices) geometry.setIndex(new THREE.BufferAttribute(mesh.indices, 1));
-  geometry.userData[SPHERE_FLAG] = true;
-  geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 1);
-  return geometry;
+  return new SubdivisionSphereGeometry({ base, level, normals: 'none', indexed: shading !== 'flat' });
 }
 
 /** The geometry a shading needs differs only between flat and the others. */
@@ -38,38 +29,11 @@ export function sphereKey(base: SphereBase, level: number, shading: Shading): st
   return `${base}:${level}:${shading === 'flat' ? 'faces' : 'shared'}`;
 }
 
-export interface Detail {
-  base: SphereBase;
-  level: number;
-  triangles: number;
-  errorPx: number;
-}
+export type Detail = SphereDetail;
 
-const FACES: Record<SphereBase, number> = { tetrahedron: 4, octahedron: 8, icosahedron: 20 };
-
-/**
- * The cheapest sphere (fewest triangles) whose exact radial error, `sphereError(base, level)` × `radiusPx`,
- * stays within `maxErrorPx` (levels 0 … 10).
- */
+/** The cheapest sphere whose exact radial error on screen stays within `maxErrorPx` (levels 0 … 10). */
 export function chooseDetail(radiusPx: number, maxErrorPx: number): Detail {
-  let best: Detail | null = null;
-  for (const base of SPHERE_BASES) {
-    for (let level = 0; level <= 10; level++) {
-      const errorPx = sphereError(base, level) * radiusPx;
-      if (errorPx > maxErrorPx) continue;
-      const triangles = FACES[base] * 4 ** level;
-      if (!best || triangles < best.triangles) best = { base, level, triangles, errorPx };
-      break;
-    }
-  }
-  return (
-    best ?? {
-      base: 'icosahedron',
-      level: 10,
-      triangles: 20 * 4 ** 10,
-      errorPx: sphereError('icosahedron', 10) * radiusPx,
-    }
-  );
+  return chooseSphereDetail({ radiusPx, maxErrorPx });
 }
 
 // ---- camera -------------------------------------------------------------------------------------------------
@@ -209,10 +173,13 @@ export function needsNonIndexed(shading: Shading): boolean {
   return shading === 'flat';
 }
 
+/** Outline thickness along the normal, in model units (before the model scale). */
+export const OUTLINE_THICKNESS = 0.03;
+
 /**
- * An inverted-hull outline for cel shading (the material package has none): the back faces of the
- * sphere, pushed out a little, drawn light so that it shows on the lecture's black background.
+ * The material package's inverted-hull outline for cel shading, as a child of `mesh` sharing its geometry;
+ * drawn light so that it shows on the lecture's black background.
  */
-export function createOutline(): THREE.Material {
-  return new THREE.MeshBasicMaterial({ color: 0xf2f2f2, side: THREE.BackSide });
+export function createOutlineMesh(mesh: THREE.Mesh): THREE.Mesh {
+  return createOutline(mesh, { thickness: OUTLINE_THICKNESS, color: 0xf2f2f2 });
 }
