@@ -1,0 +1,104 @@
+// `node scripts/pack.mjs [--out DIR] [--json PATH]`: build every package with `tsc -b`, then `npm pack` each one
+// into DIR (a new temporary folder by default) and print what each tarball holds: packed and unpacked size and
+// file count. tests/pack.spec.ts imports `packPackages` to install the tarballs into fresh apps.
+import { spawnSync } from 'node:child_process';
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+
+/** The published packages, in dependency order. */
+export const PACKAGES = ['sphere', 'camera', 'trackball', 'material'];
+
+/**
+ * @typedef {object} PackedPackage
+ * @property {string} name package name, e.g. `@shadelab/camera`
+ * @property {string} version
+ * @property {string} tarball absolute path of the `.tgz`
+ * @property {number} size packed size, bytes
+ * @property {number} unpackedSize bytes
+ * @property {number} entryCount files in the tarball
+ * @property {string[]} files paths inside the package
+ */
+
+/**
+ * Run a command in the repository root; throws with its output when it fails.
+ * @param {string} cmd @param {string[]} args @returns {string} stdout
+ */
+function mustRun(cmd, args) {
+  const r = spawnSync(cmd, args, { cwd: root, encoding: 'utf8', maxBuffer: 64 * 1024 * 1024 });
+  if (r.error) throw r.error;
+  if (r.status !== 0) {
+    throw new Error(
+      `\`${cmd} ${args.join(' ')}\` failed with exit code ${r.status}\n${r.stdout}\n${r.stderr}`,
+    );
+  }
+  return r.stdout;
+}
+
+/**
+ * Build the packages (`tsc -b`) and `npm pack` each into `outDir`.
+ * @param {string} [outDir] folder for the tarballs; a new one in the OS temp folder when omitted
+ * @returns {PackedPackage[]}
+ */
+export function packPackages(outDir = mkdtempSync(join(tmpdir(), 'shadelab-pack-'))) {
+  mkdirSync(outDir, { recursive: true });
+  mustRun('npx', ['tsc', '-b', ...PACKAGES.map((p) => join('packages', p))]);
+  return PACKAGES.map((p) => {
+    // --ignore-scripts: packing must not depend on lifecycle scripts; the build above is the only step.
+    const out = mustRun('npm', [
+      'pack',
+      // A leading ./ so npm reads a folder, not a GitHub shorthand (`packages/sphere`).
+      `./packages/${p}`,
+      '--pack-destination',
+      outDir,
+      '--json',
+      '--ignore-scripts',
+      '--loglevel',
+      'error',
+    ]);
+    const [info] = JSON.parse(out);
+    return {
+      name: info.name,
+      version: info.version,
+      tarball: join(outDir, info.filename),
+      size: info.size,
+      unpackedSize: info.unpackedSize,
+      entryCount: info.entryCount,
+      files: info.files.map((/** @type {{ path: string }} */ f) => f.path),
+    };
+  });
+}
+
+/** @param {number} bytes */
+const kB = (bytes) => `${(bytes / 1000).toFixed(1)} kB`;
+
+/** @param {PackedPackage[]} packed @returns {string} a Markdown table */
+export function packTable(packed) {
+  const lines = [
+    '| package | version | tarball (gzip) | unpacked | files |',
+    '| --- | --- | ---: | ---: | ---: |',
+    ...packed.map(
+      (p) => `| \`${p.name}\` | ${p.version} | ${kB(p.size)} | ${kB(p.unpackedSize)} | ${p.entryCount} |`,
+    ),
+  ];
+  return lines.join('\n');
+}
+
+if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  const arg = (/** @type {string} */ flag) => {
+    const i = process.argv.indexOf(flag);
+    return i >= 0 ? process.argv[i + 1] : undefined;
+  };
+  const outArg = arg('--out');
+  const packed = packPackages(outArg ? resolve(outArg) : undefined);
+  console.log(packTable(packed));
+  console.log(`\ntarballs in ${dirname(packed[0].tarball)}`);
+  const json = arg('--json');
+  if (json) {
+    mkdirSync(dirname(resolve(json)), { recursive: true });
+    writeFileSync(resolve(json), `${JSON.stringify(packed, null, 2)}\n`);
+  }
+}

@@ -1,0 +1,262 @@
+// Ready to `npm install`: the packed tarballs, installed into two fresh apps made in a temporary folder (one on
+// plain three.js, one on react-three-fiber), type-check with the app's own TypeScript 5 in strict mode (our
+// .d.ts included: skipLibCheck off), build with Vite and render the lecture's scene in Chromium.
+// The app sources are tools/pack-apps/<app>/ (kept out of the repo's own type check: the r3f app needs
+// @react-three/fiber, which only the temporary app installs). SHADELAB_PACK_KEEP=1 keeps the temporary folder.
+import { spawn } from 'node:child_process';
+import { cpSync, createReadStream, existsSync, mkdtempSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { createServer, type Server } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { tmpdir } from 'node:os';
+import { extname, join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { expect, type Page, test } from '@playwright/test';
+import { type PackedPackage, packPackages } from '../scripts/pack.mjs';
+
+const repo = fileURLToPath(new URL('..', import.meta.url));
+
+/** Dependencies of every app, at the versions the repository itself uses (npm's cache usually has them). */
+const common = {
+  three: '^0.187.0',
+  '@types/three': '^0.187.0',
+  vite: '^8.3.8',
+  // What most users have: our declarations must work with TypeScript 5, not only with the repo's TypeScript 7.
+  typescript: '~5.9.3',
+};
+const apps = {
+  vanilla: {},
+  r3f: {
+    react: '^19.3.1',
+    'react-dom': '^19.3.1',
+    '@types/react': '^19.3.0',
+    '@types/react-dom': '^19.3.0',
+    '@react-three/fiber': '^9.4.0',
+  },
+} satisfies Record<string, Record<string, string>>;
+type App = keyof typeof apps;
+
+let tmp = '';
+let packed: PackedPackage[] = [];
+let server: Server | undefined;
+let origin = '';
+const timings: Record<string, number> = {};
+
+/** Run a command in `cwd`; resolves with its output, rejects with the output when it fails. */
+function run(cmd: string, args: string[], cwd: string): Promise<string> {
+  return new Promise((resolve, reject) => {
+    const child = spawn(cmd, args, { cwd, env: { ...process.env, CI: '1' } });
+    let out = '';
+    child.stdout.on('data', (d) => {
+      out += d;
+    });
+    child.stderr.on('data', (d) => {
+      out += d;
+    });
+    child.on('error', reject);
+    child.on('close', (code) => {
+      if (code === 0) resolve(out);
+      else reject(new Error(`\`${cmd} ${args.join(' ')}\` in ${cwd} failed with exit code ${code}:\n${out}`));
+    });
+  });
+}
+
+async function timed<T>(label: string, work: () => Promise<T>): Promise<T> {
+  const t0 = performance.now();
+  const result = await work();
+  timings[label] = Math.round(performance.now() - t0);
+  return result;
+}
+
+/** Make the app folder, install it, type-check it and build it. */
+async function makeApp(app: App): Promise<void> {
+  const dir = join(tmp, app);
+  cpSync(join(repo, 'tools', 'pack-apps', app), dir, { recursive: true });
+  const tarballs = Object.fromEntries(packed.map((p) => [p.name, `file:${p.tarball}`]));
+  const pkg = {
+    name: `shadelab-pack-${app}`,
+    private: true,
+    type: 'module',
+    dependencies: { ...common, ...apps[app], ...tarballs },
+  };
+  writeFileSync(join(dir, 'package.json'), `${JSON.stringify(pkg, null, 2)}\n`);
+  await timed(`${app}: npm install`, () =>
+    run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel', 'error'], dir),
+  );
+  await timed(`${app}: tsc --noEmit`, () => run('npx', ['--no-install', 'tsc', '--noEmit', '-p', '.'], dir));
+  await timed(`${app}: vite build`, () =>
+    run('npx', ['--no-install', 'vite', 'build', '--base', './', '--logLevel', 'warn'], dir),
+  );
+}
+
+const types: Record<string, string> = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.svg': 'image/svg+xml',
+};
+
+/** Serve `<tmp>/<app>/dist` at `/<app>/`. */
+function serve(): Promise<string> {
+  server = createServer((req, res) => {
+    const url = new URL(req.url ?? '/', 'http://localhost');
+    const [, app, ...rest] = normalize(decodeURIComponent(url.pathname)).split('/');
+    const file = join(tmp, app ?? '', 'dist', rest.join('/') || 'index.html');
+    if (!(app in apps) || !file.startsWith(tmp) || !existsSync(file) || !statSync(file).isFile()) {
+      res.writeHead(404).end();
+      return;
+    }
+    res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
+    createReadStream(file).pipe(res);
+  });
+  return new Promise((resolve) => {
+    server!.listen(0, '127.0.0.1', () =>
+      resolve(`http://127.0.0.1:${(server!.address() as AddressInfo).port}`),
+    );
+  });
+}
+
+/** RGB at fractions (x right, y down) of the canvas, read from a screenshot: what is on screen. */
+async function samples(page: Page, points: readonly (readonly [number, number])[]): Promise<number[][]> {
+  const png = await page.locator('canvas').screenshot();
+  return page.evaluate(
+    async ({ b64, points }) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const canvas = document.createElement('canvas');
+      canvas.width = img.width;
+      canvas.height = img.height;
+      const ctx = canvas.getContext('2d')!;
+      ctx.drawImage(img, 0, 0);
+      return points.map(([fx, fy]) => {
+        const data = ctx.getImageData(
+          Math.round(fx * (img.width - 1)),
+          Math.round(fy * (img.height - 1)),
+          1,
+          1,
+        );
+        return Array.from(data.data.slice(0, 3));
+      });
+    },
+    { b64: png.toString('base64'), points },
+  );
+}
+
+const brightness = (rgb: number[]) => rgb[0] + rgb[1] + rgb[2];
+
+// The lecture's view: the (2, 1, 2) ellipsoid seen from z = 3 with fovy 90° covers x within ±0.894 and
+// y within ±0.447 of the half-size (tangents from the eye: 2/√5 and 1/√5), so these points are background.
+const BACKGROUND = [
+  [0.01, 0.01],
+  [0.99, 0.01],
+  [0.01, 0.99],
+  [0.99, 0.99],
+  [0.5, 0.1],
+  [0.5, 0.9],
+  [0.01, 0.5],
+  [0.99, 0.5],
+] as const;
+const CENTRE = [0.5, 0.5] as const;
+const TOWARDS_LIGHT = [0.35, 0.42] as const; // the light is at (−5, 10, 20): up, left, in front
+const AWAY_FROM_LIGHT = [0.65, 0.58] as const;
+const RIM = [
+  [0.1, 0.5],
+  [0.9, 0.5],
+] as const;
+const ABOVE = [0.5, 0.2] as const; // background until a vertical drag tilts the long z axis up
+
+async function checkLectureScene(page: Page, app: App): Promise<void> {
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  await page.setViewportSize({ width: 400, height: 400 });
+  await page.goto(`${origin}/${app}/`);
+  const canvas = page.locator('canvas');
+  await expect(canvas).toHaveCount(1);
+  await expect(canvas).toHaveJSProperty('width', 400);
+  await expect
+    .poll(async () => brightness((await samples(page, [CENTRE]))[0]), { timeout: 30_000 })
+    .toBeGreaterThan(120);
+
+  const before = await samples(page, [CENTRE, TOWARDS_LIGHT, AWAY_FROM_LIGHT, ...RIM, ABOVE, ...BACKGROUND]);
+  const [centre, lit, dim, rimLeft, rimRight, above, ...background] = before;
+  // The material's default colour is orange (kd = (0.6, 0.35, 0.2)): red > green > blue where it is lit.
+  expect(centre[0]).toBeGreaterThan(centre[1]);
+  expect(centre[1]).toBeGreaterThan(centre[2]);
+  // Diffuse lighting from the upper left: brighter towards the light than away from it.
+  expect(brightness(lit)).toBeGreaterThan(brightness(dim));
+  // Ambient light reaches the rim on both sides; outside the silhouette is the black background.
+  expect(brightness(rimLeft)).toBeGreaterThan(15);
+  expect(brightness(rimRight)).toBeGreaterThan(15);
+  expect(brightness(above)).toBeLessThanOrEqual(6);
+  for (const px of background) expect(brightness(px)).toBeLessThanOrEqual(6);
+
+  // The trackball: a vertical drag from the centre turns the sphere about the camera's u axis, tilting its long
+  // z semi-axis towards the viewer's vertical, so the silhouette grows above the centre.
+  const box = (await canvas.boundingBox())!;
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i++)
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height * (0.5 - 0.025 * i));
+  await page.mouse.up();
+  await expect.poll(async () => brightness((await samples(page, [ABOVE]))[0])).toBeGreaterThan(15);
+  const after = await samples(page, BACKGROUND.slice(0, 4));
+  for (const px of after) expect(brightness(px)).toBeLessThanOrEqual(6);
+
+  expect(errors).toEqual([]);
+}
+
+test.describe.configure({ mode: 'serial' });
+
+test.beforeAll(async () => {
+  // npm install of two apps, two strict type checks and two Vite builds on a 2-core machine.
+  test.setTimeout(420_000);
+  tmp = mkdtempSync(join(tmpdir(), 'shadelab-pack-'));
+  packed = await timed('pack (tsc -b, npm pack)', async () => packPackages(join(tmp, 'tarballs')));
+  await Promise.all((Object.keys(apps) as App[]).map(makeApp));
+  origin = await serve();
+});
+
+test.afterAll(async () => {
+  await new Promise<void>((resolve) => (server ? server.close(() => resolve()) : resolve()));
+  if (tmp && !process.env.SHADELAB_PACK_KEEP) rmSync(tmp, { recursive: true, force: true });
+  console.log(`pack test timings (ms): ${JSON.stringify(timings)}`);
+});
+
+test('each tarball holds its ESM build, declarations, README and package.json, and nothing else', () => {
+  expect(packed.map((p) => p.name)).toEqual([
+    '@shadelab/sphere',
+    '@shadelab/camera',
+    '@shadelab/trackball',
+    '@shadelab/material',
+  ]);
+  for (const p of packed) {
+    expect(p.files, p.name).toEqual(
+      expect.arrayContaining(['package.json', 'dist/index.js', 'dist/index.d.ts']),
+    );
+    for (const f of p.files) {
+      expect(f, p.name).toMatch(
+        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?)$/,
+      );
+      expect(f, p.name).not.toMatch(/\.test\.|test-util|tsbuildinfo/);
+    }
+    // Every module has its declaration beside it.
+    for (const js of p.files.filter((f) => f.endsWith('.js'))) {
+      expect(p.files, `${p.name}: ${js}`).toContain(js.replace(/\.js$/, '.d.ts'));
+    }
+  }
+});
+
+test("a fresh three.js app renders the lecture's scene from the tarballs and the trackball turns it", async ({
+  page,
+}) => {
+  await checkLectureScene(page, 'vanilla');
+});
+
+test("a fresh react-three-fiber app renders the lecture's scene from the tarballs and the trackball turns it", async ({
+  page,
+}) => {
+  await checkLectureScene(page, 'r3f');
+});
