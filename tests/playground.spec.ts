@@ -328,6 +328,8 @@ test.describe('the playground', () => {
     await expect(page.getByLabel('shininess')).toBeVisible();
     await expect(page.getByRole('img', { name: /Lit sphere/ })).toBeVisible();
     await expect(page.getByLabel('fragment shader GLSL')).toBeVisible();
+    await expect(page.getByLabel('eye z', { exact: true })).toHaveValue('3.0');
+    await expect(page.getByLabel('Ia (ambient) y', { exact: true })).toHaveValue('0.20');
     // Tab to the shading select and change it with the keyboard alone.
     await page.getByLabel('shading').focus();
     await page.keyboard.press('ArrowUp');

@@ -22,6 +22,7 @@ export function App() {
   const [context, setContext] = useState<'ok' | 'lost' | 'restored'>('ok');
   const [variant, setVariant] = useState<Variant | null>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
+  const panelRef = useRef<HTMLDivElement>(null);
   const viewerRef = useRef<Viewer | null>(null);
   const feed = useMemo(() => new StatsFeed(), []);
   const goodState = useRef<PlaygroundState | null>(null);
@@ -86,6 +87,24 @@ export function App() {
       viewerRef.current = null;
     };
   }, [feed, update, refreshVariant]);
+
+  // leva labels only the first field of a vector (x/r); name the others for screen readers ("ka y", …).
+  useEffect(() => {
+    const panel = panelRef.current;
+    if (!panel) return;
+    const name = () => {
+      for (const input of panel.querySelectorAll<HTMLInputElement>('input[id$=".y"], input[id$=".z"]')) {
+        const base = input.id.slice(0, -2);
+        const label = panel.querySelector(`label[for="${CSS.escape(base)}"]`)?.textContent;
+        const wanted = `${label ?? base} ${input.id.slice(-1)}`;
+        if (label && input.getAttribute('aria-label') !== wanted) input.setAttribute('aria-label', wanted);
+      }
+    };
+    name();
+    const observer = new MutationObserver(name);
+    observer.observe(panel, { childList: true, subtree: true });
+    return () => observer.disconnect();
+  }, []);
 
   // A link pasted into this tab changes only the hash: take its state (or refuse it) without a reload.
   useEffect(() => {
@@ -219,7 +238,7 @@ export function App() {
         <p className="hint">Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS}</p>
       </main>
       <aside className="side">
-        <div className="panel">
+        <div className="panel" ref={panelRef}>
           <Leva fill flat titleBar={false} hideCopyButton />
         </div>
         {variant && <ShaderEditor variant={variant} tryShader={tryShader} clearShader={clearShader} />}

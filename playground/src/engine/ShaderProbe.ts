@@ -19,34 +19,53 @@ export interface ShaderDiagnostic {
 
 export type ShaderCheck = { ok: true } | { ok: false; diagnostics: ShaderDiagnostic[] };
 
-/** A comment line put before the user's text so error lines can be mapped back to it. */
-const MARKER = '// shadelab: user source starts below';
+const TAG = /\/\/ @L(\d+)$/;
+
+/**
+ * Tags each line of the user's GLSL with its line number (`… // @L12`), so an error line in the program three
+ * actually compiles (after its prefix, `#include` expansion and loop unrolling) maps back to the text the
+ * user typed. Preprocessor lines and the `}` closing an unrolled loop are left untouched (three's regexes
+ * read them).
+ */
+export function tagLines(source: string): string {
+  const lines = source.split('\n');
+  return lines
+    .map((line, i) => {
+      const trimmed = line.trim();
+      if (!trimmed || trimmed.startsWith('#') || line.endsWith('\\')) return line;
+      const next = lines.slice(i + 1).find((l) => l.trim() !== '');
+      if (next?.trim().startsWith('#pragma unroll_loop_end')) return line;
+      return `${line} // @L${i + 1}`;
+    })
+    .join('\n');
+}
+
+/** The user's line for a line of the compiled source: its tag, or the nearest tag above it. */
+function userLine(compiledLines: string[], line: number): number | null {
+  for (let i = Math.min(line, compiledLines.length) - 1; i >= 0; i--) {
+    const match = TAG.exec(compiledLines[i]!);
+    if (match) return Number(match[1]);
+  }
+  return null;
+}
 
 /** Parses a GLSL info log ("ERROR: 0:12: 'x' : undeclared identifier") into diagnostics. */
 export function parseInfoLog(
   log: string,
   stage: 'vertex' | 'fragment',
-  fullSource: string,
-  userLineCount: number,
+  compiledSource: string,
 ): ShaderDiagnostic[] {
-  const lines = fullSource.split('\n');
-  const markerIndex = lines.findIndex((l) => l.trim() === MARKER);
+  const compiledLines = compiledSource.split('\n');
   const out: ShaderDiagnostic[] = [];
   for (const raw of log.split('\n')) {
-    const text = raw.trim();
+    const text = raw.replace(/\0/g, '').trim();
     if (!text) continue;
     const match = /^(?:ERROR|WARNING):\s*\d+:(\d+):\s*(.*)$/.exec(text);
-    if (!match) {
-      out.push({ stage, line: null, message: text });
-      continue;
-    }
-    const fullLine = Number(match[1]);
-    const userLine = markerIndex >= 0 ? fullLine - (markerIndex + 1) : null;
-    out.push({
-      stage,
-      line: userLine !== null && userLine >= 1 && userLine <= userLineCount ? userLine : null,
-      message: match[2]!,
-    });
+    out.push(
+      match
+        ? { stage, line: userLine(compiledLines, Number(match[1])), message: match[2]! }
+        : { stage, line: null, message: text },
+    );
   }
   return out;
 }
@@ -55,34 +74,18 @@ export class ShaderProbe {
   private readonly target = new THREE.WebGLRenderTarget(1, 1);
   private readonly scene = new THREE.Scene();
   private captured: ShaderDiagnostic[] | null = null;
-  private pending: ShaderSource | null = null;
 
   constructor(private readonly renderer: THREE.WebGLRenderer) {
     renderer.debug.checkShaderErrors = true;
     renderer.debug.onShaderError = (gl, program, vertex, fragment) => {
       const diagnostics: ShaderDiagnostic[] = [];
-      const userLines = (s: string) => s.split('\n').length;
       const vLog = gl.getShaderInfoLog(vertex) ?? '';
       const fLog = gl.getShaderInfoLog(fragment) ?? '';
       if (vLog.trim()) {
-        diagnostics.push(
-          ...parseInfoLog(
-            vLog,
-            'vertex',
-            gl.getShaderSource(vertex) ?? '',
-            userLines(this.pending?.vertexShader ?? ''),
-          ),
-        );
+        diagnostics.push(...parseInfoLog(vLog, 'vertex', gl.getShaderSource(vertex) ?? ''));
       }
       if (fLog.trim()) {
-        diagnostics.push(
-          ...parseInfoLog(
-            fLog,
-            'fragment',
-            gl.getShaderSource(fragment) ?? '',
-            userLines(this.pending?.fragmentShader ?? ''),
-          ),
-        );
+        diagnostics.push(...parseInfoLog(fLog, 'fragment', gl.getShaderSource(fragment) ?? ''));
       }
       const linkLog = (gl.getProgramInfoLog(program) ?? '').trim();
       if (!diagnostics.length)
@@ -91,7 +94,10 @@ export class ShaderProbe {
     };
   }
 
-  /** Compiles `source` as a variant of `material` (same defines and uniforms) and reports what failed. */
+  /**
+   * Compiles `source` (already {@link tagLines tagged}) as a variant of `material` (same defines and
+   * uniforms) and reports what failed.
+   */
   check(
     material: THREE.ShaderMaterial,
     mesh: THREE.Mesh,
@@ -99,13 +105,12 @@ export class ShaderProbe {
     source: ShaderSource,
   ): ShaderCheck {
     const candidate = material.clone();
-    candidate.vertexShader = `${MARKER}\n${source.vertexShader}`;
-    candidate.fragmentShader = `${MARKER}\n${source.fragmentShader}`;
+    candidate.vertexShader = source.vertexShader;
+    candidate.fragmentShader = source.fragmentShader;
     const probe = new THREE.Mesh(mesh.geometry, candidate);
     probe.onBeforeRender = mesh.onBeforeRender;
     this.scene.add(probe);
     this.captured = [];
-    this.pending = source;
     const previousTarget = this.renderer.getRenderTarget();
     try {
       this.renderer.setRenderTarget(this.target);
@@ -117,7 +122,6 @@ export class ShaderProbe {
     }
     const diagnostics = this.captured;
     this.captured = null;
-    this.pending = null;
     return diagnostics.length ? { ok: false, diagnostics } : { ok: true };
   }
 

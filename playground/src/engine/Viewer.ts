@@ -33,7 +33,7 @@ import {
   type ViewCamera,
   variantKey,
 } from './packages';
-import { type ShaderCheck, ShaderProbe, type ShaderSource } from './ShaderProbe';
+import { type ShaderCheck, ShaderProbe, type ShaderSource, tagLines } from './ShaderProbe';
 
 /** What the stats panel shows. */
 export interface FrameStats {
@@ -73,6 +73,9 @@ export const COMPARE_COLUMNS = [
   { label: 'Phong', shading: 'phong', cel: false },
   { label: 'cel', shading: 'phong', cel: true },
 ] as const;
+
+/** Most GPU programs kept alive before the shading materials' cached variants are freed. */
+export const PROGRAM_CAP = 24;
 
 /** Cells of the compare view. */
 export interface Layout {
@@ -410,7 +413,11 @@ export class Viewer {
    * Compiles an edited program for the current variant off-screen first; only a program that compiles and
    * links replaces the rendered one, so a broken edit leaves the last good program rendering.
    */
-  tryShader(source: ShaderSource): ShaderCheck {
+  tryShader(edited: ShaderSource): ShaderCheck {
+    const source = {
+      vertexShader: tagLines(edited.vertexShader),
+      fragmentShader: tagLines(edited.fragmentShader),
+    };
     const check = this.probe.check(this.material, this.mesh, this.camera, source);
     if (check.ok) {
       this.material.vertexShader = source.vertexShader;
@@ -483,6 +490,7 @@ export class Viewer {
       canvas.dataset['firstFrameMs'] = ms.toFixed(1);
       this.events.onFirstFrame?.(ms);
     }
+    this.capPrograms();
     this.events.onStats?.(this.stats(cpuMs));
     // The material settles some defines while drawing (analytic sphere normals, attenuation).
     const key = variantKey(this.material);
@@ -528,6 +536,17 @@ export class Viewer {
       this.mesh.material = this.material;
       this.applyGeometry(state.material.shading);
     }
+  }
+
+  /**
+   * three keeps every program a material ever used until the material is disposed; a long session visiting
+   * many variants would grow without bound. Past {@link PROGRAM_CAP}, free them all: the next frame
+   * recompiles only the variants on screen.
+   */
+  private capPrograms() {
+    if ((this.renderer.info.programs?.length ?? 0) <= PROGRAM_CAP) return;
+    this.material.dispose();
+    for (const material of this.compareMaterials) material.dispose();
   }
 
   private stats(cpuMs: number): FrameStats {
