@@ -1,0 +1,31 @@
+// The repository's unit tests with `three` (and its examples) resolved to the release pinned in this folder,
+// the oldest shadelab supports. Run through scripts/three-compat.mjs, from the repository root.
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vitest/config';
+import base from '../../vitest.config.ts';
+
+const here = (path: string) => fileURLToPath(new URL(path, import.meta.url));
+const three = here('./node_modules/three/');
+const { version } = JSON.parse(readFileSync(`${three}package.json`, 'utf8')) as { version: string };
+
+const packageAliases = Object.entries(base.resolve?.alias ?? {}).map(([find, replacement]) => ({
+  find,
+  replacement: replacement as string,
+}));
+
+export default defineConfig({
+  root: here('../..'),
+  resolve: {
+    alias: [
+      { find: /^three$/, replacement: `${three}build/three.module.js` },
+      { find: /^three\/(examples\/jsm|addons)\/(.*)$/, replacement: `${three}examples/jsm/$2` },
+      ...packageAliases,
+    ],
+  },
+  define: { __THREE_COMPAT_VERSION__: JSON.stringify(version) },
+  test: {
+    ...base.test,
+    setupFiles: [here('./checkRevision.ts')],
+  },
+});
