@@ -17,8 +17,9 @@ const memo = /* @__PURE__ */ new Map<SphereBase, number[]>();
  * |p|² = 1 − Σᵢ<ⱼ wᵢwⱼ cᵢⱼ² with cᵢⱼ the chords. Its minimum is at the foot of the perpendicular from the
  * centre, which is the circumcentre: 1 − |p|² = ρ² (ρ the planar circumradius) when the triangle is acute;
  * when the circumcentre falls outside (a right or obtuse triangle) the minimum is at the midpoint of the
- * longest edge: 1 − |p|² = c_max²/4. So a face's error is 1 − √(1 − ρ²) (about ρ²/2, with ρ ≈ 4/3 of the edge
- * sagitta for a near-equilateral face: the sagitta alone understates it) or 1 − √(1 − c_max²/4).
+ * longest edge: 1 − |p|² = c_max²/4. So a face's error is 1 − √(1 − ρ²) or 1 − √(1 − c_max²/4). On a
+ * near-equilateral face (ρ² = c²/3) that is about c²/6, 4/3 of the edge sagitta (about c²/8): the sagitta alone
+ * understates it.
  *
  * Search. All base faces are congruent under the solid's rotations and subdivision commutes with rotations,
  * so one base face is searched, depth first, centre child first. A subtree is skipped when no descendant can
