@@ -130,3 +130,12 @@ test('1,000 option flips keep renderer.info.programs bounded by the variants use
   expect(result.after).toBeLessThanOrEqual(result.before + 12);
   expect(result.max).toBeLessThanOrEqual(result.before + 12);
 });
+
+test('one material drawing two differently transformed objects in a row renders each correctly', async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => window.materialHarness.sharedMaterial());
+  expect(result.covered).toBeGreaterThan(2000);
+  expect(result.differing).toBe(0);
+});

@@ -455,7 +455,50 @@ function flipPrograms(flips: number): { before: number; after: number; max: numb
   return { before, after, max, variants: variants.size };
 }
 
-const api = { compare, flipPrograms };
+/**
+ * Two differently transformed spheres drawn with one shared material, then each with its own: the images
+ * must be identical (per-object uniforms are re-uploaded between draws of the same material).
+ */
+function sharedMaterial(): { identical: boolean; differing: number; covered: number } {
+  const size = 128;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const camera = makeCamera(false);
+  const draw = (shared: boolean): Uint8Array => {
+    const a = new ShadingMaterial({ shading: 'phong', lighting: 'blinn-phong', lights: [light] });
+    const b = shared
+      ? a
+      : new ShadingMaterial({ shading: 'phong', lighting: 'blinn-phong', lights: [light] });
+    const left = new Mesh(sphereGeometry(4, false), a);
+    left.position.set(-1.4, 0, 0);
+    left.scale.set(1, 1.5, 1);
+    const right = new Mesh(sphereGeometry(4, false), b);
+    right.position.set(1.4, 0, 0);
+    right.scale.set(-1, 0.5, 1);
+    right.rotation.set(0.5, 1, 0);
+    const scene = new Scene();
+    scene.add(left, right, light);
+    renderer.render(scene, camera);
+    const gl = renderer.getContext();
+    const pixels = new Uint8Array(4 * size * size);
+    gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    a.dispose();
+    b.dispose();
+    return pixels;
+  };
+  const one = draw(true);
+  const two = draw(false);
+  let differing = 0;
+  let covered = 0;
+  for (let i = 0; i < one.length; i += 4) {
+    if (!(one[i] === 0 && one[i + 2] === 255)) covered++;
+    if (one[i] !== two[i] || one[i + 1] !== two[i + 1] || one[i + 2] !== two[i + 2]) differing++;
+  }
+  return { identical: differing === 0, differing, covered };
+}
+
+const api = { compare, flipPrograms, sharedMaterial };
 declare global {
   interface Window {
     materialHarness: typeof api;
