@@ -27,6 +27,7 @@ import {
   setCameraView,
   setTrackballMapping,
   setTrackballRotation,
+  sphereErrorPx,
   sphereKey,
   type TrackballHandle,
   updateMaterialLights,
@@ -47,6 +48,8 @@ export interface FrameStats {
   bufferBytes: number;
   programs: number;
   detail: Detail | null;
+  /** The drawn sphere's largest radial error on screen, px (exact); null when unknown. */
+  errorPx: number | null;
 }
 
 /** Errors by state section (`camera`, `sphere`, `lights`, …); a section with an error keeps its last good value. */
@@ -342,6 +345,15 @@ export class Viewer {
     }
   }
 
+  private errorPx(): number | null {
+    if (!this.sphere || !this.state) return null;
+    try {
+      return sphereErrorPx(this.sphere.base, this.sphere.level, this.radiusPx(this.state));
+    } catch {
+      return null;
+    }
+  }
+
   /** The sphere's radius on screen in pixels (largest scale axis), for automatic detail. */
   private radiusPx(state: PlaygroundState): number {
     const c = state.camera;
@@ -566,6 +578,7 @@ export class Viewer {
       bufferBytes,
       programs: info.programs?.length ?? 0,
       detail: this.lastDetail,
+      errorPx: this.errorPx(),
     };
   }
 

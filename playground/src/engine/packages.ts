@@ -5,7 +5,12 @@
 
 import { Camera, CameraMovement } from '@shadelab/camera';
 import { createOutline, PhongLight, ShadingMaterial } from '@shadelab/material';
-import { chooseSphereDetail, type SphereDetail, SubdivisionSphereGeometry } from '@shadelab/sphere';
+import {
+  chooseSphereDetail,
+  type SphereDetail,
+  SubdivisionSphereGeometry,
+  sphereError,
+} from '@shadelab/sphere';
 import { Trackball } from '@shadelab/trackball';
 import type * as THREE from 'three';
 import type {
@@ -30,6 +35,11 @@ export function sphereKey(base: SphereBase, level: number, shading: Shading): st
 }
 
 export type Detail = SphereDetail;
+
+/** The largest radial error of the sphere on screen, in pixels (exact, from @shadelab/sphere). */
+export function sphereErrorPx(base: SphereBase, level: number, radiusPx: number): number {
+  return sphereError(base, level) * radiusPx;
+}
 
 /** The cheapest sphere whose exact radial error on screen stays within `maxErrorPx` (levels 0 … 10). */
 export function chooseDetail(radiusPx: number, maxErrorPx: number): Detail {

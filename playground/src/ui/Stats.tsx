@@ -39,6 +39,12 @@ export function Stats({ feed }: { feed: StatsFeed }) {
       <dd>{bytes(stats.bufferBytes)}</dd>
       <dt>programs</dt>
       <dd data-testid="stats-programs">{stats.programs}</dd>
+      {stats.errorPx !== null && (
+        <>
+          <dt>radial error</dt>
+          <dd>{stats.errorPx.toFixed(3)} px</dd>
+        </>
+      )}
       {stats.detail && (
         <>
           <dt>auto detail</dt>
