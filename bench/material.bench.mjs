@@ -3,7 +3,7 @@
 // 4, 6 and 8 of the lecture's tetrahedron sphere. Each frame is followed by a 1×1 readPixels (SwiftShader's
 // gl.finish() does not wait); GPU time from EXT_disjoint_timer_query_webgl2.
 //
-//   node bench/material.bench.mjs [--json PATH] [--levels 4,6,8] [--frames 25] [--only NAME,...]
+//   node bench/material.bench.mjs [--json PATH] [--levels 4,6,8] [--frames 27] [--rounds 3] [--only NAME,...]
 import { execFileSync } from 'node:child_process';
 import { createReadStream, existsSync, statSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -11,7 +11,7 @@ import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
 import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
-import { writeResults } from './lib/bench.mjs';
+import { summarize, writeResults } from './lib/bench.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 /** @param {string} name @param {string} fallback */
@@ -20,7 +20,10 @@ const arg = (name, fallback) => {
   return i >= 0 ? process.argv[i + 1] : fallback;
 };
 const levels = arg('--levels', '4,6,8').split(',').map(Number);
-const frames = Number(arg('--frames', '25'));
+const frames = Number(arg('--frames', '27'));
+// Variants run round-robin in `rounds` rounds of frames/rounds frames each, so that load from other
+// processes spreads over all variants instead of hitting one; the frames of all rounds are pooled.
+const rounds = Number(arg('--rounds', '3'));
 const only = arg('--only', ''); // run only the variants whose name contains one of these (comma-separated)
 
 // 1. Build the harness pages into a folder of our own (git-ignored by the dist-e2e-* pattern).
@@ -94,33 +97,50 @@ variants.push(['three MeshLambertMaterial', { kind: 'three-lambert' }]);
 variants.push(['three MeshToonMaterial', { kind: 'three-toon' }]);
 
 /** @typedef {import('../playground/harness/material-bench').BenchResult} BenchResult */
-/** @type {{ width: number, height: number, frames: number, gpuTimer: boolean, levels: Record<number, unknown> }} */
-const results = { width: 1280, height: 720, frames, gpuTimer: hasTimer, levels: {} };
+/** @type {{ width: number, height: number, frames: number, rounds: number, gpuTimer: boolean, levels: Record<number, unknown> }} */
+const results = { width: 1280, height: 720, frames, rounds, gpuTimer: hasTimer, levels: {} };
 for (const level of levels) {
   const memory = await page.evaluate((l) => window.materialBench.memory(l), level);
-  /** @type {Record<string, BenchResult>} */
-  const rows = {};
-  for (const [name, variant] of variants) {
-    if (
-      only &&
-      !only.split(',').some((o) => name.includes(o)) &&
-      !/^phong × phong$|^three MeshPhongMaterial$|^gouraud × phong$|^flat × phong$|^phong × phong, 2 lights$/.test(
+  const selected = variants.filter(
+    ([name]) =>
+      !only ||
+      only.split(',').some((o) => name.includes(o)) ||
+      /^phong × phong$|^three MeshPhongMaterial$|^gouraud × phong$|^flat × phong$|^phong × phong, 2 lights$/.test(
         name,
-      )
-    )
-      continue;
-    rows[name] = await page.evaluate((a) => window.materialBench.run(a.variant, a.level, a.frames), {
-      variant,
-      level,
-      frames,
-    });
+      ),
+  );
+  /** @type {Record<string, { frames: number[], gpu: number[], programs: number }>} */
+  const pooled = {};
+  for (let round = 0; round < rounds; round++) {
+    for (const [name, variant] of selected) {
+      /** @type {BenchResult} */
+      const r = await page.evaluate((a) => window.materialBench.run(a.variant, a.level, a.frames, a.warmup), {
+        variant,
+        level,
+        frames: Math.ceil(frames / rounds),
+        warmup: round === 0 ? 5 : 2,
+      });
+      pooled[name] ??= { frames: [], gpu: [], programs: 0 };
+      pooled[name].frames.push(...r.frames);
+      pooled[name].gpu.push(...r.gpu);
+      pooled[name].programs = r.programs;
+    }
   }
-  const phong = rows['phong × phong'].frameMs.median;
+  /** @type {Record<string, { frameMs: ReturnType<typeof summarize>, gpuMs: ReturnType<typeof summarize> | null }>} */
+  const rows = {};
+  for (const [name, p] of Object.entries(pooled)) {
+    rows[name] = { frameMs: summarize(p.frames), gpuMs: p.gpu.length ? summarize(p.gpu) : null };
+  }
+  /** Ratios of medians, and of minima (the least disturbed frames). */
+  const ratio = (/** @type {string} */ a, /** @type {string} */ b) => ({
+    median: rows[a].frameMs.median / rows[b].frameMs.median,
+    min: rows[a].frameMs.min / rows[b].frameMs.min,
+  });
   const targets = {
-    phongVsMeshPhong: phong / rows['three MeshPhongMaterial'].frameMs.median,
-    gouraudVsPhong: rows['gouraud × phong'].frameMs.median / phong,
-    flatVsPhong: rows['flat × phong'].frameMs.median / phong,
-    twoLightsVsOne: rows['phong × phong, 2 lights'].frameMs.median / phong,
+    phongVsMeshPhong: ratio('phong × phong', 'three MeshPhongMaterial'),
+    gouraudVsPhong: ratio('gouraud × phong', 'phong × phong'),
+    flatVsPhong: ratio('flat × phong', 'phong × phong'),
+    twoLightsVsOne: ratio('phong × phong, 2 lights', 'phong × phong'),
   };
   results.levels[level] = { triangles: 4 * 4 ** level, memory, rows, targets };
   console.log(`\nlevel ${level} (${4 * 4 ** level} triangles), 1280×720, median of ${frames} frames`);
@@ -128,11 +148,13 @@ for (const level of levels) {
   console.log('| --- | ---: | ---: | ---: | ---: |');
   for (const [name, r] of Object.entries(rows)) {
     const f = r.frameMs;
-    const g = r.gpuMs === null ? 'n/a' : r.gpuMs.toFixed(2);
+    const g = r.gpuMs === null ? 'n/a' : r.gpuMs.median.toFixed(2);
     console.log(`| ${name} | ${f.median.toFixed(2)} | ${f.min.toFixed(2)} | ${f.max.toFixed(2)} | ${g} |`);
   }
+  /** @param {{ median: number, min: number }} r */
+  const show = (r) => `${r.median.toFixed(2)} (min ${r.min.toFixed(2)})`;
   console.log(
-    `targets: phong/MeshPhong ${targets.phongVsMeshPhong.toFixed(3)} (≤ 1), gouraud/phong ${targets.gouraudVsPhong.toFixed(3)}, flat/phong ${targets.flatVsPhong.toFixed(3)} (< 1), 2 lights/1 light ${targets.twoLightsVsOne.toFixed(3)} (< 2)`,
+    `targets (ratio of medians, of minima): phong/MeshPhong ${show(targets.phongVsMeshPhong)} (≤ 1), gouraud/phong ${show(targets.gouraudVsPhong)} (< 1), flat/phong ${show(targets.flatVsPhong)} (< 1), 2 lights/1 light ${show(targets.twoLightsVsOne)} (< 2)`,
   );
 }
 await browser.close();

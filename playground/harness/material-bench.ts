@@ -26,8 +26,10 @@ export interface BenchVariant {
 }
 
 export interface BenchResult {
-  frameMs: { median: number; min: number; max: number };
-  gpuMs: number | null;
+  /** Every timed frame, ms (1×1 readPixels included). */
+  frames: number[];
+  /** GPU time of every timed frame, ms; empty without EXT_disjoint_timer_query_webgl2. */
+  gpu: number[];
   programs: number;
 }
 
@@ -75,21 +77,20 @@ function material(variant: BenchVariant, scene: Scene): Material {
   return new MeshToonMaterial({ color });
 }
 
-async function gpuTimes(queries: WebGLQuery[]): Promise<number | null> {
-  if (timer === null || queries.length === 0) return null;
+async function gpuTimes(queries: WebGLQuery[]): Promise<number[]> {
+  if (timer === null || queries.length === 0) return [];
   const times: number[] = [];
   for (const q of queries) {
     for (let tries = 0; tries < 200; tries++) {
       if (gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE)) break;
       await new Promise((r) => setTimeout(r, 5));
     }
-    if (gl.getParameter(0x8fbb /* GPU_DISJOINT_EXT */)) return null;
-    if (!gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE)) return null;
+    if (gl.getParameter(0x8fbb /* GPU_DISJOINT_EXT */)) return [];
+    if (!gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE)) return [];
     times.push(gl.getQueryParameter(q, gl.QUERY_RESULT) / 1e6);
     gl.deleteQuery(q);
   }
-  times.sort((a, b) => a - b);
-  return times[times.length >> 1];
+  return times;
 }
 
 /** Render `frames` timed frames (after `warmup`), each followed by a 1×1 readPixels. */
@@ -126,13 +127,10 @@ async function run(variant: BenchVariant, level: number, frames = 25, warmup = 5
     gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     times.push(performance.now() - t0);
   }
-  const gpuMs = await gpuTimes(queries);
-  times.sort((a, b) => a - b);
-  const mid = times.length >> 1;
-  const median = times.length % 2 ? times[mid] : (times[mid - 1] + times[mid]) / 2;
+  const gpu = await gpuTimes(queries);
   const programs = renderer.info.programs?.length ?? 0;
   mat.dispose();
-  return { frameMs: { median, min: times[0], max: times[times.length - 1] }, gpuMs, programs };
+  return { frames: times, gpu, programs };
 }
 
 /** Memory of a geometry and of flat shading's face-position texture, bytes. */
