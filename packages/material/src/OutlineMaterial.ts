@@ -32,6 +32,7 @@ export interface OutlineMaterialOptions {
 export class OutlineMaterial extends ShaderMaterial {
   /** Always true. */
   readonly isOutlineMaterial = true;
+  /** three's type name: `'OutlineMaterial'`. */
   override type = 'OutlineMaterial';
   readonly #color = new Color(0, 0, 0);
 

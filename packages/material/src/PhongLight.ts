@@ -34,6 +34,7 @@ const NO_ATTENUATION: Attenuation = Object.freeze({ a: 1, b: 0, c: 0 });
 export class PhongLight extends Object3D {
   /** Always true: lets code tell a PhongLight from other objects without `instanceof`. */
   readonly isPhongLight = true;
+  /** three's type name: `'PhongLight'`. */
   override type = 'PhongLight';
 
   readonly #ambient = new Color(0.2, 0.2, 0.2);
@@ -118,6 +119,7 @@ export class PhongLight extends Object3D {
     checkColorChannels('PhongLight.specular', this.#specular);
   }
 
+  /** Copy every option of `source` (lights are shared, not cloned). @returns `this`. */
   override copy(source: this, recursive?: boolean): this {
     super.copy(source, recursive);
     this.#ambient.copy(source.ambient);

@@ -89,6 +89,7 @@ const _eye = /* @__PURE__ */ new Vector4();
 export class ShadingMaterial extends ShaderMaterial {
   /** Always true: lets code tell a ShadingMaterial from other materials without `instanceof`. */
   readonly isShadingMaterial = true;
+  /** three's type name: `'ShadingMaterial'`. */
   override type = 'ShadingMaterial';
 
   #shading: Shading = 'phong';
@@ -354,6 +355,7 @@ export class ShadingMaterial extends ShaderMaterial {
     ambient[2] = ab;
   }
 
+  /** Copy every option of `source` (lights are shared, not cloned). @returns `this`. */
   override copy(source: ShadingMaterial): this {
     super.copy(source);
     this.#shading = source.shading;
