@@ -4,7 +4,7 @@ import { describeValue } from './describeValue.js';
 export type SphereBase = 'tetrahedron' | 'octahedron' | 'icosahedron';
 
 /** Every base solid, in the order `chooseSphereDetail` lists and tie-breaks them. */
-export const SPHERE_BASES: readonly SphereBase[] = Object.freeze([
+export const SPHERE_BASES: readonly SphereBase[] = /* @__PURE__ */ Object.freeze([
   'tetrahedron',
   'octahedron',
   'icosahedron',

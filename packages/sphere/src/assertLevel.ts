@@ -11,12 +11,11 @@ export function assertLevel(
   level: unknown,
   max = Infinity,
 ): asserts level is number {
+  const allowed = max === Infinity ? 'an integer ≥ 0' : `an integer from 0 to ${max}`;
   if (typeof level !== 'number') {
-    throw new TypeError(
-      `${caller}: ${name} must be an integer from 0 to ${max}; got ${describeValue(level)}`,
-    );
+    throw new TypeError(`${caller}: ${name} must be ${allowed}; got ${describeValue(level)}`);
   }
   if (!Number.isInteger(level) || level < 0 || level > max) {
-    throw new RangeError(`${caller}: ${name} must be an integer from 0 to ${max}; got ${level}`);
+    throw new RangeError(`${caller}: ${name} must be ${allowed}; got ${level}`);
   }
 }

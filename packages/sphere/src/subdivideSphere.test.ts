@@ -214,7 +214,7 @@ describe('subdivideSphere extremes (DESIGN table)', () => {
     'level %s is a RangeError naming it',
     (level) => {
       expect(() => subdivideSphere({ level })).toThrow(RangeError);
-      expect(() => subdivideSphere({ level })).toThrow(/level must be an integer from 0/);
+      expect(() => subdivideSphere({ level })).toThrow(/level must be an integer ≥ 0; got /);
       expect(() => subdivideSphere({ level })).toThrow(String(level));
     },
   );
