@@ -10,6 +10,7 @@ export default defineConfig({
       '@shadelab/camera': src('camera'),
       '@shadelab/trackball': src('trackball'),
       '@shadelab/material': src('material'),
+      '@shadelab/reference': src('reference'),
     },
   },
   test: {

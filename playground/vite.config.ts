@@ -8,6 +8,13 @@ const src = (name: string) => fileURLToPath(new URL(`../packages/${name}/src/ind
 
 const here = (path: string) => fileURLToPath(new URL(path, import.meta.url));
 
+// Every top-level page (index.html, tradeoff.html, …) is an entry of the app.
+const pages = Object.fromEntries(
+  readdirSync(here('.'))
+    .filter((f) => f.endsWith('.html'))
+    .map((f) => [f === 'index.html' ? 'main' : f.slice(0, -5), here(`./${f}`)]),
+);
+
 // Test harness pages (playground/harness/*.html) are built beside the app for Playwright and the benchmarks.
 const harness = Object.fromEntries(
   readdirSync(here('./harness'))
@@ -24,12 +31,13 @@ export default defineConfig({
       '@shadelab/camera': src('camera'),
       '@shadelab/trackball': src('trackball'),
       '@shadelab/material': src('material'),
+      '@shadelab/reference': src('reference'),
     },
     dedupe: ['three', 'react', 'react-dom'],
   },
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 2000,
-    rollupOptions: { input: { main: here('./index.html'), ...harness } },
+    rollupOptions: { input: { ...pages, ...harness } },
   },
 });
