@@ -1,5 +1,5 @@
 import { resolveSphereOptions, type SphereParameters, type SubdivideSphereOptions } from './SphereOptions.js';
-import { sphereCounts } from './sphereCounts.js';
+import { BASE_FACES } from './sphereCounts.js';
 
 /**
  * Bytes `subdivideSphere` allocates for these options: the output arrays plus its scratch (an edge table and
@@ -10,7 +10,8 @@ import { sphereCounts } from './sphereCounts.js';
  * scratch 7.5), smooth normals +6; non-indexed adds 36 for positions and 36 for normals.
  *
  * @param options - Same options as `subdivideSphere` (defaults applied, validated; `maxBytes` is ignored).
- * @returns Bytes, possibly `Infinity` for absurd levels.
+ * @returns Bytes; `Infinity` for absurd levels (past about 509), whose counts overflow a double: more than any
+ * limit, so they are refused by size.
  */
 export function estimateSphereBytes(options: SubdivideSphereOptions = {}): number {
   return bytesFor(resolveSphereOptions('estimateSphereBytes', options));
@@ -18,7 +19,9 @@ export function estimateSphereBytes(options: SubdivideSphereOptions = {}): numbe
 
 /** {@link estimateSphereBytes} for resolved options. @internal */
 export function bytesFor({ base, level, normals, indexed }: SphereParameters): number {
-  const { triangles: T, vertices: V } = sphereCounts(base, level);
+  // Counts as in sphereCounts, but Infinity (not an error) past 2^1024: an absurd level is then refused by size.
+  const T = BASE_FACES[base] * 4 ** level;
+  const V = 2 + T / 2;
   let bytes = 12 * V; // positions of the shared vertices
   bytes += V <= 65536 ? 6 * T : 12 * T; // indices
   if (level >= 1) bytes += 6 * T; // edge table + triangle edge ids of level L − 1

@@ -11,19 +11,35 @@ export interface SphereCounts {
   readonly edges: number;
 }
 
-/** Faces of each base solid. */
-const BASE_FACES: Readonly<Record<SphereBase, number>> = { tetrahedron: 4, octahedron: 8, icosahedron: 20 };
+/** Faces of each base solid. @internal */
+export const BASE_FACES: Readonly<Record<SphereBase, number>> = {
+  tetrahedron: 4,
+  octahedron: 8,
+  icosahedron: 20,
+};
 
 /**
  * Exact element counts of the sphere `subdivideSphere({ base, level })` builds, without building it.
  *
  * @param base - Base solid.
- * @param level - Subdivision level, an integer ≥ 0 (counts past 2^53 lose precision, as numbers do).
- * @throws RangeError / TypeError for an unknown base or a level that is not an integer ≥ 0.
+ * @param level - Subdivision level, an integer ≥ 0 (counts past 2^53 lose precision, as numbers do) whose
+ * triangle count is a finite number: up to 509 (icosahedron) or 510 (tetrahedron, octahedron).
+ * @throws RangeError / TypeError for an unknown base or a level that is not an integer ≥ 0, and RangeError for a
+ * level whose counts would be infinite.
  */
 export function sphereCounts(base: SphereBase, level: number): SphereCounts {
   assertSphereBase('sphereCounts', 'base', base);
   assertLevel('sphereCounts', 'level', level);
   const triangles = BASE_FACES[base] * 4 ** level;
+  if (triangles === Number.POSITIVE_INFINITY) {
+    throw new RangeError(
+      `sphereCounts: level must be an integer ≥ 0 whose counts are finite (at most 509 or 510); got ${level}`,
+    );
+  }
+  if (triangles === Number.POSITIVE_INFINITY) {
+    throw new RangeError(
+      `sphereCounts: level must be an integer from 0 to ${level > 0 ? 509 + Number(base !== 'icosahedron') : 0} (finite counts) for the ${base}; got ${level}`,
+    );
+  }
   return { triangles, vertices: 2 + triangles / 2, edges: (3 * triangles) / 2 };
 }

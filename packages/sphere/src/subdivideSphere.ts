@@ -42,12 +42,23 @@ export interface SphereMesh {
 export function subdivideSphere(options: SubdivideSphereOptions = {}): SphereMesh {
   const params = resolveSphereOptions('subdivideSphere', options);
   const bytes = bytesFor(params);
-  if (bytes > params.maxBytes) {
+  // Infinity bytes is refused even with maxBytes: Infinity (its arrays cannot exist).
+  if (!(bytes <= params.maxBytes && bytes < Number.POSITIVE_INFINITY)) {
     throw new RangeError(
       `subdivideSphere: level ${params.level} of the ${params.base} (${params.indexed ? 'indexed' : 'non-indexed'}, normals '${params.normals}') needs about ${formatBytes(bytes)}, above maxBytes = ${formatBytes(params.maxBytes)}; lower the level or raise maxBytes`,
     );
   }
-  const { positions, indices } = buildIndexed(params.base, params.level, params.radius);
+  let built: { positions: Float32Array; indices: IndexArray };
+  try {
+    built = buildIndexed(params.base, params.level, params.radius);
+  } catch (cause) {
+    // Only reachable with a raised maxBytes: the engine refused an array (too long, or out of memory).
+    throw new RangeError(
+      `subdivideSphere: level ${params.level} of the ${params.base} needs about ${formatBytes(bytes)}, which could not be allocated (maxBytes = ${params.maxBytes}); lower the level`,
+      { cause },
+    );
+  }
+  const { positions, indices } = built;
   if (params.indexed) {
     return params.normals === 'smooth'
       ? { positions, normals: smoothNormals(positions), indices }
