@@ -59,30 +59,45 @@ export async function pixel(page: Page, fx: number, fy: number): Promise<number[
   );
 }
 
-/** Types a value into a leva input (by its path id, e.g. `Material.shininess` or `Camera.eye.z`). */
-export async function typeInto(page: Page, id: string, value: string): Promise<void> {
-  const input = page.locator(`[id="${id}"]`);
-  await input.fill(value);
-  await input.press('Enter');
+/**
+ * Runs an action that should draw (every accepted change renders at once): waits for a new frame, then for
+ * the page to rest. `draws: false` for an action that must not render (a refused value).
+ */
+async function drawn(page: Page, action: () => Promise<void>, draws = true): Promise<void> {
+  const before = await frames(page);
+  await action();
+  if (draws) await expect.poll(() => frames(page), { timeout: 15_000 }).toBeGreaterThan(before);
   await settle(page);
+}
+
+/** Types a value into a leva input (by its path id, e.g. `Material.shininess` or `Camera.eye.z`). */
+export async function typeInto(page: Page, id: string, value: string, { draws = true } = {}): Promise<void> {
+  const input = page.locator(`[id="${id}"]`);
+  await drawn(
+    page,
+    async () => {
+      await input.fill(value);
+      await input.press('Enter');
+    },
+    draws,
+  );
 }
 
 /** Picks an option of a leva select (by its path id) by its label. */
 export async function choose(page: Page, id: string, label: string): Promise<void> {
-  await page.locator(`[id="${id}"]`).selectOption({ label });
-  await settle(page);
+  await drawn(page, async () => {
+    await page.locator(`[id="${id}"]`).selectOption({ label });
+  });
 }
 
 /** Toggles a leva checkbox (by its path id). */
 export async function toggle(page: Page, id: string): Promise<void> {
-  await page.locator(`label[for="${id}"]`).last().click();
-  await settle(page);
+  await drawn(page, () => page.locator(`label[for="${id}"]`).last().click());
 }
 
 /** Clicks a leva button by its text. */
 export async function press(page: Page, text: string): Promise<void> {
-  await page.getByRole('button', { name: text, exact: true }).click();
-  await settle(page);
+  await drawn(page, () => page.getByRole('button', { name: text, exact: true }).click());
 }
 
 /** The state the page last wrote to its URL. */
@@ -103,7 +118,7 @@ export async function drag(
   const at = ([fx, fy]: [number, number]) => [box.x + box.width * fx, box.y + box.height * fy] as const;
   await page.mouse.move(...at(from));
   await page.mouse.down();
-  await page.mouse.move(...at(to), { steps });
+  await drawn(page, () => page.mouse.move(...at(to), { steps }));
   await page.mouse.up();
   await settle(page);
 }

@@ -25,6 +25,7 @@ import {
   setCameraOrthographic,
   setCameraPerspective,
   setCameraView,
+  setOutlineWidth,
   setTrackballMapping,
   setTrackballRotation,
   sphereErrorPx,
@@ -109,7 +110,7 @@ export class Viewer {
   private gizmoLight: number | null = null;
 
   private readonly compareMaterials: Material[];
-  private readonly outline: THREE.Mesh;
+  private readonly outline: ReturnType<typeof createOutlineMesh>;
   private lights: Light[] = [];
   private markers: THREE.Mesh[] = [];
   private readonly markerGeometry = new THREE.SphereGeometry(0.08, 12, 8);
@@ -267,6 +268,7 @@ export class Viewer {
             this.lights,
           );
         });
+        setOutlineWidth(this.outline, state.material.outlineWidth);
         this.captureGenerated();
       });
     }

@@ -4,7 +4,7 @@
  */
 
 import { Camera, CameraMovement } from '@shadelab/camera';
-import { createOutline, PhongLight, ShadingMaterial } from '@shadelab/material';
+import { createOutline, type OutlineMaterial, PhongLight, ShadingMaterial } from '@shadelab/material';
 import {
   chooseSphereDetail,
   type SphereDetail,
@@ -190,6 +190,14 @@ export const OUTLINE_THICKNESS = 0.03;
  * The material package's inverted-hull outline for cel shading, as a child of `mesh` sharing its geometry;
  * drawn light so that it shows on the lecture's black background.
  */
-export function createOutlineMesh(mesh: THREE.Mesh): THREE.Mesh {
+export function createOutlineMesh(mesh: THREE.Mesh): THREE.Mesh<THREE.BufferGeometry, OutlineMaterial> {
   return createOutline(mesh, { thickness: OUTLINE_THICKNESS, color: 0xf2f2f2 });
+}
+
+/** Sets the outline's thickness (model units; the material refuses negative or non-finite values). */
+export function setOutlineWidth(
+  outline: THREE.Mesh<THREE.BufferGeometry, OutlineMaterial>,
+  width: number,
+): void {
+  outline.material.thickness = width;
 }

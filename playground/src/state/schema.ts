@@ -43,6 +43,8 @@ export interface PlaygroundState {
     /** 0 = off, N ≥ 2 discrete diffuse shades. */
     celBands: number;
     outline: boolean;
+    /** Outline thickness along the normal, model units. */
+    outlineWidth: number;
     ka: Rgb;
     kd: Rgb;
     ks: Rgb;
@@ -105,6 +107,7 @@ export function defaultState(): PlaygroundState {
       lighting: 'phong',
       celBands: 0,
       outline: false,
+      outlineWidth: 0.03,
       ka: [0.8, 0.35, 0.15],
       kd: [0.8, 0.35, 0.15],
       ks: [1, 1, 1],
@@ -259,6 +262,7 @@ const stateParser = object<PlaygroundState>({
     lighting: oneOf('phong', 'blinn-phong'),
     celBands,
     outline: bool,
+    outlineWidth: num(0, 1),
     ka: rgb,
     kd: rgb,
     ks: rgb,

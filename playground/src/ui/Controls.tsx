@@ -71,6 +71,13 @@ export function SceneControls({
           d.material.outline = v;
         },
       },
+      outlineWidth: {
+        input: { label: 'outline width', step: 0.005 },
+        read: (s) => s.material.outlineWidth,
+        write: (d, v: number) => {
+          d.material.outlineWidth = v;
+        },
+      },
       ka: {
         input: rgb('ka'),
         read: (s) => s.material.ka,
