@@ -4,7 +4,16 @@
 // The app sources are tools/pack-apps/<app>/ (kept out of the repo's own type check: the r3f app needs
 // @react-three/fiber, which only the temporary app installs). SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
-import { cpSync, createReadStream, existsSync, mkdtempSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import {
+  cpSync,
+  createReadStream,
+  existsSync,
+  mkdtempSync,
+  readFileSync,
+  rmSync,
+  statSync,
+  writeFileSync,
+} from 'node:fs';
 import { createServer, type Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { tmpdir } from 'node:os';
@@ -23,16 +32,30 @@ const common = {
   // What most users have: our declarations must work with TypeScript 5, not only with the repo's TypeScript 7.
   typescript: '~5.9.3',
 };
+/** The oldest three and @types/three we support, as pinned for scripts/three-compat.mjs. */
+const oldest = (
+  JSON.parse(readFileSync(join(repo, 'tools', 'three-compat', 'package.json'), 'utf8')) as {
+    dependencies: { three: string; '@types/three': string };
+  }
+).dependencies;
+/** Each app: its source folder in tools/pack-apps and the dependencies it adds or overrides. */
 const apps = {
-  vanilla: {},
-  r3f: {
-    react: '^19.3.1',
-    'react-dom': '^19.3.1',
-    '@types/react': '^19.3.0',
-    '@types/react-dom': '^19.3.0',
-    '@react-three/fiber': '^9.4.0',
+  vanilla: { template: 'vanilla', dependencies: {} },
+  oldest: {
+    template: 'vanilla',
+    dependencies: { three: oldest.three, '@types/three': oldest['@types/three'] },
   },
-} satisfies Record<string, Record<string, string>>;
+  r3f: {
+    template: 'r3f',
+    dependencies: {
+      react: '^19.3.1',
+      'react-dom': '^19.3.1',
+      '@types/react': '^19.3.0',
+      '@types/react-dom': '^19.3.0',
+      '@react-three/fiber': '^9.4.0',
+    },
+  },
+} satisfies Record<string, { template: string; dependencies: Record<string, string> }>;
 type App = keyof typeof apps;
 
 let tmp = '';
@@ -70,13 +93,13 @@ async function timed<T>(label: string, work: () => Promise<T>): Promise<T> {
 /** Make the app folder, install it, type-check it and build it. */
 async function makeApp(app: App): Promise<void> {
   const dir = join(tmp, app);
-  cpSync(join(repo, 'tools', 'pack-apps', app), dir, { recursive: true });
+  cpSync(join(repo, 'tools', 'pack-apps', apps[app].template), dir, { recursive: true });
   const tarballs = Object.fromEntries(packed.map((p) => [p.name, `file:${p.tarball}`]));
   const pkg = {
     name: `shadelab-pack-${app}`,
     private: true,
     type: 'module',
-    dependencies: { ...common, ...apps[app], ...tarballs },
+    dependencies: { ...common, ...apps[app].dependencies, ...tarballs },
   };
   writeFileSync(join(dir, 'package.json'), `${JSON.stringify(pkg, null, 2)}\n`);
   await timed(`${app}: npm install`, () =>
@@ -253,6 +276,55 @@ test("a fresh three.js app renders the lecture's scene from the tarballs and the
   page,
 }) => {
   await checkLectureScene(page, 'vanilla');
+});
+
+test(`the same app on the oldest supported three (${oldest.three}, @types/three ${oldest['@types/three']})`, async ({
+  page,
+}) => {
+  await checkLectureScene(page, 'oldest');
+});
+
+test('the packages import and work in Node (server-side code, tests): no DOM touched at import', async () => {
+  const script = `
+    import { Camera } from '@shadelab/camera';
+    import { PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+    import { sphereCounts, subdivideSphere, SubdivisionSphereGeometry } from '@shadelab/sphere';
+    import { Trackball } from '@shadelab/trackball';
+    const mesh = subdivideSphere({ level: 2 });
+    const geometry = new SubdivisionSphereGeometry({ level: 2 });
+    const camera = new Camera();
+    camera.lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+    camera.setPerspective(90, 1, 0.1, 10);
+    const light = new PhongLight();
+    const material = new ShadingMaterial({ lights: [light] });
+    const trackball = new Trackball(null, null, { camera });
+    const lit = shade(
+      { position: [0, 0, 1], normal: [0, 0, 1], eye: [0, 0, 3, 1] },
+      { ka: [0, 0, 0], kd: [1, 1, 1], ks: [0, 0, 0], shininess: 1, lighting: 'phong', celBands: 0 },
+      [{ position: [0, 0, 10], ambient: [0, 0, 0], diffuse: [1, 1, 1], specular: [0, 0, 0], attenuation: { a: 1, b: 0, c: 0 } }],
+    );
+    console.log(JSON.stringify({
+      triangles: (mesh.indices ? mesh.indices.length : mesh.positions.length / 3) / 3,
+      expected: sphereCounts('tetrahedron', 2).triangles,
+      geometryTriangles: (geometry.index ? geometry.index.count : geometry.attributes.position.count) / 3,
+      w: camera.getFrame().w.toArray(),
+      shading: material.shading,
+      matrix: trackball.getMatrix().toArray(),
+      lit: Array.from(lit),
+    }));
+  `;
+  const out = await run('node', ['--input-type=module', '-e', script], join(tmp, 'vanilla'));
+  const result = JSON.parse(out.trim().split('\n').at(-1)!);
+  expect(result.triangles).toBe(4 * 4 ** 2);
+  expect(result.expected).toBe(64);
+  expect(result.geometryTriangles).toBe(64);
+  expect(result.w[0]).toBeCloseTo(0, 12);
+  expect(result.w[1]).toBeCloseTo(0, 12);
+  expect(result.w[2]).toBeCloseTo(1, 12);
+  expect(result.shading).toBe('phong');
+  expect(result.matrix).toEqual([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
+  // Head-on light, kd = 1, unattenuated: l·n = 1.
+  for (const c of result.lit) expect(c).toBeCloseTo(1, 12);
 });
 
 test("a fresh react-three-fiber app renders the lecture's scene from the tarballs and the trackball turns it", async ({
