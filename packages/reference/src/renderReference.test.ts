@@ -1,0 +1,446 @@
+import { linearToSrgb8, type ShadeLight, type ShadeMaterial } from '@shadelab/material';
+import { compareToReference, intersectSphere, renderReference } from '@shadelab/reference';
+import fc from 'fast-check';
+import { Matrix4, OrthographicCamera, PerspectiveCamera, Ray, Sphere, Vector3 } from 'three';
+import { describe, expect, it } from 'vitest';
+
+const white: [number, number, number] = [1, 1, 1];
+const black: [number, number, number] = [0, 0, 0];
+
+function ortho(size = 1.25): OrthographicCamera {
+  const camera = new OrthographicCamera(-size, size, size, -size, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+function lecture(
+  width: number,
+  height: number,
+): {
+  camera: PerspectiveCamera;
+  model: Matrix4;
+  material: ShadeMaterial;
+  lights: ShadeLight[];
+} {
+  const camera = new PerspectiveCamera(90, width / height, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  camera.updateMatrixWorld();
+  return {
+    camera,
+    model: new Matrix4().makeScale(2, 1, 2),
+    material: { ka: [0.6, 0.35, 0.2], kd: [0.6, 0.35, 0.2], ks: [0.5, 0.5, 0.5], shininess: 32 },
+    lights: [{ position: [-5, 10, 20], ambient: [0.2, 0.2, 0.2], diffuse: white, specular: [0.8, 0.8, 0.8] }],
+  };
+}
+
+/** The analytic normal of the unit sphere seen by the orthographic camera `ortho(size)` at pixel (i, j). */
+function orthoNormal(i: number, j: number, n: number, size: number): [number, number, number] | null {
+  const x = (((i + 0.5) / n) * 2 - 1) * size;
+  const y = (((j + 0.5) / n) * 2 - 1) * size;
+  const z2 = 1 - x * x - y * y;
+  return z2 >= -1e-9 ? [x, y, Math.sqrt(Math.max(z2, 0))] : null; // the rim itself counts as on
+}
+
+describe('renderReference against closed forms', () => {
+  const N = 65;
+  const size = 1.25;
+  const camera = ortho(size);
+  const base = {
+    width: N,
+    height: N,
+    projectionMatrix: camera.projectionMatrix.elements,
+    viewMatrix: camera.matrixWorldInverse.elements,
+  };
+
+  it('centre pixel: head-on light gives ka·Ia + kd·Id + ks·Is exactly', () => {
+    const material: ShadeMaterial = {
+      ka: [0.1, 0.2, 0.3],
+      kd: [0.3, 0.2, 0.1],
+      ks: [0.25, 0.5, 0.125],
+      shininess: 7,
+    };
+    const lights: ShadeLight[] = [
+      { position: [0, 0, 50], ambient: [0.5, 0.5, 0.5], diffuse: [1, 0.5, 0.25], specular: [0.5, 1, 2] },
+    ];
+    const image = renderReference({ ...base, material, lights });
+    const k = ((N - 1) / 2) * N + (N - 1) / 2;
+    expect(image.hit[k]).toBe(1);
+    const expected = [
+      0.1 * 0.5 + 0.3 * 1 + 0.25 * 0.5,
+      0.2 * 0.5 + 0.2 * 0.5 + 0.5,
+      0.3 * 0.5 + 0.1 * 0.25 + 0.125 * 2,
+    ];
+    for (let c = 0; c < 3; c++) expect(image.linear[3 * k + c]).toBeCloseTo(expected[c], 6);
+    // The hit is at z = 1: window depth of (0, 0, 1) through the camera.
+    const ndc = new Vector3(0, 0, 1).project(camera);
+    expect(image.depth[k]).toBeCloseTo(ndc.z * 0.5 + 0.5, 6);
+  });
+
+  it('terminator: a light along +x lights exactly the pixels with n·l > 0 (diffuse = max(n·l, 0))', () => {
+    const material: ShadeMaterial = { ka: black, kd: white, ks: black, shininess: 1 };
+    const L = 1e7;
+    const lights: ShadeLight[] = [{ position: [L, 0, 0], ambient: black, diffuse: white, specular: black }];
+    const image = renderReference({ ...base, material, lights });
+    let lit = 0;
+    for (let j = 0; j < N; j++) {
+      for (let i = 0; i < N; i++) {
+        const n = orthoNormal(i, j, N, size);
+        const k = j * N + i;
+        if (n === null || n[2] < 1e-4) {
+          // On or outside the rim: the hit must agree except within rounding of the rim itself.
+          if (n === null) expect(image.hit[k], `pixel ${i}, ${j}`).toBe(0);
+          continue;
+        }
+        expect(image.hit[k]).toBe(1);
+        // l = normalize((L, 0, 0) − n)
+        const lx = L - n[0];
+        const ll = Math.hypot(lx, n[1], n[2]);
+        const expected = Math.max((n[0] * lx - n[1] * n[1] - n[2] * n[2]) / ll, 0);
+        expect(image.linear[3 * k]).toBeCloseTo(expected, 6);
+        if (image.linear[3 * k] > 0) {
+          lit++;
+          expect(n[0]).toBeGreaterThan(0);
+        }
+      }
+    }
+    expect(lit).toBeGreaterThan(1000);
+  });
+
+  for (const lighting of ['phong', 'blinn-phong'] as const) {
+    it(`${lighting}: specular matches its closed form everywhere and peaks at n = normalize(l + v)`, () => {
+      const material: ShadeMaterial = { ka: black, kd: black, ks: white, shininess: 20, lighting };
+      const dir = new Vector3(1, 1, 2).normalize();
+      const L = 1e8;
+      const lights: ShadeLight[] = [
+        { position: [dir.x * L, dir.y * L, dir.z * L], ambient: black, diffuse: black, specular: white },
+      ];
+      const image = renderReference({ ...base, material, lights });
+      const v = new Vector3(0, 0, 1);
+      let best = -1;
+      let bestK = -1;
+      for (let j = 0; j < N; j++) {
+        for (let i = 0; i < N; i++) {
+          const nn = orthoNormal(i, j, N, size);
+          if (nn === null) continue;
+          const n = new Vector3(...nn);
+          const k = j * N + i;
+          const ndl = n.dot(dir);
+          let x: number;
+          if (lighting === 'phong') {
+            const r = n
+              .clone()
+              .multiplyScalar(2 * ndl)
+              .sub(dir);
+            x = Math.max(v.dot(r), 0);
+          } else {
+            x = Math.max(n.dot(dir.clone().add(v).normalize()), 0);
+          }
+          const expected = ndl > 0 ? x ** 20 : 0;
+          expect(image.linear[3 * k]).toBeCloseTo(expected, 5);
+          if (image.linear[3 * k] > best) {
+            best = image.linear[3 * k];
+            bestK = k;
+          }
+        }
+      }
+      // The peak is the pixel nearest to the projection of h = normalize(l + v).
+      const h = dir.clone().add(v).normalize();
+      const pi = ((h.x / size + 1) / 2) * N - 0.5;
+      const pj = ((h.y / size + 1) / 2) * N - 0.5;
+      expect(Math.abs((bestK % N) - pi)).toBeLessThanOrEqual(0.5);
+      expect(Math.abs(Math.floor(bestK / N) - pj)).toBeLessThanOrEqual(0.5);
+    });
+  }
+
+  it('phong and blinn-phong differ off the peak as (v·r)^α vs (n·h)^α', () => {
+    const dir = [0.6, 0, 0.8];
+    const lights: ShadeLight[] = [
+      { position: [dir[0] * 1e8, 0, dir[2] * 1e8], ambient: black, diffuse: black, specular: white },
+    ];
+    const a = renderReference({
+      ...base,
+      material: { ka: black, kd: black, ks: white, shininess: 4 },
+      lights,
+    });
+    const b = renderReference({
+      ...base,
+      material: { ka: black, kd: black, ks: white, shininess: 4, lighting: 'blinn-phong' },
+      lights,
+    });
+    const k = ((N - 1) / 2) * N + (N - 1) / 2; // n = v = (0, 0, 1)
+    // v·r = 2(l·n)(v·n) − v·l = 2·0.8·1 − 0.8 = 0.8; n·h with h = normalize(l + v) = (0.6, 0, 1.8)/|…|
+    expect(a.linear[3 * k]).toBeCloseTo(0.8 ** 4, 6);
+    expect(b.linear[3 * k]).toBeCloseTo((1.8 / Math.hypot(0.6, 1.8)) ** 4, 6);
+  });
+});
+
+describe('renderReference: the lecture scene (ellipsoid 2, 1, 2 under a 90° perspective)', () => {
+  const W = 161;
+  const H = 121;
+  const { camera, model, material, lights } = lecture(W, H);
+  const image = renderReference({
+    width: W,
+    height: H,
+    projectionMatrix: camera.projectionMatrix.elements,
+    viewMatrix: camera.matrixWorldInverse.elements,
+    modelMatrix: model.elements,
+    material,
+    lights,
+  });
+
+  it('silhouette crosses the centre row at NDC x = ±tan(asin(2/3)) and the centre column at y = ±1/√5', () => {
+    const xEdge = 2 / Math.sqrt(5) / (W / H); // tan θ / (aspect · tan 45°)
+    const yEdge = 1 / Math.sqrt(5);
+    const jc = (H - 1) / 2;
+    const ic = (W - 1) / 2;
+    for (let i = 0; i < W; i++) {
+      const ndc = ((i + 0.5) / W) * 2 - 1;
+      const expectedPx = (Math.abs(ndc) - xEdge) * (W / 2); // signed distance along the row, px
+      const d = image.edgeDistance[jc * W + i];
+      if (Math.abs(expectedPx) < 1) expect(d).toBeCloseTo(expectedPx, 1);
+      expect(image.hit[jc * W + i]).toBe(expectedPx < 0 ? 1 : 0);
+    }
+    for (let j = 0; j < H; j++) {
+      const ndc = ((j + 0.5) / H) * 2 - 1;
+      const expectedPx = (Math.abs(ndc) - yEdge) * (H / 2);
+      const d = image.edgeDistance[j * W + ic];
+      if (Math.abs(expectedPx) < 1) expect(d).toBeCloseTo(expectedPx, 1);
+      expect(image.hit[j * W + ic]).toBe(expectedPx < 0 ? 1 : 0);
+    }
+  });
+
+  it('centre pixel: hit at (0, 0, 2), normal +z, depth as three projects it', () => {
+    const k = ((H - 1) / 2) * W + (W - 1) / 2;
+    const ndc = new Vector3(0, 0, 2).project(camera);
+    expect(image.depth[k]).toBeCloseTo(ndc.z * 0.5 + 0.5, 6);
+  });
+
+  it('coverage is 1 inside, 0 outside, fractional only within 1 px of the silhouette', () => {
+    for (let k = 0; k < W * H; k++) {
+      const d = image.edgeDistance[k];
+      if (d < -1) expect(image.coverage[k]).toBe(1);
+      else if (d > 1) expect(image.coverage[k]).toBe(0);
+      else expect(image.coverage[k]).toBeGreaterThanOrEqual(0);
+    }
+  });
+
+  it('a mirrored model (negative determinant) renders the same sphere with outward normals', () => {
+    const mirrored = renderReference({
+      width: W,
+      height: H,
+      projectionMatrix: camera.projectionMatrix.elements,
+      viewMatrix: camera.matrixWorldInverse.elements,
+      modelMatrix: new Matrix4().makeScale(-2, 1, 2).elements,
+      material,
+      lights,
+    });
+    let maxDiff = 0;
+    for (let k = 0; k < W * H * 3; k++)
+      maxDiff = Math.max(maxDiff, Math.abs(mirrored.linear[k] - image.linear[k]));
+    expect(maxDiff).toBeLessThan(1e-9);
+  });
+});
+
+describe('renderReference against three (property)', () => {
+  it('hit points and depths match three.Ray.intersectSphere for random cameras and spheres', () => {
+    fc.assert(
+      fc.property(
+        fc.tuple(fc.double({ min: -3, max: 3, noNaN: true }), fc.double({ min: -3, max: 3, noNaN: true })),
+        fc.double({ min: 0.2, max: 2, noNaN: true }),
+        fc.double({ min: 30, max: 120, noNaN: true }),
+        fc.tuple(fc.double({ min: -1, max: 1, noNaN: true }), fc.double({ min: -1, max: 1, noNaN: true })),
+        ([cx, cy], scale, fov, [ex, ey]) => {
+          const camera = new PerspectiveCamera(fov, 1.5, 0.1, 100);
+          camera.position.set(ex, ey, 8);
+          camera.lookAt(0, 0, 0);
+          camera.updateMatrixWorld();
+          const model = new Matrix4().makeScale(scale, scale, scale).setPosition(cx, cy, 0);
+          const W = 24;
+          const H = 16;
+          const image = renderReference({
+            width: W,
+            height: H,
+            projectionMatrix: camera.projectionMatrix.elements,
+            viewMatrix: camera.matrixWorldInverse.elements,
+            modelMatrix: model.elements,
+            material: { ka: white, kd: black, ks: black, shininess: 1 },
+            lights: [{ position: [0, 0, 10], ambient: white, diffuse: black, specular: black }],
+            samples: 1,
+          });
+          const sphere = new Sphere(new Vector3(cx, cy, 0), scale);
+          const ray = new Ray();
+          const p = new Vector3();
+          for (let j = 0; j < H; j++) {
+            for (let i = 0; i < W; i++) {
+              const k = j * W + i;
+              const a = new Vector3(((i + 0.5) / W) * 2 - 1, ((j + 0.5) / H) * 2 - 1, -1).unproject(camera);
+              const b = new Vector3(((i + 0.5) / W) * 2 - 1, ((j + 0.5) / H) * 2 - 1, 1).unproject(camera);
+              ray.set(a, b.sub(a).normalize());
+              const hit = ray.intersectSphere(sphere, p);
+              // Skip rays grazing the silhouette, where the two may round differently.
+              if (Math.abs(image.edgeDistance[k]) < 1e-3) continue;
+              expect(image.hit[k]).toBe(hit ? 1 : 0);
+              if (hit) {
+                const ndc = p.project(camera);
+                expect(image.depth[k]).toBeCloseTo(ndc.z * 0.5 + 0.5, 6);
+              }
+            }
+          }
+        },
+      ),
+      { numRuns: 25 },
+    );
+  });
+});
+
+describe('renderReference extremes', () => {
+  const camera = ortho();
+  const ok = {
+    width: 4,
+    height: 4,
+    projectionMatrix: camera.projectionMatrix.elements,
+    viewMatrix: camera.matrixWorldInverse.elements,
+    material: { ka: white, kd: white, ks: white, shininess: 1 },
+    lights: [],
+  };
+  it.each([
+    ['width', { width: 0 }, RangeError],
+    ['width', { width: 2.5 }, RangeError],
+    ['height', { height: Number.NaN }, RangeError],
+    ['height', { height: '4' }, TypeError],
+    ['samples', { samples: 0 }, RangeError],
+    ['samples', { samples: 17 }, RangeError],
+    ['radius', { radius: 0 }, RangeError],
+    ['radius', { radius: Number.POSITIVE_INFINITY }, RangeError],
+    ['modelMatrix', { modelMatrix: [1, 2, 3] }, TypeError],
+    [
+      'modelMatrix\\[0\\]',
+      { modelMatrix: [Number.NaN, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1] },
+      RangeError,
+    ],
+    ['invertible', { modelMatrix: new Matrix4().makeScale(0, 1, 1).elements }, RangeError],
+  ])('%s is refused', (name, bad, E) => {
+    expect(() => renderReference({ ...ok, ...(bad as object) })).toThrow(E);
+    expect(() => renderReference({ ...ok, ...(bad as object) })).toThrow(new RegExp(name));
+  });
+
+  it('tiny (1e-20) and huge (1e20) radii stay finite', () => {
+    for (const s of [1e-20, 1e20]) {
+      const cam = new OrthographicCamera(-2 * s, 2 * s, 2 * s, -2 * s, 0.1 * s, 10 * s);
+      cam.position.set(0, 0, 3 * s);
+      cam.updateMatrixWorld();
+      const image = renderReference({
+        ...ok,
+        width: 9,
+        height: 9,
+        projectionMatrix: cam.projectionMatrix.elements,
+        viewMatrix: cam.matrixWorldInverse.elements,
+        radius: s,
+        lights: [{ position: [0, 0, 10 * s], ambient: white, diffuse: white, specular: white }],
+      });
+      expect(image.hit[4 * 9 + 4]).toBe(1);
+      expect(image.linear.every(Number.isFinite)).toBe(true);
+    }
+  });
+});
+
+describe('intersectSphere (Ray Tracing Gems ch. 7)', () => {
+  it('hits lie on the sphere, for random rays', () => {
+    fc.assert(
+      fc.property(
+        fc.tuple(...[0, 1, 2].map(() => fc.double({ min: -50, max: 50, noNaN: true }))),
+        fc.tuple(...[0, 1, 2].map(() => fc.double({ min: -1, max: 1, noNaN: true }))),
+        fc.double({ min: 0.01, max: 10, noNaN: true }),
+        (o, d, r) => {
+          const len = Math.hypot(...d);
+          fc.pre(len > 1e-3);
+          const hit = intersectSphere(o, d, [0, 0, 0], r);
+          const ray = new Ray(new Vector3(...o), new Vector3(...d).normalize());
+          const three = ray.intersectSphere(new Sphere(new Vector3(), r), new Vector3());
+          if (hit === null) {
+            expect(three).toBeNull();
+            return;
+          }
+          for (const t of [hit.t0, hit.t1]) {
+            const p = [0, 1, 2].map((i) => o[i] + (t * d[i]) / len);
+            expect(Math.hypot(...p) / r).toBeCloseTo(1, 6);
+          }
+          expect(hit.t0).toBeLessThanOrEqual(hit.t1);
+        },
+      ),
+    );
+  });
+
+  it('stays accurate for a small sphere far away, where the textbook discriminant cancels', () => {
+    const o = [0, 0, 1e9];
+    const d = [1e-10, 0, -1];
+    const hit = intersectSphere(o, d, [0, 0, 0], 1);
+    expect(hit).not.toBeNull();
+    const len = Math.hypot(...d);
+    const p = [0, 1, 2].map((i) => o[i] + ((hit?.t0 ?? 0) * d[i]) / len);
+    // The ray passes 0.1 from the centre: the entry point is at z = √(1 − 0.01).
+    expect(p[0]).toBeCloseTo(0.1, 5);
+    expect(p[2]).toBeCloseTo(Math.sqrt(0.99), 5);
+    // The textbook form b² − (f·f − r²) loses every digit here.
+    const b = -1e9;
+    const naive = b * b - (1e18 - 1);
+    expect(Math.abs(naive - 0.99)).toBeGreaterThan(0.5);
+  });
+
+  it('returns null for zero or non-finite directions', () => {
+    expect(intersectSphere([0, 0, 5], [0, 0, 0])).toBeNull();
+    expect(intersectSphere([0, 0, 5], [Number.NaN, 0, 0])).toBeNull();
+  });
+});
+
+describe('compareToReference', () => {
+  const camera = ortho();
+  const N = 48;
+  const reference = renderReference({
+    width: N,
+    height: N,
+    projectionMatrix: camera.projectionMatrix.elements,
+    viewMatrix: camera.matrixWorldInverse.elements,
+    material: { ka: [0.3, 0.2, 0.1], kd: [0.6, 0.35, 0.2], ks: [0.5, 0.5, 0.5], shininess: 32 },
+    lights: [{ position: [-5, 10, 20], ambient: white, diffuse: white, specular: white }],
+  });
+  /** What a perfect rasteriser of the exact shape writes: the centre colour where the centre hits. */
+  function perfect(shift = 0): Uint8Array {
+    const out = new Uint8Array(4 * N * N);
+    for (let j = 0; j < N; j++) {
+      for (let i = 0; i < N; i++) {
+        const k = j * N + i;
+        const s = j * N + Math.min(Math.max(i - shift, 0), N - 1);
+        if (reference.hit[s]) {
+          const c = linearToSrgb8([
+            reference.linear[3 * s],
+            reference.linear[3 * s + 1],
+            reference.linear[3 * s + 2],
+          ]);
+          out.set([c[0], c[1], c[2], 255], 4 * k);
+        } else out.set([0, 0, 255, 255], 4 * k);
+      }
+    }
+    return out;
+  }
+  it('scores a perfect image 0', () => {
+    const e = compareToReference(perfect(), reference);
+    expect(e.rmse).toBe(0);
+    expect(e.max).toBe(0);
+    expect(e.silhouettePx).toBe(0);
+    expect(e.mismatchedPixels).toBe(0);
+    expect(e.interiorPixels).toBeGreaterThan(500);
+  });
+  it('a one-pixel shift costs about one pixel of silhouette', () => {
+    const e = compareToReference(perfect(1), reference);
+    expect(e.silhouettePx).toBeGreaterThan(0);
+    expect(e.silhouettePx).toBeLessThan(1.01);
+    expect(e.max).toBeGreaterThan(0);
+  });
+  it('refuses a wrong size', () => {
+    expect(() => compareToReference(new Uint8Array(12), reference)).toThrow(RangeError);
+  });
+});

@@ -1,0 +1,288 @@
+import { linearToSrgb8Channel, type ShadeLight, type ShadeMaterial, shade } from '@shadelab/material';
+import { invert, type Mat4Like, multiply, normalMatrix, transform4 } from './mat4.js';
+
+/** Options of {@link renderReference}. Matrices are 16 numbers, column-major (three's `Matrix4.elements`). */
+export interface RenderReferenceOptions {
+  /** Image width in pixels, an integer in 1 … 16384. */
+  width: number;
+  /** Image height in pixels, an integer in 1 … 16384. */
+  height: number;
+  /** The camera's projection matrix (`camera.projectionMatrix.elements`): perspective or orthographic. */
+  projectionMatrix: Mat4Like;
+  /** World → camera (`camera.matrixWorldInverse.elements`). */
+  viewMatrix: Mat4Like;
+  /** Model → world of the sphere (`mesh.matrixWorld.elements`); a scale makes it an ellipsoid. @default identity */
+  modelMatrix?: Mat4Like;
+  /** Radius of the sphere in model space, finite and > 0. @default 1 */
+  radius?: number;
+  /** The material, as `shade` takes it. */
+  material: ShadeMaterial;
+  /** The lights, as `shade` takes them (world positions). */
+  lights: readonly ShadeLight[];
+  /** Background colour, linear RGB. @default [0, 0, 0] */
+  background?: ArrayLike<number>;
+  /**
+   * Silhouette supersampling: pixels within 1 px of the exact silhouette are covered by samples × samples
+   * rays on a regular grid; an integer in 1 … 16. @default 4
+   */
+  samples?: number;
+}
+
+/** The exact image of a lit sphere (ellipsoid), as {@link renderReference} computes it. */
+export interface ReferenceImage {
+  /** Width in pixels. */
+  readonly width: number;
+  /** Height in pixels. */
+  readonly height: number;
+  /**
+   * 8-bit sRGB RGBA, rows bottom-up (row 0 is the bottom row, like `gl.readPixels`), alpha 255. Interior
+   * pixels are the colour at the pixel centre; silhouette pixels the supersampled blend with the background.
+   */
+  readonly rgba: Uint8ClampedArray;
+  /** Linear RGB at the pixel centre (3 per pixel); the background where the centre ray misses. */
+  readonly linear: Float32Array;
+  /** Whether the ray through the pixel centre hits the visible (front) surface: 1 or 0. */
+  readonly hit: Uint8Array;
+  /** Fraction of the pixel covered by the sphere, from the silhouette supersampling (0 … 1). */
+  readonly coverage: Float32Array;
+  /**
+   * Signed distance from the pixel centre to the exact silhouette, in pixels (negative inside), to first
+   * order: g/|∇g| with g the distance in model space from the sphere's centre to the pixel's ray, minus the
+   * radius, and ∇g by central differences over the pixel grid. Accurate near the silhouette (where it is
+   * used); it assumes the sphere lies between the near and far planes.
+   */
+  readonly edgeDistance: Float32Array;
+  /** Window depth (0 … 1, three's default depth range) of the centre hit; NaN where the centre misses. */
+  readonly depth: Float32Array;
+}
+
+const MAX_SIZE = 16384;
+
+function checkInteger(name: string, value: unknown, min: number, max: number): number {
+  if (typeof value !== 'number')
+    throw new TypeError(`renderReference: ${name} must be a number, got ${String(value)}`);
+  if (!Number.isInteger(value) || value < min || value > max) {
+    throw new RangeError(`renderReference: ${name} must be an integer in ${min} … ${max}, got ${value}`);
+  }
+  return value;
+}
+
+function checkMatrix(name: string, m: unknown): Mat4Like {
+  const a = m as Mat4Like;
+  if (a === null || typeof a !== 'object' || typeof a.length !== 'number' || a.length < 16) {
+    throw new TypeError(`renderReference: ${name} must be 16 numbers (column-major), got ${String(m)}`);
+  }
+  for (let i = 0; i < 16; i++) {
+    if (!Number.isFinite(a[i])) {
+      throw new RangeError(`renderReference: ${name}[${i}] must be finite, got ${a[i]}`);
+    }
+  }
+  return a;
+}
+
+const IDENTITY: readonly number[] = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
+
+/**
+ * The exact answer: ray-cast the analytic sphere of `radius` (an ellipsoid under the model matrix's scale)
+ * through every pixel and light it with `shade()` at the exact hit point and normal.
+ *
+ * Each pixel's ray is the line through its centre between the near and far planes, mapped to model space by
+ * (P·V·M)⁻¹ (so perspective and orthographic cameras alike, and near/far clipping, are exact). It meets the
+ * sphere by the numerically stable intersection of Ray Tracing Gems ch. 7 (see `intersectSphere`); only the
+ * front surface counts (the entry point between the planes, like a mesh drawn with three's `FrontSide`). The
+ * world position is M·p and the world normal sign(det)·cof(M)·p (the exact normal, also for mirrored and
+ * singular M). The eye is the camera's centre of projection (a point, or a direction for orthographic).
+ *
+ * Pixels are sampled at their centres, like the GPU rasteriser; the silhouette pixels are supersampled
+ * (`samples`²) for the blended `rgba` and `coverage`. Cost: about one `shade` per pixel, plus samples² per
+ * silhouette pixel (1280×720 ≈ 1 s in Node).
+ *
+ * @throws TypeError / RangeError naming the option for a bad size, sample count, radius or matrix, and a
+ * RangeError when P·V·M is singular.
+ */
+export function renderReference(options: RenderReferenceOptions): ReferenceImage {
+  const {
+    width,
+    height,
+    projectionMatrix,
+    viewMatrix,
+    modelMatrix = IDENTITY,
+    radius = 1,
+    material,
+    lights,
+    background = [0, 0, 0],
+    samples = 4,
+  } = options;
+  checkInteger('width', width, 1, MAX_SIZE);
+  checkInteger('height', height, 1, MAX_SIZE);
+  checkInteger('samples', samples, 1, 16);
+  if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
+    throw new RangeError(`renderReference: radius must be a finite number > 0, got ${String(radius)}`);
+  }
+  const P = checkMatrix('projectionMatrix', projectionMatrix);
+  const V = checkMatrix('viewMatrix', viewMatrix);
+  const M = checkMatrix('modelMatrix', modelMatrix);
+  const pv = multiply(P, V);
+  const mvp = multiply(pv, M);
+  const inv = invert(mvp);
+  if (inv === null) {
+    throw new RangeError(
+      'renderReference: projectionMatrix · viewMatrix · modelMatrix must be invertible, got a singular matrix',
+    );
+  }
+  const nm = normalMatrix(M);
+  const eye = eyeOfProjection(pv);
+
+  const n = width * height;
+  const rgba = new Uint8ClampedArray(4 * n);
+  const linear = new Float32Array(3 * n);
+  const hit = new Uint8Array(n);
+  const coverage = new Float32Array(n);
+  const edgeDistance = new Float32Array(n);
+  const depth = new Float32Array(n).fill(Number.NaN);
+  const g = new Float64Array(n);
+
+  const near = new Float64Array(4);
+  const far = new Float64Array(4);
+  const clip = new Float64Array(4);
+  const position: [number, number, number] = [0, 0, 0];
+  const normal: [number, number, number] = [0, 0, 0];
+  const color: [number, number, number] = [0, 0, 0];
+  const sample = { position, normal, eye };
+  let px = 0;
+  let py = 0;
+  let pz = 0;
+
+  // Cast the ray through window point (x, y) (pixels, origin bottom-left). Returns whether it hits the
+  // front surface between the planes; leaves the model-space hit in px, py, pz and returns m − r in `miss`.
+  let miss = 0;
+  const cast = (x: number, y: number): boolean => {
+    const nx = (2 * x) / width - 1;
+    const ny = (2 * y) / height - 1;
+    transform4(inv, nx, ny, -1, 1, near);
+    transform4(inv, nx, ny, 1, 1, far);
+    const ox = near[0] / near[3];
+    const oy = near[1] / near[3];
+    const oz = near[2] / near[3];
+    let dx = far[0] / far[3] - ox;
+    let dy = far[1] / far[3] - oy;
+    let dz = far[2] / far[3] - oz;
+    const len = Math.hypot(dx, dy, dz);
+    dx /= len;
+    dy /= len;
+    dz /= len;
+    // Ray Tracing Gems ch. 7 (centre at the origin).
+    const b = ox * dx + oy * dy + oz * dz;
+    const qx = ox - b * dx;
+    const qy = oy - b * dy;
+    const qz = oz - b * dz;
+    const m = Math.hypot(qx, qy, qz);
+    miss = m - radius;
+    const delta = radius * radius - m * m;
+    if (!(delta >= 0)) return false;
+    const c = ox * ox + oy * oy + oz * oz - radius * radius;
+    const q = -b - (b >= 0 ? 1 : -1) * Math.sqrt(delta);
+    const t0 = q === 0 ? 0 : Math.min(c / q, q);
+    if (!(t0 >= 0 && t0 <= len)) return false;
+    px = ox + t0 * dx;
+    py = oy + t0 * dy;
+    pz = oz + t0 * dz;
+    return true;
+  };
+  // Shade the last hit into `color` (linear).
+  const shadeHit = (): void => {
+    position[0] = M[0] * px + M[4] * py + M[8] * pz + M[12];
+    position[1] = M[1] * px + M[5] * py + M[9] * pz + M[13];
+    position[2] = M[2] * px + M[6] * py + M[10] * pz + M[14];
+    normal[0] = nm[0] * px + nm[3] * py + nm[6] * pz;
+    normal[1] = nm[1] * px + nm[4] * py + nm[7] * pz;
+    normal[2] = nm[2] * px + nm[5] * py + nm[8] * pz;
+    shade(sample, material, lights, color);
+  };
+
+  // 1. Centre rays.
+  for (let j = 0; j < height; j++) {
+    for (let i = 0; i < width; i++) {
+      const k = j * width + i;
+      const h = cast(i + 0.5, j + 0.5);
+      g[k] = miss;
+      if (h) {
+        hit[k] = 1;
+        coverage[k] = 1;
+        shadeHit();
+        linear[3 * k] = color[0];
+        linear[3 * k + 1] = color[1];
+        linear[3 * k + 2] = color[2];
+        transform4(mvp, px, py, pz, 1, clip);
+        depth[k] = (clip[2] / clip[3]) * 0.5 + 0.5;
+      } else {
+        linear[3 * k] = background[0];
+        linear[3 * k + 1] = background[1];
+        linear[3 * k + 2] = background[2];
+      }
+    }
+  }
+  // 2. Signed distance to the silhouette, and supersampling where it is within 1 px.
+  const at = (i: number, j: number): number =>
+    g[Math.min(Math.max(j, 0), height - 1) * width + Math.min(Math.max(i, 0), width - 1)];
+  for (let j = 0; j < height; j++) {
+    for (let i = 0; i < width; i++) {
+      const k = j * width + i;
+      const gx = (at(i + 1, j) - at(i - 1, j)) / (i === 0 || i === width - 1 ? 1 : 2);
+      const gy = (at(i, j + 1) - at(i, j - 1)) / (j === 0 || j === height - 1 ? 1 : 2);
+      const grad = Math.hypot(gx, gy);
+      const d = grad > 0 ? g[k] / grad : g[k] > 0 ? Number.POSITIVE_INFINITY : Number.NEGATIVE_INFINITY;
+      edgeDistance[k] = d;
+      let r = linear[3 * k];
+      let gg = linear[3 * k + 1];
+      let b = linear[3 * k + 2];
+      if (Math.abs(d) < 1 && samples > 1) {
+        let hits = 0;
+        r = 0;
+        gg = 0;
+        b = 0;
+        for (let sy = 0; sy < samples; sy++) {
+          for (let sx = 0; sx < samples; sx++) {
+            if (cast(i + (sx + 0.5) / samples, j + (sy + 0.5) / samples)) {
+              hits++;
+              shadeHit();
+              r += color[0];
+              gg += color[1];
+              b += color[2];
+            } else {
+              r += background[0];
+              gg += background[1];
+              b += background[2];
+            }
+          }
+        }
+        const s2 = samples * samples;
+        coverage[k] = hits / s2;
+        r /= s2;
+        gg /= s2;
+        b /= s2;
+      }
+      rgba[4 * k] = linearToSrgb8Channel(r);
+      rgba[4 * k + 1] = linearToSrgb8Channel(gg);
+      rgba[4 * k + 2] = linearToSrgb8Channel(b);
+      rgba[4 * k + 3] = 255;
+    }
+  }
+  return { width, height, rgba, linear, hit, coverage, edgeDistance, depth };
+}
+
+/**
+ * The eye of the projection·view matrix pv as a homogeneous world point: (pv)⁻¹·(0, 0, 1, 0) is the centre of
+ * projection ((position, 1) for perspective); for orthographic it is a direction, oriented towards the viewer
+ * ((backward axis, 0)), as `eyeOf` in @shadelab/material gives it.
+ */
+export function eyeOfProjection(pv: Mat4Like): [number, number, number, number] {
+  const inv = invert(pv);
+  if (inv === null) return [0, 0, 0, 1];
+  const e = transform4(inv, 0, 0, 1, 0);
+  const size = Math.hypot(e[0], e[1], e[2], e[3]);
+  if (Math.abs(e[3]) > 1e-12 * size) return [e[0] / e[3], e[1] / e[3], e[2] / e[3], 1];
+  // A direction: (pv)⁻¹(0,0,1,0) points away from the viewer (clip z grows with distance).
+  const len = Math.hypot(e[0], e[1], e[2]);
+  return [-e[0] / len, -e[1] / len, -e[2] / len, 0];
+}
