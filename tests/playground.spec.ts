@@ -361,3 +361,20 @@ test('a light moves with the gizmo', async ({ page }) => {
   // The drag moved the light, not the sphere.
   expect(((await urlState(page))['trackball'] as { rotation: number[] }).rotation).toEqual([0, 0, 0, 1]);
 });
+
+test('with "drag turns camera", a drag turns the gaze instead of the sphere', async ({ page }) => {
+  await open(page);
+  await toggle(page, 'Camera.dragTurns');
+  const before = await picture(page);
+  await drag(page, [0.5, 0.5], [0.6, 0.55]);
+  expect((await picture(page)) === before, 'the drag changes the picture').toBe(false);
+  const state = await urlState(page);
+  const camera = state['camera'] as { eye: number[]; at: number[]; up: number[] };
+  expect((state['trackball'] as { rotation: number[] }).rotation).toEqual([0, 0, 0, 1]);
+  expect(camera.eye).toEqual([0, 0, 3]);
+  // The gaze follows the pointer: right and down (yaw about v, pitch about u).
+  expect(camera.at[0]).toBeGreaterThan(0);
+  expect(camera.at[1]).toBeLessThan(0);
+  expect(Math.hypot(...camera.at.map((x, i) => x - camera.eye[i]!))).toBeCloseTo(3, 9);
+  expect(Math.hypot(...camera.up)).toBeCloseTo(1, 9);
+});

@@ -53,10 +53,11 @@ export function App() {
   useEffect(() => {
     const canvas = canvasRef.current!;
     const viewer = new Viewer(canvas, {
-      onView: ({ eye, at, zoom, rotation }) =>
+      onView: ({ eye, at, up, zoom, rotation }) =>
         update((d) => {
           d.camera.eye = eye;
           d.camera.at = at;
+          if (up) d.camera.up = up;
           d.camera.zoom = zoom;
           d.trackball.rotation = rotation;
         }),

@@ -18,6 +18,7 @@ import {
   createTrackball,
   type Detail,
   getCameraEye,
+  getCameraFrame,
   getTrackballRotation,
   type Light,
   type Material,
@@ -58,7 +59,13 @@ export type SectionErrors = Partial<Record<string, string>>;
 
 export interface ViewerEvents {
   /** The camera moved (movement keys) or the trackball turned; the new values for the state. */
-  onView?: (view: { eye: Vec3; at: Vec3; zoom: number; rotation: [number, number, number, number] }) => void;
+  onView?: (view: {
+    eye: Vec3;
+    at: Vec3;
+    up?: Vec3;
+    zoom: number;
+    rotation: [number, number, number, number];
+  }) => void;
   /** The gizmo moved light `index` to `position`. */
   onLightMoved?: (index: number, position: Vec3) => void;
   /** Drawing failed (the message), or succeeded again (null). */
@@ -165,6 +172,8 @@ export class Viewer {
     this.trackball.addEventListener('change', this.onTrackballChange);
     this.trackball.addEventListener('end', this.onViewEnd);
     this.mover.addEventListener('change', this.onMoverChange);
+    this.mover.addEventListener('start', this.onMoverStart);
+    this.mover.addEventListener('end', this.onMoverEnd);
     this.trackball.connect(canvas);
     this.mover.connect(canvas);
     this.timer = this.renderer.getContext().getExtension('EXT_disjoint_timer_query_webgl2');
@@ -174,7 +183,8 @@ export class Viewer {
   }
 
   private readonly onGizmoDragging = (event: { value: unknown }) => {
-    this.trackball.enabled = !event.value;
+    this.trackball.enabled = !event.value && !this.state?.camera.dragTurns;
+    this.mover.enabled = !event.value;
   };
   private readonly onGizmoChange = () => this.requestRender();
   private readonly onGizmoMove = () => {
@@ -207,14 +217,33 @@ export class Viewer {
     this.viewTimer = window.setTimeout(this.onViewEnd, 250);
   };
   /** The movement keys translate the camera: `at` moves with the eye. */
+  private moverDragging = false;
+  private readonly onMoverStart = () => {
+    this.moverDragging = true;
+  };
+  private readonly onMoverEnd = () => {
+    this.moverDragging = false;
+    this.reportCamera();
+  };
   private readonly onMoverChange = () => {
     this.requestRender();
-    if (!this.state) return;
-    const { eye } = getCameraEye(this.camera);
-    const c = this.state.camera;
-    const at: Vec3 = [0, 1, 2].map((i) => c.at[i]! + eye[i]! - c.eye[i]!) as Vec3;
-    this.events.onView?.({ eye, at, zoom: c.zoom, rotation: getTrackballRotation(this.pivot) });
+    if (!this.moverDragging) this.reportCamera();
   };
+  /** The movement keys moved the camera or a drag turned its gaze: `at` stays at the same distance ahead. */
+  private reportCamera() {
+    if (!this.state) return;
+    const { eye, w, v } = getCameraFrame(this.camera);
+    const c = this.state.camera;
+    const distance = Math.hypot(...c.eye.map((x, i) => x - c.at[i]!)) || 1;
+    const at = eye.map((x, i) => x - w[i]! * distance) as Vec3;
+    this.events.onView?.({
+      eye,
+      at,
+      up: c.dragTurns ? v : c.up,
+      zoom: c.zoom,
+      rotation: getTrackballRotation(this.pivot),
+    });
+  }
   /** The trackball turned the sphere or zoomed (perspective: the eye moves towards `at`; orthographic: zoom). */
   private readonly onViewEnd = () => {
     window.clearTimeout(this.viewTimer);
@@ -290,6 +319,8 @@ export class Viewer {
     });
     attempt('camera', () => {
       this.mover.moveSpeed = state.camera.moveSpeed;
+      this.mover.turnSpeed = state.camera.dragTurns ? state.camera.turnSpeed : 0;
+      this.trackball.enabled = !state.camera.dragTurns && !this.gizmo.dragging;
     });
     this.errors = errors;
     this.requestRender();
@@ -637,6 +668,8 @@ export class Viewer {
     this.trackball.removeEventListener('change', this.onTrackballChange);
     this.trackball.removeEventListener('end', this.onViewEnd);
     this.mover.removeEventListener('change', this.onMoverChange);
+    this.mover.removeEventListener('start', this.onMoverStart);
+    this.mover.removeEventListener('end', this.onMoverEnd);
     this.gizmo.removeEventListener('dragging-changed', this.onGizmoDragging);
     this.gizmo.removeEventListener('change', this.onGizmoChange);
     this.gizmo.removeEventListener('objectChange', this.onGizmoMove);

@@ -91,8 +91,10 @@ export function getCameraEye(camera: ViewCamera): { eye: Vec3; zoom: number } {
   return { eye: [e.x, e.y, e.z], zoom: camera.zoom };
 }
 
-export interface Mover extends THREE.EventDispatcher<{ change: object }> {
+export interface Mover extends THREE.EventDispatcher<{ change: object; start: object; end: object }> {
   moveSpeed: number;
+  turnSpeed: number;
+  enabled: boolean;
   connect(element: HTMLElement): void;
   disconnect(): void;
   dispose(): void;
@@ -101,9 +103,15 @@ export interface Mover extends THREE.EventDispatcher<{ change: object }> {
 /** Keys that move the camera (documented on the page; @shadelab/camera's MOVEMENT_KEYS). */
 export const MOVE_KEYS = 'W/S or ↑/↓ forward/back, A/D or ←/→ left/right, E/Q up/down';
 
-/** Keyboard movement only: the pointer drag belongs to the trackball, so the gaze turn is off. */
+/** Keyboard movement, and a pointer drag that turns the gaze when `turnSpeed` > 0 (0: the drag is the trackball's). */
 export function createMover(camera: ViewCamera): Mover {
   return new CameraMovement(camera, null, { turnSpeed: 0 });
+}
+
+/** The camera's frame: eye, gaze-opposite w and up v (after movement keys or a gaze turn). */
+export function getCameraFrame(camera: ViewCamera): { eye: Vec3; w: Vec3; v: Vec3 } {
+  const { e, v, w } = camera.getFrame();
+  return { eye: [e.x, e.y, e.z], w: [w.x, w.y, w.z], v: [v.x, v.y, v.z] };
 }
 
 // ---- trackball ----------------------------------------------------------------------------------------------

@@ -72,6 +72,10 @@ export interface PlaygroundState {
     zoom: number;
     /** Movement keys' speed, world units per key press. */
     moveSpeed: number;
+    /** A pointer drag turns the camera's gaze (instead of the trackball turning the sphere). */
+    dragTurns: boolean;
+    /** Gaze turn per pixel dragged, radians. */
+    turnSpeed: number;
   };
   trackball: {
     mapping: TrackballMapping;
@@ -131,6 +135,8 @@ export function defaultState(): PlaygroundState {
       fitAspect: true,
       zoom: 1,
       moveSpeed: 0.1,
+      dragTurns: false,
+      turnSpeed: 0.005,
     },
     trackball: { mapping: 'arcball', rotateSpeed: 1, zoomSpeed: 1, rotation: [0, 0, 0, 1] },
   };
@@ -291,6 +297,8 @@ const stateParser = object<PlaygroundState>({
     fitAspect: bool,
     zoom: num(0.01, 100),
     moveSpeed: num(0, 100, { openMin: true }),
+    dragTurns: bool,
+    turnSpeed: num(0, 1),
   }),
   trackball: object({
     mapping: oneOf('arcball', 'bell'),

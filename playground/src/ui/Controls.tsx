@@ -254,6 +254,20 @@ export function SceneControls({
         d.camera.fitAspect = v;
       },
     },
+    dragTurns: {
+      input: { label: 'drag turns camera' },
+      read: (s) => s.camera.dragTurns,
+      write: (d, v: boolean) => {
+        d.camera.dragTurns = v;
+      },
+    },
+    turnSpeed: {
+      input: { label: 'turn speed rad/px', step: 0.001 },
+      read: (s) => s.camera.turnSpeed,
+      write: (d, v: number) => {
+        d.camera.turnSpeed = v;
+      },
+    },
     moveSpeed: {
       input: { label: 'move speed', step: 0.01 },
       read: (s) => s.camera.moveSpeed,
