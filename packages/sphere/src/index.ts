@@ -1,3 +1,4 @@
+export { type AutoDetail, AutoDetailSphere, type AutoDetailSphereOptions } from './AutoDetailSphere.js';
 export {
   type ChooseSphereDetailOptions,
   chooseSphereDetail,
@@ -5,6 +6,7 @@ export {
 } from './chooseSphereDetail.js';
 export { computeVertexNormals, type NormalWeighting } from './computeVertexNormals.js';
 export { estimateSphereBytes } from './estimateSphereBytes.js';
+export { type ProjectedRadiusOptions, projectedRadiusPx } from './projectedRadiusPx.js';
 export { SPHERE_BASES, type SphereBase } from './SphereBase.js';
 export {
   DEFAULT_SPHERE_MAX_BYTES,

@@ -1,0 +1,200 @@
+import {
+  type BufferGeometry,
+  type Camera,
+  type Group,
+  type Material,
+  Mesh,
+  type Scene,
+  Vector4,
+  type WebGLRenderer,
+} from 'three';
+import { chooseSphereDetail, type SphereDetail } from './chooseSphereDetail.js';
+import { describeValue } from './describeValue.js';
+import { projectedRadiusPx } from './projectedRadiusPx.js';
+import { SPHERE_BASES, type SphereBase } from './SphereBase.js';
+import type { SphereNormals } from './SphereOptions.js';
+import { SubdivisionSphereGeometry } from './SubdivisionSphereGeometry.js';
+import { sphereCounts } from './sphereCounts.js';
+import { sphereError } from './sphereError.js';
+
+/** Options of {@link AutoDetailSphere}. */
+export interface AutoDetailSphereOptions {
+  /** Largest radial error on screen, in pixels (the budget). Finite, > 0. @default 0.5 */
+  maxErrorPx?: number;
+  /** Base solids to choose from. @default ['tetrahedron', 'octahedron', 'icosahedron'] */
+  bases?: readonly SphereBase[];
+  /** Highest level used, 0 … 10; when even it misses the budget the finest sphere is drawn. @default 8 */
+  maxLevel?: number;
+  /** Sphere radius in model space. @default 1 */
+  radius?: number;
+  /** Normals of the geometries, as in `SubdivisionSphereGeometry`. @default 'none' (shaders use the position) */
+  normals?: SphereNormals;
+  /** Indexed geometries (flat normals or flat shading need `false`). @default true, false with flat normals */
+  indexed?: boolean;
+}
+
+/** The detail an {@link AutoDetailSphere} draws and why. */
+export interface AutoDetail extends SphereDetail {
+  /** The sphere's radius on screen in pixels when the detail was chosen (see `projectedRadiusPx`). */
+  readonly radiusPx: number;
+  /** Whether `errorPx ≤ maxErrorPx` (false when even `maxLevel` misses the budget: the finest is drawn). */
+  readonly meetsBudget: boolean;
+}
+
+const _viewport = /* @__PURE__ */ new Vector4();
+
+/**
+ * A sphere mesh whose subdivision follows its size on screen: the cheapest base and level (fewest triangles)
+ * whose largest radial error on screen, `projectedRadiusPx · sphereError(base, level)`, stays within
+ * `maxErrorPx` (see `chooseSphereDetail`). Geometries are cached per (base, level) and shared thereafter:
+ * zooming back and forth never rebuilds, and nothing is recomputed while the camera, canvas and object stay
+ * put (the projected radius is compared first).
+ *
+ * Call {@link AutoDetailSphere.update} before `renderer.render` to have the right detail in the same frame.
+ * The mesh also updates itself in `onBeforeRender`, but three has already picked the geometry for that frame
+ * by then, so a change there shows from the next frame: it dispatches a `'change'` event so that
+ * render-on-demand apps can draw again.
+ *
+ * @example
+ * const sphere = new AutoDetailSphere(new ShadingMaterial({ lights: [light] }), { maxErrorPx: 0.5 });
+ * scene.add(sphere);
+ * function frame() { sphere.update(camera, renderer); renderer.render(scene, camera); }
+ */
+export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
+  /** Always true. */
+  readonly isAutoDetailSphere = true;
+  /** three's type name: `'AutoDetailSphere'`. */
+  override type = 'AutoDetailSphere';
+
+  /** The resolved options (validated; change them through the constructor). */
+  readonly parameters: Readonly<Required<AutoDetailSphereOptions>>;
+
+  /** Geometries built so far, by `'base/level'`. */
+  readonly #cache = new Map<string, SubdivisionSphereGeometry>();
+  #detail: AutoDetail;
+  #radiusPx = Number.NaN;
+  #builds = 0;
+
+  /**
+   * @param material - drawn with every detail.
+   * @param options - the budget and the geometry options.
+   * @throws RangeError / TypeError naming the option, as `chooseSphereDetail` and `SubdivisionSphereGeometry` do.
+   */
+  constructor(material: Material, options: AutoDetailSphereOptions = {}) {
+    super();
+    const {
+      maxErrorPx = 0.5,
+      bases = SPHERE_BASES,
+      maxLevel = 8,
+      radius = 1,
+      normals = 'none',
+      indexed = normals !== 'flat',
+    } = options;
+    if (typeof maxLevel !== 'number' || !Number.isInteger(maxLevel) || maxLevel < 0 || maxLevel > 10) {
+      throw new RangeError(
+        `AutoDetailSphere: maxLevel must be an integer from 0 to 10; got ${describeValue(maxLevel)}`,
+      );
+    }
+    // Validates maxErrorPx and bases.
+    chooseSphereDetail({ radiusPx: 0, maxErrorPx, bases, maxLevel });
+    this.parameters = Object.freeze({
+      maxErrorPx,
+      bases: Object.freeze([...bases]),
+      maxLevel,
+      radius,
+      normals,
+      indexed,
+    });
+    this.material = material;
+    // Until the first update: the coarsest sphere of the first base.
+    this.#detail = this.#choose(0);
+    this.geometry = this.#geometry(this.#detail);
+  }
+
+  /** The detail drawn now (base, level, triangles, error on screen, projected radius). */
+  get detail(): AutoDetail {
+    return this.#detail;
+  }
+
+  /** How many geometries have been built (each (base, level) at most once). */
+  get builds(): number {
+    return this.#builds;
+  }
+
+  /**
+   * Choose the detail for `camera` and a viewport of `viewportHeightPx` physical pixels (or the renderer's
+   * current viewport), and swap the geometry when it changes. Updates `matrixWorld` first.
+   * @returns whether the geometry changed.
+   */
+  update(camera: Camera, viewport: WebGLRenderer | number): boolean {
+    const heightPx = typeof viewport === 'number' ? viewport : viewport.getCurrentViewport(_viewport).w;
+    this.updateWorldMatrix(true, false);
+    const radiusPx = projectedRadiusPx({
+      camera,
+      matrixWorld: this.matrixWorld,
+      viewportHeightPx: heightPx,
+      radius: this.parameters.radius,
+    });
+    if (radiusPx === this.#radiusPx) return false;
+    this.#radiusPx = radiusPx;
+    const detail = this.#choose(radiusPx);
+    const changed = detail.base !== this.#detail.base || detail.level !== this.#detail.level;
+    this.#detail = detail;
+    if (changed) this.geometry = this.#geometry(detail);
+    return changed;
+  }
+
+  /** Keeps the detail current when the app does not call `update` (takes effect next frame, see the class). */
+  override onBeforeRender(
+    renderer: WebGLRenderer,
+    _scene: Scene,
+    camera: Camera,
+    _geometry: BufferGeometry,
+    _material: Material,
+    _group: Group,
+  ): void {
+    if (this.update(camera, renderer)) this.dispatchEvent({ type: 'change' } as never);
+  }
+
+  /** Dispose of every cached geometry (the material is the caller's), then three's `dispose` event. */
+  override dispose(): void {
+    for (const g of this.#cache.values()) g.dispose();
+    this.#cache.clear();
+    super.dispose();
+  }
+
+  #choose(radiusPx: number): AutoDetail {
+    const { maxErrorPx, bases, maxLevel } = this.parameters;
+    if (Number.isFinite(radiusPx)) {
+      try {
+        const d = chooseSphereDetail({ radiusPx, maxErrorPx, bases, maxLevel });
+        return { ...d, radiusPx, meetsBudget: true };
+      } catch (e) {
+        if (!(e instanceof RangeError)) throw e;
+      }
+    }
+    // Out of budget: the finest (smallest error) of the allowed spheres at maxLevel.
+    let best = bases[0];
+    for (const b of bases) if (sphereError(b, maxLevel) < sphereError(best, maxLevel)) best = b;
+    return {
+      base: best,
+      level: maxLevel,
+      triangles: sphereCounts(best, maxLevel).triangles,
+      errorPx: radiusPx * sphereError(best, maxLevel),
+      radiusPx,
+      meetsBudget: false,
+    };
+  }
+
+  #geometry({ base, level }: SphereDetail): SubdivisionSphereGeometry {
+    const key = `${base}/${level}`;
+    let g = this.#cache.get(key);
+    if (g === undefined) {
+      const { radius, normals, indexed } = this.parameters;
+      g = new SubdivisionSphereGeometry({ base, level, radius, normals, indexed });
+      this.#cache.set(key, g);
+      this.#builds++;
+    }
+    return g;
+  }
+}
