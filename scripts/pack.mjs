@@ -2,15 +2,25 @@
 // into DIR (a new temporary folder by default) and print what each tarball holds: packed and unpacked size and
 // file count. tests/pack.spec.ts imports `packPackages` to install the tarballs into fresh apps.
 import { spawnSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 
-/** The published packages, in dependency order. */
-export const PACKAGES = ['sphere', 'camera', 'trackball', 'material'];
+/**
+ * The published packages: every non-private workspace under packages/, in the root package.json's order
+ * (dependencies first), as folder names.
+ */
+export const PACKAGES = /* @__PURE__ */ (() => {
+  /** @type {{ workspaces: string[] }} */
+  const rootPackage = JSON.parse(readFileSync(join(root, 'package.json'), 'utf8'));
+  return rootPackage.workspaces
+    .filter((w) => w.startsWith('packages/'))
+    .filter((w) => !JSON.parse(readFileSync(join(root, w, 'package.json'), 'utf8')).private)
+    .map((w) => w.slice('packages/'.length));
+})();
 
 /**
  * @typedef {object} PackedPackage

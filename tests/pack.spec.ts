@@ -24,6 +24,14 @@ import { type PackedPackage, packPackages } from '../scripts/pack.mjs';
 
 const repo = fileURLToPath(new URL('..', import.meta.url));
 
+/** What the lecture's scene needs; every other published package is installed too (scripts/pack.mjs PACKAGES). */
+const LECTURE_PACKAGES = [
+  '@shadelab/sphere',
+  '@shadelab/camera',
+  '@shadelab/trackball',
+  '@shadelab/material',
+];
+
 /** Dependencies of every app, at the versions the repository itself uses (npm's cache usually has them). */
 const common = {
   three: '^0.187.0',
@@ -249,12 +257,7 @@ test.afterAll(async () => {
 });
 
 test('each tarball holds its ESM build, declarations, README and package.json, and nothing else', () => {
-  expect(packed.map((p) => p.name)).toEqual([
-    '@shadelab/sphere',
-    '@shadelab/camera',
-    '@shadelab/trackball',
-    '@shadelab/material',
-  ]);
+  expect(packed.map((p) => p.name)).toEqual(expect.arrayContaining(LECTURE_PACKAGES));
   for (const p of packed) {
     expect(p.files, p.name).toEqual(
       expect.arrayContaining(['package.json', 'dist/index.js', 'dist/index.d.ts']),
@@ -264,6 +267,14 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
         /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?)$/,
       );
       expect(f, p.name).not.toMatch(/\.test\.|test-util|tsbuildinfo/);
+    }
+    // Dependencies between our packages are plain ranges that the sibling being released satisfies.
+    const manifest = JSON.parse(
+      readFileSync(join(repo, 'packages', p.name.split('/')[1], 'package.json'), 'utf8'),
+    );
+    for (const [dep, range] of Object.entries<string>(manifest.dependencies ?? {})) {
+      const sibling = packed.find((q) => q.name === dep);
+      if (sibling) expect(range, `${p.name} → ${dep}`).toBe(`^${sibling.version}`);
     }
     // Every module has its declaration beside it.
     for (const js of p.files.filter((f) => f.endsWith('.js'))) {
@@ -289,7 +300,9 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
     import { Camera } from '@shadelab/camera';
     import { PhongLight, ShadingMaterial, shade } from '@shadelab/material';
     import { sphereCounts, subdivideSphere, SubdivisionSphereGeometry } from '@shadelab/sphere';
+    import { intersectSphere } from '@shadelab/reference';
     import { Trackball } from '@shadelab/trackball';
+    const hit = intersectSphere([0, 0, 3], [0, 0, -1]);
     const mesh = subdivideSphere({ level: 2 });
     const geometry = new SubdivisionSphereGeometry({ level: 2 });
     const camera = new Camera();
@@ -311,6 +324,7 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
       shading: material.shading,
       matrix: trackball.getMatrix().toArray(),
       lit: Array.from(lit),
+      hit: hit && [hit.t0, hit.t1],
     }));
   `;
   const out = await run('node', ['--input-type=module', '-e', script], join(tmp, 'vanilla'));
@@ -325,6 +339,9 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
   expect(result.matrix).toEqual([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
   // Head-on light, kd = 1, unattenuated: l·n = 1.
   for (const c of result.lit) expect(c).toBeCloseTo(1, 12);
+  // The CPU reference: a ray from z = 3 down the axis enters the unit sphere at t = 2 and leaves at t = 4.
+  expect(result.hit[0]).toBeCloseTo(2, 12);
+  expect(result.hit[1]).toBeCloseTo(4, 12);
 });
 
 test("a fresh react-three-fiber app renders the lecture's scene from the tarballs and the trackball turns it", async ({
