@@ -149,3 +149,15 @@ test('one material drawing two differently transformed objects in a row renders 
   expect(result.covered).toBeGreaterThan(2000);
   expect(result.differing).toBe(0);
 });
+
+test('createOutline draws a black inverted-hull ring around a cel sphere and leaves the sphere unchanged', async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => window.materialHarness.outline(0.08));
+  expect(result.covered).toBeGreaterThan(3000);
+  expect(result.insideChanged).toBe(0);
+  // A ring of about 0.08 world units ≈ 1.7 px around a ~90 × 45 px ellipse: hundreds of pixels, all black.
+  expect(result.ring).toBeGreaterThan(200);
+  expect(result.ringBlack).toBe(result.ring);
+});

@@ -4,6 +4,7 @@
 // binning of the triangles so that each ray tests only the few triangles whose screen box covers it.
 import {
   computeNormalMatrix,
+  createOutline,
   eyeOf,
   type Lighting,
   linearToSrgb8,
@@ -498,7 +499,55 @@ function sharedMaterial(): { identical: boolean; differing: number; covered: num
   return { identical: differing === 0, differing, covered };
 }
 
-const api = { compare, flipPrograms, sharedMaterial };
+/** A cel-shaded sphere without, then with, a black inverted-hull outline. */
+function outline(thickness: number): {
+  ring: number;
+  ringBlack: number;
+  insideChanged: number;
+  covered: number;
+} {
+  const size = 128;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const camera = makeCamera(false);
+  const material = new ShadingMaterial({ shading: 'phong', celBands: 3, lights: [light] });
+  const mesh = new Mesh(sphereGeometry(5, false), material);
+  mesh.scale.set(2, 1, 2);
+  const scene = new Scene();
+  scene.add(mesh, light);
+  const gl = renderer.getContext();
+  const read = (): Uint8Array => {
+    renderer.render(scene, camera);
+    const pixels = new Uint8Array(4 * size * size);
+    gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    return pixels;
+  };
+  const before = read();
+  const hull = createOutline(mesh, { thickness, color: 0x000000 });
+  const after = read();
+  hull.material.dispose();
+  material.dispose();
+  let ring = 0;
+  let ringBlack = 0;
+  let insideChanged = 0;
+  let covered = 0;
+  for (let i = 0; i < before.length; i += 4) {
+    const wasClear = before[i] === 0 && before[i + 1] === 0 && before[i + 2] === 255;
+    const isClear = after[i] === 0 && after[i + 1] === 0 && after[i + 2] === 255;
+    if (!wasClear) {
+      covered++;
+      if (before[i] !== after[i] || before[i + 1] !== after[i + 1] || before[i + 2] !== after[i + 2])
+        insideChanged++;
+    } else if (!isClear) {
+      ring++;
+      if (after[i] === 0 && after[i + 1] === 0 && after[i + 2] === 0) ringBlack++;
+    }
+  }
+  return { ring, ringBlack, insideChanged, covered };
+}
+
+const api = { compare, flipPrograms, sharedMaterial, outline };
 declare global {
   interface Window {
     materialHarness: typeof api;
