@@ -155,6 +155,10 @@ test.describe('the playground', () => {
     await typeInto(page, 'Trackball.zoomSpeed', '3');
     const z2 = await wheel();
     expect(3 - z2).toBeGreaterThan((3 - z1) * 1.5);
+    // The zoom limit holds: the eye never comes closer than 3 / maxZoom.
+    await typeInto(page, 'Trackball.maxZoom', '1.5');
+    for (let i = 0; i < 3; i++) await wheel();
+    expect(await wheel()).toBeCloseTo(2, 6);
   });
 
   test('camera keys move the camera along its frame, by moveSpeed', async ({ page }) => {

@@ -29,6 +29,7 @@ import {
   setOutlineWidth,
   setTrackballMapping,
   setTrackballRotation,
+  setTrackballZoomLimits,
   sphereErrorPx,
   sphereKey,
   type TrackballHandle,
@@ -312,6 +313,7 @@ export class Viewer {
       setTrackballMapping(this.trackball, state.trackball.mapping);
       this.trackball.rotateSpeed = state.trackball.rotateSpeed;
       this.trackball.zoomSpeed = state.trackball.zoomSpeed;
+      setTrackballZoomLimits(this.trackball, state.trackball.minZoom, state.trackball.maxZoom);
       const current = getTrackballRotation(this.pivot);
       if (current.some((c, i) => Math.abs(c - state.trackball.rotation[i]!) > 1e-12)) {
         setTrackballRotation(this.pivot, state.trackball.rotation);

@@ -126,6 +126,17 @@ export function setTrackballMapping(trackball: TrackballHandle, mapping: Trackba
   trackball.mapping = mapping;
 }
 
+/** Sets the zoom limits in an order the trackball accepts (it keeps minZoom ≤ maxZoom at every step). */
+export function setTrackballZoomLimits(trackball: TrackballHandle, minZoom: number, maxZoom: number): void {
+  if (minZoom > trackball.maxZoom) {
+    trackball.maxZoom = maxZoom;
+    trackball.minZoom = minZoom;
+  } else {
+    trackball.minZoom = minZoom;
+    trackball.maxZoom = maxZoom;
+  }
+}
+
 /** The object's rotation (what the trackball turned) as [x, y, z, w]. */
 export function getTrackballRotation(object: THREE.Object3D): [number, number, number, number] {
   return object.quaternion.toArray() as [number, number, number, number];

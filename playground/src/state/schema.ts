@@ -81,6 +81,9 @@ export interface PlaygroundState {
     mapping: TrackballMapping;
     rotateSpeed: number;
     zoomSpeed: number;
+    /** Zoom limits (factors of the opening view). */
+    minZoom: number;
+    maxZoom: number;
     /** Accumulated rotation as a unit quaternion `[x, y, z, w]`. */
     rotation: [number, number, number, number];
   };
@@ -138,7 +141,14 @@ export function defaultState(): PlaygroundState {
       dragTurns: false,
       turnSpeed: 0.005,
     },
-    trackball: { mapping: 'arcball', rotateSpeed: 1, zoomSpeed: 1, rotation: [0, 0, 0, 1] },
+    trackball: {
+      mapping: 'arcball',
+      rotateSpeed: 1,
+      zoomSpeed: 1,
+      minZoom: 0.01,
+      maxZoom: 100,
+      rotation: [0, 0, 0, 1],
+    },
   };
 }
 
@@ -304,6 +314,8 @@ const stateParser = object<PlaygroundState>({
     mapping: oneOf('arcball', 'bell'),
     rotateSpeed: num(0, 100),
     zoomSpeed: num(0, 100),
+    minZoom: num(1e-3, 1e3, { openMin: true }),
+    maxZoom: num(1e-3, 1e3, { openMin: true }),
     rotation: quaternion,
   }),
 });

@@ -302,6 +302,20 @@ export function SceneControls({
           d.trackball.zoomSpeed = v;
         },
       },
+      minZoom: {
+        input: { label: 'min zoom', step: 0.01 },
+        read: (s) => s.trackball.minZoom,
+        write: (d, v: number) => {
+          d.trackball.minZoom = v;
+        },
+      },
+      maxZoom: {
+        input: { label: 'max zoom', step: 0.1 },
+        read: (s) => s.trackball.maxZoom,
+        write: (d, v: number) => {
+          d.trackball.maxZoom = v;
+        },
+      },
     },
     state,
     update,
