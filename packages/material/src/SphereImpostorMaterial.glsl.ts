@@ -1,0 +1,66 @@
+// GLSL of SphereImpostorMaterial: a screen-aligned quad whose fragments ray-cast the unit sphere in model
+// space. The lighting equation is ShadingMaterial's own (the same chunk, not a copy): see `lightingChunk`.
+import { fragmentShader as shadingFragmentShader } from './ShadingMaterial.glsl.js';
+
+const BEFORE = 'in vec3 vNormal;\n';
+const AFTER = '#endif\n\nvoid main()';
+
+/**
+ * The lighting chunk (uniforms, `lightTerm`, `shadeColor`) of ShadingMaterial's fragment shader, which it
+ * includes in its per-fragment (phong) variant between the `vNormal` input and `main`.
+ * @throws Error when ShadingMaterial's shader no longer has that layout (caught by the tests).
+ */
+export function lightingChunk(source: string): string {
+  const start = source.indexOf(BEFORE);
+  const end = source.indexOf(AFTER, start);
+  if (start < 0 || end < 0) {
+    throw new Error(
+      'SphereImpostorMaterial: cannot find the lighting chunk in ShadingMaterial.glsl fragmentShader',
+    );
+  }
+  return source.slice(start + BEFORE.length, end);
+}
+
+/** Vertex stage: the quad's corners (position.xy = ±1) go to the projected ellipsoid's screen bounds. */
+export const impostorVertexShader = /* glsl */ `
+uniform vec4 impostorBounds; // NDC min x, min y, max x, max y
+void main() {
+  vec2 corner = position.xy * 0.5 + 0.5;
+  gl_Position = vec4(mix(impostorBounds.xy, impostorBounds.zw, corner), 0.0, 1.0);
+}
+`;
+
+/** Fragment stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights (`withLightCount`). */
+export const impostorFragmentShader = /* glsl */ `
+uniform mat4 impostorMvp; // P·V·M
+uniform mat4 impostorInverseMvp; // (P·V·M)⁻¹
+uniform mat4 impostorModelMatrix;
+uniform vec4 impostorViewport; // x, y, width, height in framebuffer pixels
+uniform mat3 shadingNormalMatrix; // sign(det)·cof(M)
+${/* @__PURE__ */ lightingChunk(shadingFragmentShader)}
+void main() {
+  // The pixel's ray between the near and far planes, in model space (perspective and orthographic alike).
+  vec2 ndc = (gl_FragCoord.xy - impostorViewport.xy) / impostorViewport.zw * 2.0 - 1.0;
+  vec4 nearH = impostorInverseMvp * vec4(ndc, -1.0, 1.0);
+  vec4 farH = impostorInverseMvp * vec4(ndc, 1.0, 1.0);
+  vec3 o = nearH.xyz / nearH.w;
+  vec3 d = farH.xyz / farH.w - o;
+  float len = length(d);
+  d /= len;
+  // Ray Tracing Gems ch. 7: b' = o·d, Δ = 1 − |o − b'd|², q = −b' − sign(b')√Δ, t0 = c/q, t1 = q.
+  float b = dot(o, d);
+  vec3 f = o - b * d;
+  float delta = 1.0 - dot(f, f);
+  if (delta < 0.0) discard;
+  float c = dot(o, o) - 1.0;
+  float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(delta);
+  float t0 = q == 0.0 ? 0.0 : min(c / q, q);
+  if (t0 < 0.0 || t0 > len) discard; // front surface between the near and far planes only
+  vec3 p = o + t0 * d; // model space; the exact normal is p itself
+  vec4 clip = impostorMvp * vec4(p, 1.0);
+  gl_FragDepth = clamp((clip.z / clip.w) * 0.5 + 0.5, 0.0, 1.0);
+  vec3 worldPosition = (impostorModelMatrix * vec4(p, 1.0)).xyz;
+  gl_FragColor = vec4(shadeColor(worldPosition, shadingNormalMatrix * p), 1.0);
+  #include <colorspace_fragment>
+}
+`;

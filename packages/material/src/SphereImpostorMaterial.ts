@@ -1,0 +1,159 @@
+import {
+  type BufferGeometry,
+  type Camera,
+  DoubleSide,
+  type Group,
+  Matrix4,
+  type Object3D,
+  type Scene,
+  Vector4,
+  type WebGLRenderer,
+} from 'three';
+import type { PhongLight } from './PhongLight.js';
+import { withLightCount } from './ShadingMaterial.glsl.js';
+import { type Shading, ShadingMaterial, type ShadingMaterialOptions } from './ShadingMaterial.js';
+import { impostorFragmentShader, impostorVertexShader } from './SphereImpostorMaterial.glsl.js';
+
+/** Options of {@link SphereImpostorMaterial}: those of `ShadingMaterial` except `shading` (always per fragment). */
+export type SphereImpostorMaterialOptions = Omit<ShadingMaterialOptions, 'shading'>;
+
+const _mvp = /* @__PURE__ */ new Matrix4();
+const _viewport = /* @__PURE__ */ new Vector4();
+
+/**
+ * The accurate end of the speed/accuracy trade: the unit sphere (an ellipsoid under the object's scale) drawn
+ * as a screen-aligned quad whose fragment shader intersects the pixel's ray with the exact surface (the
+ * numerically stable intersection of Ray Tracing Gems ch. 7, in model space), writes the exact depth
+ * (`gl_FragDepth`) and lights the hit with `ShadingMaterial`'s own lighting code and the exact normal
+ * sign(det)·cof(M)·p. Exact silhouette and normals with 2 triangles, whatever the size on screen.
+ *
+ * Use it on a {@link SphereImpostor} (or any geometry whose `position.xy` are the quad corners ±1). It takes
+ * `ShadingMaterial`'s options (lighting, cel bands, ka, kd, ks, shininess, lights); `shading` is always
+ * `'phong'` (per fragment: anything else is a TypeError).
+ *
+ * The quad covers the exact screen bounds of the projected ellipsoid, computed on the CPU per draw from the
+ * quadric (the planes x = a·w tangent to it in clip space: a² (r₄Dr₄) − 2a (r₁Dr₄) + r₁Dr₁ = 0 with r the rows
+ * of P·V·M and D = diag(1, 1, 1, −1)), widened by one pixel; when the eye plane touches the ellipsoid (camera
+ * inside or beside it) the quad covers the whole viewport. Only the front surface is drawn, clipped by the
+ * near and far planes like a mesh (no caps). Depth is written for three's default depth range and a
+ * standard (not logarithmic, not reversed) depth buffer. A singular model matrix (a zero scale) draws nothing
+ * (unlike a mesh, which draws the flattened shape). Writing depth disables early depth tests, so
+ * overdraw costs a full fragment each.
+ *
+ * @example
+ * const impostor = new SphereImpostor(new SphereImpostorMaterial({ lighting: 'blinn-phong', lights: [light] }));
+ * impostor.scale.set(2, 1, 2); // the lecture's ellipsoid
+ * scene.add(impostor, light);
+ */
+export class SphereImpostorMaterial extends ShadingMaterial {
+  /** Always true. */
+  readonly isSphereImpostorMaterial = true;
+  /** three's type name: `'SphereImpostorMaterial'`. */
+  override type = 'SphereImpostorMaterial';
+
+  constructor(options: SphereImpostorMaterialOptions = {}) {
+    super({ shading: 'phong', ...options });
+    Object.assign(this.uniforms, {
+      impostorMvp: { value: new Matrix4() },
+      impostorInverseMvp: { value: new Matrix4() },
+      impostorModelMatrix: { value: new Matrix4() },
+      impostorViewport: { value: new Vector4(0, 0, 1, 1) },
+      impostorBounds: { value: new Vector4(-1, -1, 1, 1) },
+    });
+    this.side = DoubleSide; // a mirrored object (det < 0) flips three's front face; the quad must stay drawn
+    syncShaders(this);
+  }
+
+  /** Always `'phong'`: the impostor lights every fragment. Setting anything else is a TypeError. */
+  override get shading(): Shading {
+    return super.shading;
+  }
+  override set shading(value: Shading) {
+    if (value !== 'phong') {
+      throw new TypeError(
+        `SphereImpostorMaterial.shading must be 'phong' (a ray-cast sphere is shaded per fragment), got ${String(value)}`,
+      );
+    }
+    super.shading = value;
+    syncShaders(this);
+  }
+
+  /** The lights, as in `ShadingMaterial` (the count is part of the variant). @default [] */
+  override get phongLights(): readonly PhongLight[] {
+    return super.phongLights;
+  }
+  override set phongLights(value: readonly PhongLight[]) {
+    super.phongLights = value;
+    syncShaders(this);
+  }
+
+  /** Per draw: ShadingMaterial's uniforms, then the ray-casting matrices, viewport and the quad's bounds. */
+  override onBeforeRender(
+    renderer: WebGLRenderer,
+    scene: Scene,
+    camera: Camera,
+    geometry: BufferGeometry,
+    object: Object3D,
+    group: Group,
+  ): void {
+    super.onBeforeRender(renderer, scene, camera, geometry, object, group);
+    syncShaders(this);
+    const u = this.uniforms;
+    const mvp = _mvp
+      .multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse)
+      .multiply(object.matrixWorld);
+    u.impostorMvp.value.copy(mvp);
+    u.impostorInverseMvp.value.copy(mvp).invert();
+    u.impostorModelMatrix.value.copy(object.matrixWorld);
+    const viewport = renderer.getCurrentViewport(_viewport);
+    u.impostorViewport.value.copy(viewport);
+    const det = mvp.determinant();
+    if (det !== 0 && Number.isFinite(det))
+      projectedBounds(mvp, viewport.z, viewport.w, u.impostorBounds.value);
+    else u.impostorBounds.value.set(2, 2, 2, 2); // singular model matrix: no ray casting, an empty quad off screen
+  }
+}
+
+/** Put the impostor's shaders back (ShadingMaterial resets its own when the light count changes). */
+function syncShaders(material: ShadingMaterial): void {
+  const n = material.phongLights.length;
+  const vertex = impostorVertexShader;
+  const fragment = withLightCount(impostorFragmentShader, n);
+  if (material.vertexShader !== vertex || material.fragmentShader !== fragment) {
+    material.vertexShader = vertex;
+    material.fragmentShader = fragment;
+    material.needsUpdate = true;
+  }
+}
+
+/**
+ * The NDC bounds (min x, min y, max x, max y) of the unit sphere under `mvp` (P·V·M), widened by one pixel
+ * of a `width`×`height` viewport, or the whole viewport when the eye plane touches the sphere or the sphere
+ * is behind the camera. Exact for ellipsoids (any affine M) under perspective and orthographic projection.
+ * @param target receives the bounds.
+ * @returns `target`.
+ */
+export function projectedBounds(mvp: Matrix4, width: number, height: number, target: Vector4): Vector4 {
+  const e = mvp.elements;
+  // Rows of T = P·V·M (column-major storage); D-products with D = diag(1, 1, 1, −1).
+  const row = (i: number): [number, number, number, number] => [e[i], e[4 + i], e[8 + i], e[12 + i]];
+  const dotD = (a: number[], b: number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2] - a[3] * b[3];
+  const r4 = row(3);
+  const w4 = dotD(r4, r4);
+  if (!(w4 < 0) || !(r4[3] > 0)) return target.set(-1, -1, 1, 1);
+  const bounds = (r: number[]): [number, number] => {
+    const b = dotD(r, r4);
+    const c = dotD(r, r);
+    const s = Math.sqrt(Math.max(b * b - w4 * c, 0));
+    const a0 = (b + s) / w4;
+    const a1 = (b - s) / w4;
+    return [Math.min(a0, a1), Math.max(a0, a1)];
+  };
+  const [x0, x1] = bounds(row(0));
+  const [y0, y1] = bounds(row(1));
+  const px = 2 / width;
+  const py = 2 / height;
+  const clamp = (v: number) => Math.min(Math.max(v, -1), 1);
+  if (![x0, x1, y0, y1].every(Number.isFinite)) return target.set(-1, -1, 1, 1);
+  return target.set(clamp(x0 - px), clamp(y0 - py), clamp(x1 + px), clamp(y1 + py));
+}
