@@ -12,6 +12,12 @@ export {
   type ShadingMaterialOptions,
   SPHERE_FLAG,
 } from './ShadingMaterial.js';
+export { createImpostorQuad, SphereImpostor } from './SphereImpostor.js';
+export {
+  projectedBounds,
+  SphereImpostorMaterial,
+  type SphereImpostorMaterialOptions,
+} from './SphereImpostorMaterial.js';
 export {
   type Attenuation,
   celDiffuse,
