@@ -32,6 +32,7 @@ import {
   setTrackballZoomLimits,
   sphereErrorPx,
   sphereKey,
+  sphereRadiusPx,
   type TrackballHandle,
   updateMaterialLights,
   type ViewCamera,
@@ -383,27 +384,25 @@ export class Viewer {
   private errorPx(): number | null {
     if (!this.sphere || !this.state) return null;
     try {
-      return sphereErrorPx(this.sphere.base, this.sphere.level, this.radiusPx(this.state));
+      return sphereErrorPx(this.sphere.base, this.sphere.level, this.radiusPx());
     } catch {
       return null;
     }
   }
 
   /** The sphere's radius on screen in pixels (largest scale axis), for automatic detail. */
-  private radiusPx(state: PlaygroundState): number {
-    const c = state.camera;
+  private radiusPx(): number {
     const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
-    const radius = Math.max(...state.model.scale.map(Math.abs));
-    if (c.projection === 'orthographic') return (radius / ((c.top - c.bottom) / 2)) * (h / 2);
-    const distance = Math.max(c.near, Math.hypot(...c.eye) - radius);
-    return (radius / (distance * Math.tan(THREE.MathUtils.degToRad(c.fovy / 2)))) * (h / 2);
+    const { rows } = this.layout();
+    this.pivot.updateMatrixWorld(true);
+    return sphereRadiusPx(this.camera, this.mesh.matrixWorld, h / rows);
   }
 
   private applySphere(state: PlaygroundState) {
     let { base, level } = state.sphere;
     this.lastDetail = null;
     if (state.sphere.auto) {
-      this.lastDetail = chooseDetail(this.radiusPx(state), state.sphere.maxErrorPx);
+      this.lastDetail = chooseDetail(this.radiusPx(), state.sphere.maxErrorPx);
       ({ base, level } = this.lastDetail);
     }
     const shadings =

@@ -7,6 +7,7 @@ import { Camera, CameraMovement } from '@shadelab/camera';
 import { createOutline, type OutlineMaterial, PhongLight, ShadingMaterial } from '@shadelab/material';
 import {
   chooseSphereDetail,
+  projectedRadiusPx,
   type SphereDetail,
   SubdivisionSphereGeometry,
   sphereError,
@@ -35,6 +36,19 @@ export function sphereKey(base: SphereBase, level: number, shading: Shading): st
 }
 
 export type Detail = SphereDetail;
+
+/**
+ * The sphere's radius on screen in pixels (exact, from the projection matrix; @shadelab/sphere), capped at
+ * four viewport heights (the eye inside the sphere gives Infinity, and no detail is needed beyond the screen).
+ */
+export function sphereRadiusPx(
+  camera: ViewCamera,
+  matrixWorld: THREE.Matrix4,
+  viewportHeightPx: number,
+): number {
+  const px = projectedRadiusPx({ camera, matrixWorld, viewportHeightPx });
+  return Math.min(px, 4 * viewportHeightPx);
+}
 
 /** The largest radial error of the sphere on screen, in pixels (exact, from @shadelab/sphere). */
 export function sphereErrorPx(base: SphereBase, level: number, radiusPx: number): number {
