@@ -1,0 +1,121 @@
+// Harness for tests/tradeoff.spec.ts and bench/tradeoff.bench.mjs: draws the sphere with one option of the
+// trade (flat / Gouraud / Phong mesh at a base and level, or the ray-cast impostor), compares the pixels with
+// renderReference computed here in the page, and times frames (1×1 readPixels after each).
+import { compareToReference } from '@shadelab/reference';
+import { Mesh, MeshBasicMaterial, PlaneGeometry } from 'three';
+import { optionCost, type TradeOption, TradeoffScene, type TradeView } from '../src/tradeoff/tradeoffScene';
+
+const canvas = document.getElementById('viewport') as HTMLCanvasElement;
+const trade = new TradeoffScene(canvas);
+
+export interface CompareResult {
+  rmse: number;
+  max: number;
+  interiorPixels: number;
+  silhouettePx: number;
+  silhouetteMeanPx: number;
+  mismatchedPixels: number;
+  /** Mismatched pixels farther than 0.5 px from the exact silhouette. */
+  mismatchedBeyondHalfPx: number;
+  /** Pure black pixels (what a NaN colour writes; the lit scene never is black). */
+  blackPixels: number;
+}
+
+function compare(view: TradeView, option: TradeOption): CompareResult {
+  trade.setView(view);
+  trade.setOption(option);
+  trade.render();
+  const pixels = trade.readPixels();
+  const reference = trade.reference();
+  const e = compareToReference(pixels, reference);
+  let beyond = 0;
+  for (const s of e.silhouetteError) if (s > 0.5) beyond++;
+  let black = 0;
+  for (let k = 0; k < pixels.length; k += 4) if (pixels[k] + pixels[k + 1] + pixels[k + 2] === 0) black++;
+  return {
+    rmse: e.rmse,
+    max: e.max,
+    interiorPixels: e.interiorPixels,
+    silhouettePx: e.silhouettePx,
+    silhouetteMeanPx: e.silhouetteMeanPx,
+    mismatchedPixels: e.mismatchedPixels,
+    mismatchedBeyondHalfPx: beyond,
+    blackPixels: black,
+  };
+}
+
+/**
+ * Depth check: a grey plane facing the camera at world z = planeZ cuts the sphere; the sphere must show
+ * exactly where its exact depth (from the reference) is nearer than the plane's. Returns the pixels that
+ * disagree, ignoring those within `eps` of equal depth.
+ */
+function depthCheck(
+  view: TradeView,
+  option: TradeOption,
+  planeZ: number,
+  eps = 1e-5,
+): { wrong: number; sphere: number; plane: number } {
+  trade.setView(view);
+  trade.setOption(option);
+  const plane = new Mesh(new PlaneGeometry(100, 100), new MeshBasicMaterial({ color: 0x808080 }));
+  plane.position.z = planeZ;
+  trade.scene.add(plane);
+  trade.scene.updateMatrixWorld();
+  trade.render();
+  const pixels = trade.readPixels();
+  trade.scene.remove(plane);
+  plane.geometry.dispose();
+  plane.material.dispose();
+  const reference = trade.reference();
+  const camera = trade.camera;
+  const p = plane.position.clone().project(camera);
+  const planeDepth = p.z * 0.5 + 0.5;
+  let wrong = 0;
+  let sphere = 0;
+  let planeCount = 0;
+  for (let k = 0; k < reference.depth.length; k++) {
+    if (!reference.hit[k] || Math.abs(reference.edgeDistance[k]) < 1) continue;
+    const d = reference.depth[k];
+    if (Math.abs(d - planeDepth) < eps) continue;
+    const grey = pixels[4 * k] === pixels[4 * k + 1] && pixels[4 * k + 1] === pixels[4 * k + 2];
+    const expectSphere = d < planeDepth;
+    if (expectSphere) sphere++;
+    else planeCount++;
+    if (grey === expectSphere) wrong++;
+  }
+  return { wrong, sphere, plane: planeCount };
+}
+
+/** Frame times in ms: `warmup` untimed frames, then `frames` timed ones, each ended by a 1×1 readPixels. */
+function time(view: TradeView, option: TradeOption, frames: number, warmup: number): number[] {
+  trade.setView(view);
+  trade.setOption(option);
+  for (let i = 0; i < warmup; i++) {
+    trade.render();
+    trade.sync();
+  }
+  const out: number[] = [];
+  for (let i = 0; i < frames; i++) {
+    const t0 = performance.now();
+    trade.render();
+    trade.sync();
+    out.push(performance.now() - t0);
+  }
+  return out;
+}
+
+function referenceMs(view: TradeView): number {
+  trade.setView({ ...view, width: view.width, height: view.height });
+  const t0 = performance.now();
+  trade.reference();
+  return performance.now() - t0;
+}
+
+const api = { compare, depthCheck, time, cost: optionCost, referenceMs };
+declare global {
+  interface Window {
+    tradeoff: typeof api;
+  }
+}
+window.tradeoff = api;
+document.body.dataset.ready = '1';

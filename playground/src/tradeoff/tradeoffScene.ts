@@ -1,0 +1,274 @@
+// The trade-off scene shared by the trade-off page, its Playwright harness and its benchmark: one lit
+// sphere (ellipsoid) drawn by one option (a subdivision mesh with flat, Gouraud or Phong shading, or the
+// ray-cast impostor), and the exact reference image of the same view.
+import {
+  type Lighting,
+  PhongLight,
+  type ShadeLight,
+  type ShadeMaterial,
+  ShadingMaterial,
+  SphereImpostor,
+  SphereImpostorMaterial,
+} from '@shadelab/material';
+import { type ReferenceImage, renderReference } from '@shadelab/reference';
+import { type SphereBase, SubdivisionSphereGeometry, sphereCounts } from '@shadelab/sphere';
+import {
+  type BufferGeometry,
+  type Camera,
+  Mesh,
+  OrthographicCamera,
+  PerspectiveCamera,
+  Scene,
+  WebGLRenderer,
+} from 'three';
+
+/** One point of the trade: a mesh option or the impostor. */
+export type TradeOption =
+  | { readonly shading: 'flat' | 'gouraud' | 'phong'; readonly base: SphereBase; readonly level: number }
+  | { readonly shading: 'impostor' };
+
+/** The view and lighting (the lecture's scene by default). */
+export interface TradeView {
+  width: number;
+  height: number;
+  /** @default 'perspective' */
+  projection?: 'perspective' | 'orthographic';
+  /** @default 90 */
+  fovy?: number;
+  /** @default [0, 0, 3] */
+  eye?: [number, number, number];
+  /** @default [2, 1, 2] */
+  scale?: [number, number, number];
+  /** Euler angles, radians. @default [0, 0, 0] */
+  rotation?: [number, number, number];
+  /** @default [-5, 10, 20] */
+  light?: [number, number, number];
+  /** @default 'phong' */
+  lighting?: Lighting;
+  /** @default 0 */
+  celBands?: number;
+  /** @default 32 */
+  shininess?: number;
+  ka?: [number, number, number];
+  kd?: [number, number, number];
+  ks?: [number, number, number];
+}
+
+/** What an option costs in memory and work. */
+export interface OptionCost {
+  triangles: number;
+  vertices: number;
+  /** GPU buffer bytes: attributes, index and (flat) the face-position texture. */
+  bytes: number;
+  /** Bytes per vertex of the attributes the shading reads. */
+  bytesPerVertex: number;
+}
+
+/** The background: pure blue, a colour the shading never produces (so coverage is exact). */
+export const BACKGROUND = 0x0000ff;
+
+export function optionKey(option: TradeOption): string {
+  return option.shading === 'impostor' ? 'impostor' : `${option.shading} ${option.base} ${option.level}`;
+}
+
+const FACE_TEXTURE_WIDTH = 2048;
+
+/** Triangles, vertices and bytes of an option, from the sphere counts (no geometry built). */
+export function optionCost(option: TradeOption): OptionCost {
+  if (option.shading === 'impostor')
+    return { triangles: 2, vertices: 4, bytes: 4 * 12 + 6 * 2, bytesPerVertex: 12 };
+  const { triangles } = sphereCounts(option.base, option.level);
+  if (option.shading === 'flat') {
+    // Non-indexed positions, plus the same positions in an RGB32F texture rows of 2048 texels.
+    const vertices = 3 * triangles;
+    const texture = FACE_TEXTURE_WIDTH * Math.ceil(vertices / FACE_TEXTURE_WIDTH) * 12;
+    return { triangles, vertices, bytes: vertices * 12 + texture, bytesPerVertex: 24 };
+  }
+  // Indexed positions only (exact sphere normals from the position), Uint16 or Uint32 indices.
+  const vertices = 2 + triangles / 2;
+  const indexBytes = vertices <= 65536 ? 2 : 4;
+  return { triangles, vertices, bytes: vertices * 12 + 3 * triangles * indexBytes, bytesPerVertex: 12 };
+}
+
+/** Renderer, scene and the objects of the trade, on one canvas. */
+export class TradeoffScene {
+  readonly renderer: WebGLRenderer;
+  readonly scene = new Scene();
+  readonly light = new PhongLight();
+  camera: Camera = new PerspectiveCamera();
+  readonly meshMaterial = new ShadingMaterial();
+  readonly impostorMaterial = new SphereImpostorMaterial();
+  readonly mesh = new Mesh<BufferGeometry, ShadingMaterial>(undefined, this.meshMaterial);
+  readonly impostor = new SphereImpostor(this.impostorMaterial);
+  view: Required<TradeView> = resolveView({ width: 1, height: 1 });
+  option: TradeOption = { shading: 'impostor' };
+  readonly #geometries = new Map<string, BufferGeometry>();
+  #reference: { key: string; image: ReferenceImage } | null = null;
+
+  constructor(canvas: HTMLCanvasElement | OffscreenCanvas) {
+    this.renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(1);
+    this.renderer.setClearColor(BACKGROUND, 1);
+    this.meshMaterial.phongLights = [this.light];
+    this.impostorMaterial.phongLights = [this.light];
+    this.scene.add(this.light, this.mesh, this.impostor);
+  }
+
+  /** Set the view (camera, model transform, light and material options). */
+  setView(view: TradeView): void {
+    const v = resolveView(view);
+    this.view = v;
+    if (this.renderer.domElement.width !== v.width || this.renderer.domElement.height !== v.height) {
+      this.renderer.setSize(v.width, v.height, false);
+    }
+    const aspect = v.width / v.height;
+    if (v.projection === 'orthographic') {
+      const h = 1.5;
+      this.camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, 0.1, 10);
+    } else {
+      this.camera = new PerspectiveCamera(v.fovy, aspect, 0.1, 10);
+    }
+    this.camera.position.set(...v.eye);
+    this.camera.lookAt(0, 0, 0);
+    this.camera.updateMatrixWorld();
+    for (const object of [this.mesh, this.impostor]) {
+      object.scale.set(...v.scale);
+      object.rotation.set(...v.rotation);
+    }
+    this.light.position.set(...v.light);
+    this.scene.updateMatrixWorld();
+    for (const m of [this.meshMaterial, this.impostorMaterial]) {
+      m.lighting = v.lighting;
+      m.celBands = v.celBands;
+      m.shininess = v.shininess;
+      m.ka = v.ka;
+      m.kd = v.kd;
+      m.ks = v.ks;
+    }
+  }
+
+  /** Choose what draws the sphere. */
+  setOption(option: TradeOption): void {
+    this.option = option;
+    const impostor = option.shading === 'impostor';
+    this.impostor.visible = impostor;
+    this.mesh.visible = !impostor;
+    if (option.shading === 'impostor') return;
+    this.meshMaterial.shading = option.shading;
+    const flat = option.shading === 'flat';
+    const key = `${option.base}/${option.level}/${flat}`;
+    let g = this.#geometries.get(key);
+    if (g === undefined) {
+      g = new SubdivisionSphereGeometry({
+        base: option.base,
+        level: option.level,
+        normals: 'none',
+        indexed: !flat,
+      });
+      this.#geometries.set(key, g);
+    }
+    this.mesh.geometry = g;
+  }
+
+  render(): void {
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  /** The whole canvas, RGBA, rows bottom-up. */
+  readPixels(): Uint8Array {
+    const gl = this.renderer.getContext();
+    const { width, height } = this.view;
+    const pixels = new Uint8Array(4 * width * height);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    return pixels;
+  }
+
+  /** One pixel read back: waits for the frame (SwiftShader's finish() does not). */
+  sync(): void {
+    const gl = this.renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+  }
+
+  /** The exact image of the current view (cached until the view changes). */
+  reference(samples = 4): ReferenceImage {
+    const key = JSON.stringify([this.view, samples]);
+    if (this.#reference?.key === key) return this.#reference.image;
+    const object = this.impostor;
+    object.updateMatrixWorld();
+    const m = this.meshMaterial;
+    const material: ShadeMaterial = {
+      ka: [m.ka.r, m.ka.g, m.ka.b],
+      kd: [m.kd.r, m.kd.g, m.kd.b],
+      ks: [m.ks.r, m.ks.g, m.ks.b],
+      shininess: m.shininess,
+      lighting: m.lighting,
+      celBands: m.celBands,
+    };
+    const l = this.light;
+    const e = l.matrixWorld.elements;
+    const lights: ShadeLight[] = [
+      {
+        position: [e[12], e[13], e[14]],
+        ambient: [l.ambient.r, l.ambient.g, l.ambient.b],
+        diffuse: [l.diffuse.r, l.diffuse.g, l.diffuse.b],
+        specular: [l.specular.r, l.specular.g, l.specular.b],
+        attenuation: l.attenuation,
+      },
+    ];
+    const image = renderReference({
+      width: this.view.width,
+      height: this.view.height,
+      projectionMatrix: this.camera.projectionMatrix.elements,
+      viewMatrix: this.camera.matrixWorldInverse.elements,
+      modelMatrix: object.matrixWorld.elements,
+      material,
+      lights,
+      background: [0, 0, 1],
+      samples,
+    });
+    this.#reference = { key, image };
+    return image;
+  }
+
+  dispose(): void {
+    for (const g of this.#geometries.values()) g.dispose();
+    this.impostor.geometry.dispose();
+    this.meshMaterial.dispose();
+    this.impostorMaterial.dispose();
+    this.renderer.dispose();
+  }
+}
+
+function resolveView({
+  width,
+  height,
+  projection = 'perspective',
+  fovy = 90,
+  eye = [0, 0, 3],
+  scale = [2, 1, 2],
+  rotation = [0, 0, 0],
+  light = [-5, 10, 20],
+  lighting = 'phong',
+  celBands = 0,
+  shininess = 32,
+  ka = [0.6, 0.35, 0.2],
+  kd = [0.6, 0.35, 0.2],
+  ks = [0.5, 0.5, 0.5],
+}: TradeView): Required<TradeView> {
+  return {
+    width,
+    height,
+    projection,
+    fovy,
+    eye,
+    scale,
+    rotation,
+    light,
+    lighting,
+    celBands,
+    shininess,
+    ka,
+    kd,
+    ks,
+  };
+}
