@@ -320,7 +320,7 @@ export class Viewer {
         setTrackballRotation(this.pivot, state.trackball.rotation);
       }
     });
-    attempt('camera', () => {
+    attempt('camera movement', () => {
       this.mover.moveSpeed = state.camera.moveSpeed;
       this.mover.turnSpeed = state.camera.dragTurns ? state.camera.turnSpeed : 0;
       this.trackball.enabled = !state.camera.dragTurns && !this.gizmo.dragging;
