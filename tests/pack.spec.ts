@@ -264,7 +264,7 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
     );
     for (const f of p.files) {
       expect(f, p.name).toMatch(
-        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?)$/,
+        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.ts)$/,
       );
       expect(f, p.name).not.toMatch(/\.test\.|test-util|tsbuildinfo/);
     }
@@ -280,6 +280,35 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
     for (const js of p.files.filter((f) => f.endsWith('.js'))) {
       expect(p.files, `${p.name}: ${js}`).toContain(js.replace(/\.js$/, '.d.ts'));
     }
+  }
+});
+
+test('each package.json is ready to publish: types-first exports, files, no side effects, peers, metadata', () => {
+  for (const p of packed) {
+    const folder = p.name.split('/')[1];
+    const manifest = JSON.parse(readFileSync(join(repo, 'packages', folder, 'package.json'), 'utf8'));
+    const where = `packages/${folder}/package.json`;
+    expect(manifest.private, where).toBeUndefined();
+    expect(manifest.type, where).toBe('module');
+    expect(manifest.sideEffects, where).toBe(false);
+    const root = manifest.exports?.['.'];
+    expect(Object.keys(root ?? {})[0], `${where}: exports['.'] lists "types" first`).toBe('types');
+    expect(p.files, where).toContain(root.types.replace(/^\.\//, ''));
+    expect(p.files, where).toContain(root.import.replace(/^\.\//, ''));
+    expect(Array.isArray(manifest.files) && manifest.files.length > 0, `${where}: files`).toBe(true);
+    expect(manifest.engines?.node, where).toMatch(/^>=\d+/);
+    expect(manifest.repository?.url, where).toMatch(/^git\+https:\/\//);
+    expect(manifest.repository?.directory, where).toBe(`packages/${folder}`);
+    expect(manifest.license, where).toBe('MIT');
+    expect(manifest.keywords?.length, `${where}: keywords`).toBeGreaterThan(0);
+    expect(manifest.description, where).toBeTruthy();
+    // A package whose build imports three declares it as a peer with a lower bound only; none bundles it.
+    const importsThree = p.files
+      .filter((f) => f.endsWith('.js'))
+      .some((f) => /from ['"]three['"]/.test(readFileSync(join(repo, 'packages', folder, f), 'utf8')));
+    if (importsThree)
+      expect(manifest.peerDependencies?.three, `${where}: peer three`).toMatch(/^>=\d+\.\d+\.\d+$/);
+    expect(manifest.dependencies?.three, `${where}: three must not be a dependency`).toBeUndefined();
   }
 });
 
