@@ -420,7 +420,7 @@ export function LightControls({
         }),
       ),
     },
-    10 + index,
+    2 + (index + 1) / 100,
   );
   return null;
 }
