@@ -1,8 +1,8 @@
 import { Matrix4, Quaternion, Camera as ThreeCamera, Vector3 } from 'three';
 import type { CameraFrame } from './CameraFrame.js';
 import { createPoleMemory, lookAtFrame, type PoleMemory } from './lookAtFrame.js';
-import { readVector3, type Vec3Input } from './readVector3.js';
-import { validateOrthographic, validatePerspective } from './validateProjection.js';
+import { checkCoordinates, readVector3, type Vec3Input } from './readVector3.js';
+import { check, validateOrthographic, validatePerspective } from './validateProjection.js';
 
 /** Which projection a {@link Camera} uses. */
 export type ProjectionType = 'perspective' | 'orthographic';
@@ -26,6 +26,8 @@ const _frame: CameraFrame = {
   w: /* @__PURE__ */ new Vector3(),
 };
 const _m = /* @__PURE__ */ new Matrix4();
+const _p = /* @__PURE__ */ new Matrix4();
+const _pi = /* @__PURE__ */ new Matrix4();
 const _q = /* @__PURE__ */ new Quaternion();
 const _target = /* @__PURE__ */ new Vector3();
 const _eye = /* @__PURE__ */ new Vector3();
@@ -83,7 +85,6 @@ export class Camera extends ThreeCamera {
   /** Build a perspective camera at the origin looking down −z (frame e = 0, u = x, v = y, w = z). */
   constructor({ fovy = 50, aspect = 1, near = 0.1, far = 2000 }: CameraOptions = {}) {
     super();
-    validatePerspective(fovy, aspect, near, far);
     this.fovy = fovy;
     this.aspect = aspect;
     this.near = near;
@@ -146,7 +147,8 @@ export class Camera extends ThreeCamera {
    * (see {@link lookAtFrame}). With a parent, eye/at/up are world-space and position/quaternion are set so the
    * world frame is the requested one (uniformly-scaled parents, as three).
    *
-   * @throws RangeError when eye = at, up is zero, or any component is NaN/infinite; TypeError for non-vectors.
+   * @throws RangeError when eye = at, up is zero, any component is NaN/infinite, or an eye component is beyond
+   * ±1e30 (the view matrix must stay finite in float32); TypeError for non-vectors.
    */
   override lookAt(target: Vec3Input): this;
   override lookAt(x: number, y: number, z: number): this;
@@ -173,6 +175,7 @@ export class Camera extends ThreeCamera {
       this._pole.turn = 0;
     }
     const frame = lookAtFrame(eye, at, up, _frame, this._pole);
+    checkCoordinates(frame.e, 'eye');
     if (up !== this.up) readVector3(up, 'up', this.up);
     _m.makeBasis(frame.u, frame.v, frame.w);
     this.quaternion.setFromRotationMatrix(_m);
@@ -197,18 +200,11 @@ export class Camera extends ThreeCamera {
    * @param near - Near plane distance, world units, > 0.
    * @param far - Far plane distance, world units, > near. Any finite far/near works; see the README for the depth
    *   precision each depth mode keeps up to far/near = 1e9.
-   * @throws RangeError naming the first bad parameter (NaN included).
+   * @throws RangeError naming the first bad parameter (NaN included), or when the matrix would not be finite; the
+   * camera is then unchanged. TypeError for a non-number.
    */
   setPerspective(fovy: number, aspect: number, near: number, far: number): this {
-    validatePerspective(fovy, aspect, near, far, this.zoom);
-    this._projection = 'perspective';
-    this.fovy = fovy;
-    this.aspect = aspect;
-    this.near = near;
-    this.far = far;
-    this.updateProjectionMatrix();
-    this.dispatchEvent(_change as never);
-    return this;
+    return this._set({ _projection: 'perspective', fovy, aspect, near, far });
   }
 
   /**
@@ -221,21 +217,22 @@ export class Camera extends ThreeCamera {
    * @param n - Near plane distance along the gaze (any finite value, 0 and negative included).
    * @param f - Far plane distance along the gaze, > n.
    * Also sets {@link Camera.aspect} to |r − l| / |t − b|.
-   * @throws RangeError naming the first bad parameter (NaN included).
+   * @throws RangeError naming the first bad parameter (NaN included), or when the matrix would not be finite; the
+   * camera is then unchanged. TypeError for a non-number.
    */
   setOrthographic(r: number, l: number, t: number, b: number, n: number, f: number): this {
     validateOrthographic(r, l, t, b, n, f, this.zoom);
-    this._projection = 'orthographic';
-    this.right = r;
-    this.left = l;
-    this.top = t;
-    this.bottom = b;
-    this.near = n;
-    this.far = f;
-    this.aspect = Math.abs(r - l) / Math.abs(t - b);
-    this.updateProjectionMatrix();
-    this.dispatchEvent(_change as never);
-    return this;
+    const aspect = Math.abs(r - l) / Math.abs(t - b);
+    return this._set({
+      _projection: 'orthographic',
+      right: r,
+      left: l,
+      top: t,
+      bottom: b,
+      near: n,
+      far: f,
+      aspect,
+    });
   }
 
   /**
@@ -246,17 +243,27 @@ export class Camera extends ThreeCamera {
    * @throws RangeError when aspect is not finite and > 0.
    */
   setAspect(aspect: number): this {
-    if (!(aspect > 0 && Number.isFinite(aspect))) {
-      throw new RangeError(`aspect must be finite and > 0, got ${aspect}`);
-    }
-    this.aspect = aspect;
-    if (this._projection === 'orthographic') {
-      const cx = (this.left + this.right) / 2;
-      const half = (Math.sign(this.right - this.left) * aspect * Math.abs(this.top - this.bottom)) / 2;
-      this.left = cx - half;
-      this.right = cx + half;
-    }
-    this.updateProjectionMatrix();
+    check(aspect, (v) => v > 0 && Number.isFinite(v), 'aspect', 'finite and > 0');
+    if (this._projection !== 'orthographic') return this._set({ aspect });
+    const cx = (this.left + this.right) / 2;
+    const half = (Math.sign(this.right - this.left) * aspect * Math.abs(this.top - this.bottom)) / 2;
+    return this._set({ aspect, left: cx - half, right: cx + half });
+  }
+
+  /**
+   * Update the matrices for `fields` (validated on a view of this camera that has them: a refusal throws before
+   * anything changes), then assign them: all or nothing.
+   */
+  private _set(
+    fields: Partial<
+      Record<
+        '_projection' | 'fovy' | 'aspect' | 'near' | 'far' | 'left' | 'right' | 'top' | 'bottom',
+        unknown
+      >
+    >,
+  ): this {
+    this.updateProjectionMatrix.call(Object.assign(Object.create(this) as this, fields));
+    Object.assign(this, fields);
     this.dispatchEvent(_change as never);
     return this;
   }
@@ -265,7 +272,9 @@ export class Camera extends ThreeCamera {
    * Recompute `projectionMatrix` (and its inverse) from the fields, exactly as three's `PerspectiveCamera` /
    * `OrthographicCamera` do, honouring `zoom`, `coordinateSystem` and `reversedDepth`. Call it after assigning
    * fields directly.
-   * @throws RangeError when the fields are out of range (see {@link Camera.setPerspective}/{@link Camera.setOrthographic}).
+   * @throws RangeError when the fields are out of range (see {@link Camera.setPerspective}/{@link Camera.setOrthographic}),
+   * or when together they give a matrix (or inverse) that is not finite in float32, as uniforms are (e.g. near =
+   * 1e-320); the matrices are then left unchanged.
    */
   updateProjectionMatrix(): void {
     const { near, far, zoom } = this;
@@ -275,7 +284,7 @@ export class Camera extends ThreeCamera {
       const height = 2 * top;
       const width = this.aspect * height;
       const left = -0.5 * width;
-      this.projectionMatrix.makePerspective(
+      _p.makePerspective(
         left,
         left + width,
         top,
@@ -291,7 +300,7 @@ export class Camera extends ThreeCamera {
       const dy = (this.top - this.bottom) / (2 * zoom);
       const cx = (this.right + this.left) / 2;
       const cy = (this.top + this.bottom) / 2;
-      this.projectionMatrix.makeOrthographic(
+      _p.makeOrthographic(
         cx - dx,
         cx + dx,
         cy + dy,
@@ -302,7 +311,14 @@ export class Camera extends ThreeCamera {
         this.reversedDepth,
       );
     }
-    this.projectionMatrixInverse.copy(this.projectionMatrix).invert();
+    _pi.copy(_p).invert();
+    if (![..._p.elements, ..._pi.elements].every((x) => Number.isFinite(Math.fround(x)))) {
+      throw new RangeError(
+        `near, far, zoom (${near}, ${far}, ${zoom}), aspect, fovy or extent give a non-finite float32 matrix`,
+      );
+    }
+    this.projectionMatrix.copy(_p);
+    this.projectionMatrixInverse.copy(_pi);
   }
 
   /**

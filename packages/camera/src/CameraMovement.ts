@@ -1,4 +1,6 @@
-import { Controls, type Object3D } from 'three';
+import { Controls, type Object3D, Vector3 } from 'three';
+import { checkCoordinates } from './readVector3.js';
+import { check } from './validateProjection.js';
 
 /** Events of {@link CameraMovement}: `change` after every move or turn, `start`/`end` around a pointer drag. */
 export interface CameraMovementEventMap {
@@ -34,11 +36,9 @@ export const MOVEMENT_KEYS: Readonly<Record<string, readonly [axis: 'u' | 'v' | 
   PageDown: ['v', -1],
 };
 
-function checkSpeed(name: string, value: number): number {
-  if (!(value >= 0 && Number.isFinite(value)))
-    throw new RangeError(`${name} must be finite and ≥ 0, got ${value}`);
-  return value;
-}
+const speed = (v: number) => v >= 0 && v < Number.POSITIVE_INFINITY;
+
+const _next = /* @__PURE__ */ new Vector3();
 
 /**
  * The lecture's `addEventHandlers()` as a three.js `Controls`: keys move the camera along its own axes and a
@@ -62,9 +62,15 @@ function checkSpeed(name: string, value: number): number {
  * {@link CameraMovement.dispose} no listener is left.
  */
 export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
-  /** Distance moved per key press, world units, ≥ 0. @defaultValue 0.1 */
+  /**
+   * Distance moved per key press, world units, finite and ≥ 0 (checked by the constructor; a key press with a
+   * bad value assigned later moves nothing). @defaultValue 0.1
+   */
   moveSpeed: number;
-  /** Turn per pixel dragged, radians per CSS pixel, ≥ 0. @defaultValue 0.005 */
+  /**
+   * Turn per pixel dragged, radians per CSS pixel, finite and ≥ 0 (checked by the constructor; a drag with a bad
+   * value assigned later turns nothing). @defaultValue 0.005
+   */
   turnSpeed: number;
 
   private _dragging = -1;
@@ -84,8 +90,10 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
     { moveSpeed = 0.1, turnSpeed = 0.005 }: CameraMovementOptions = {},
   ) {
     super(camera, null);
-    this.moveSpeed = checkSpeed('moveSpeed', moveSpeed);
-    this.turnSpeed = checkSpeed('turnSpeed', turnSpeed);
+    check(moveSpeed, speed, 'moveSpeed', 'finite and ≥ 0');
+    check(turnSpeed, speed, 'turnSpeed', 'finite and ≥ 0');
+    this.moveSpeed = moveSpeed;
+    this.turnSpeed = turnSpeed;
     if (element !== null) this.connect(element);
   }
 
@@ -127,12 +135,17 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
   /**
    * Move along the camera's axes by a step in each (world units): `+w` is backwards, `−w` forwards.
    * Dispatches `change` when anything moved.
+   * @throws RangeError naming du, dv, dw when one is not a finite number, or when the move would take
+   * a coordinate beyond ±1e30 world units, where float32 view matrices overflow (the object then stays put).
    */
   move(du: number, dv: number, dw: number): void {
+    for (const d of [du, dv, dw]) check(d, Number.isFinite, 'du, dv, dw', 'finite');
     if (du === 0 && dv === 0 && dw === 0) return;
-    this.object.translateX(du);
-    this.object.translateY(dv);
-    this.object.translateZ(dw);
+    // Along the object's own axes (as translateX/Y/Z), checked before anything moves.
+    const { position, quaternion } = this.object;
+    position.copy(
+      checkCoordinates(_next.set(du, dv, dw).applyQuaternion(quaternion).add(position), 'du, dv, dw'),
+    );
     this.object.updateMatrixWorld();
     this.dispatchEvent({ type: 'change' });
   }
@@ -140,8 +153,10 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
   /**
    * Turn the gaze: `yaw` radians about `v` (positive turns left), then `pitch` radians about `u` (positive turns up).
    * Dispatches `change` when anything turned.
+   * @throws RangeError naming yaw, pitch when one is not a finite number.
    */
   turn(yaw: number, pitch: number): void {
+    for (const a of [yaw, pitch]) check(a, Number.isFinite, 'yaw, pitch', 'finite');
     if (yaw === 0 && pitch === 0) return;
     this.object.rotateY(yaw);
     this.object.rotateX(pitch);
@@ -155,8 +170,12 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
     const step = MOVEMENT_KEYS[event.code];
     if (step === undefined) return;
     event.preventDefault();
-    const d = step[1] * this.moveSpeed;
-    this.move(step[0] === 'u' ? d : 0, step[0] === 'v' ? d : 0, step[0] === 'w' ? d : 0);
+    try {
+      const d = step[1] * this.moveSpeed;
+      this.move(step[0] === 'u' ? d : 0, step[0] === 'v' ? d : 0, step[0] === 'w' ? d : 0);
+    } catch {
+      // A bad moveSpeed, or ±1e30 world units reached: the camera stays where it is.
+    }
   };
 
   private readonly _onPointerDown = (event: PointerEvent): void => {
@@ -176,7 +195,11 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
     const dy = event.clientY - this._y;
     this._x = event.clientX;
     this._y = event.clientY;
-    if (this.enabled) this.turn(-dx * this.turnSpeed, -dy * this.turnSpeed);
+    try {
+      if (this.enabled) this.turn(-dx * this.turnSpeed, -dy * this.turnSpeed);
+    } catch {
+      // A bad or huge turnSpeed (the angle overflowed): this move turns nothing.
+    }
   };
 
   private readonly _onPointerUp = (event: PointerEvent): void => {

@@ -28,12 +28,24 @@ export function readVector3(input: unknown, name: string, target: Vector3): Vect
     );
   }
   if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') {
-    throw new TypeError(`${name} must have numeric x, y, z, got (${String(x)}, ${String(y)}, ${String(z)})`);
+    throw new TypeError(`${name} must have numeric x, y, z, got (${typeof x}, ${typeof y}, ${typeof z})`);
   }
   if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
     throw new RangeError(`${name} must be finite, got (${x}, ${y}, ${z}); allowed: finite numbers`);
   }
   return target.set(x, y, z);
+}
+
+/**
+ * `v`, unless a coordinate is beyond ±1e30 world units (or NaN): then a RangeError naming `name`. Camera positions
+ * stay within this bound so that view matrices stay finite in float32, as they are uploaded.
+ * @internal
+ */
+export function checkCoordinates(v: Vector3, name: string): Vector3 {
+  if (!(Math.max(Math.abs(v.x), Math.abs(v.y), Math.abs(v.z)) <= 1e30)) {
+    throw new RangeError(`${name} must be within ±1e30, got (${v.x}, ${v.y}, ${v.z})`);
+  }
+  return v;
 }
 
 /**

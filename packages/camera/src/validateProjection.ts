@@ -1,25 +1,33 @@
-/** @internal Throws a RangeError naming `name`, its value and the allowed range unless `ok`. */
-function check(ok: boolean, name: string, value: number, allowed: string): void {
-  if (!ok) throw new RangeError(`${name} must be ${allowed}, got ${value}`);
+/**
+ * @internal Throws a TypeError naming `name` unless `value` is a number, and a RangeError naming it, its value and
+ * the allowed range unless `ok(value)`.
+ */
+export function check(value: unknown, ok: (v: number) => boolean, name: string, allowed: string): void {
+  if (typeof value !== 'number')
+    throw new TypeError(`${name} must be a number ${allowed}, got ${typeof value}`);
+  if (!ok(value)) throw new RangeError(`${name} must be ${allowed}, got ${value}`);
 }
+
+const finite = Number.isFinite;
 
 /**
  * Validate perspective parameters.
- * @throws RangeError naming the first bad parameter: fovy ∉ (0, 180) degrees, aspect ≤ 0, near ≤ 0, far ≤ near,
- * zoom ≤ 0, or any of them NaN/infinite.
+ * @throws TypeError naming the first parameter that is not a number; RangeError naming the first bad parameter:
+ * fovy ∉ (0, 180) degrees, aspect ≤ 0, near ≤ 0, far ≤ near, zoom ≤ 0, or any of them NaN/infinite.
  * @internal
  */
 export function validatePerspective(fovy: number, aspect: number, near: number, far: number, zoom = 1): void {
-  check(fovy > 0 && fovy < 180, 'fovy', fovy, 'in (0, 180) degrees');
-  check(aspect > 0 && Number.isFinite(aspect), 'aspect', aspect, 'finite and > 0');
-  check(near > 0 && Number.isFinite(near), 'near', near, 'finite and > 0');
-  check(far > near && Number.isFinite(far), 'far', far, `finite and > near (${near})`);
-  check(zoom > 0 && Number.isFinite(zoom), 'zoom', zoom, 'finite and > 0');
+  check(fovy, (v) => v > 0 && v < 180, 'fovy', 'in (0, 180) degrees');
+  check(aspect, (v) => v > 0 && finite(v), 'aspect', 'finite and > 0');
+  check(near, (v) => v > 0 && finite(v), 'near', 'finite and > 0');
+  check(far, (v) => v > near && finite(v), 'far', `finite and > near (${near})`);
+  check(zoom, (v) => v > 0 && finite(v), 'zoom', 'finite and > 0');
 }
 
 /**
  * Validate orthographic parameters (any finite near, including ≤ 0, is allowed: orthographic depth is linear).
- * @throws RangeError naming the first bad parameter: r = l, t = b, far ≤ near, zoom ≤ 0, or any NaN/infinite.
+ * @throws TypeError naming the first parameter that is not a number; RangeError naming the first bad parameter:
+ * r = l, t = b, far ≤ near, zoom ≤ 0, or any NaN/infinite.
  * @internal
  */
 export function validateOrthographic(
@@ -31,11 +39,11 @@ export function validateOrthographic(
   far: number,
   zoom = 1,
 ): void {
-  check(Number.isFinite(right), 'right', right, 'finite');
-  check(Number.isFinite(left) && left !== right, 'left', left, `finite and ≠ right (${right})`);
-  check(Number.isFinite(top), 'top', top, 'finite');
-  check(Number.isFinite(bottom) && bottom !== top, 'bottom', bottom, `finite and ≠ top (${top})`);
-  check(Number.isFinite(near), 'near', near, 'finite');
-  check(far > near && Number.isFinite(far), 'far', far, `finite and > near (${near})`);
-  check(zoom > 0 && Number.isFinite(zoom), 'zoom', zoom, 'finite and > 0');
+  check(right, finite, 'right', 'finite');
+  check(left, (v) => finite(v) && v !== right, 'left', `finite and ≠ right (${right})`);
+  check(top, finite, 'top', 'finite');
+  check(bottom, (v) => finite(v) && v !== top, 'bottom', `finite and ≠ top (${top})`);
+  check(near, finite, 'near', 'finite');
+  check(far, (v) => v > near && finite(v), 'far', `finite and > near (${near})`);
+  check(zoom, (v) => v > 0 && finite(v), 'zoom', 'finite and > 0');
 }
