@@ -40,9 +40,11 @@ uniform mat3 shadingNormalMatrix; // sign(det)·cof(M)
 ${/* @__PURE__ */ lightingChunk(shadingFragmentShader)}
 void main() {
   // The pixel's ray between the near and far planes, in model space (perspective and orthographic alike).
+  // (P·V·M)⁻¹·(x, y, ∓1, 1) = x·c0 + y·c1 + c3 ∓ c2 with c the columns: one shared part, two points.
   vec2 ndc = (gl_FragCoord.xy - impostorViewport.xy) / impostorViewport.zw * 2.0 - 1.0;
-  vec4 nearH = impostorInverseMvp * vec4(ndc, -1.0, 1.0);
-  vec4 farH = impostorInverseMvp * vec4(ndc, 1.0, 1.0);
+  vec4 through = impostorInverseMvp[0] * ndc.x + impostorInverseMvp[1] * ndc.y + impostorInverseMvp[3];
+  vec4 nearH = through - impostorInverseMvp[2];
+  vec4 farH = through + impostorInverseMvp[2];
   vec3 o = nearH.xyz / nearH.w;
   vec3 d = farH.xyz / farH.w - o;
   float len = length(d);

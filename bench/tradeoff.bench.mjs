@@ -1,0 +1,242 @@
+// The speed/accuracy trade of drawing the lecture's sphere: every shading (flat, Gouraud, Phong meshes of
+// every base at levels 0 … 7, and the ray-cast impostor) measured against the exact answer (renderReference)
+// at 1280×720 in headless Chromium (SwiftShader): interior RMSE and max error in 8-bit sRGB, silhouette error
+// in pixels, frame time (1×1 readPixels after each frame, warm-up, median of pooled round-robin rounds),
+// triangles and buffer bytes. Then the Pareto front and, for each error target, the cheapest option meeting
+// it. Last, the auto-detail zoom sweep: triangles of AutoDetailSphere's choice against a fixed level 6.
+//
+//   node bench/tradeoff.bench.mjs [--json PATH] [--levels 0,1,...,7] [--frames 15] [--rounds 3]
+import { execFileSync } from 'node:child_process';
+import { createReadStream, existsSync, statSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { loadavg } from 'node:os';
+import { extname, join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from '@playwright/test';
+import { AutoDetailSphere, SPHERE_BASES, sphereCounts, sphereError } from '@shadelab/sphere';
+import { MeshBasicMaterial, PerspectiveCamera } from 'three';
+import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
+import { summarize, writeResults } from './lib/bench.mjs';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+/** @param {string} name @param {string} fallback */
+const arg = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? process.argv[i + 1] : fallback;
+};
+const levels = arg('--levels', '0,1,2,3,4,5,6,7').split(',').map(Number);
+const frames = Number(arg('--frames', '15'));
+const rounds = Number(arg('--rounds', '3'));
+const WIDTH = 1280;
+const HEIGHT = 720;
+const loadBefore = loadavg();
+
+// 1. Build the harness pages into a folder of our own (git-ignored by the dist-* pattern).
+const outDir = 'dist-e2e-bench-tradeoff';
+execFileSync(
+  'npx',
+  ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
+  {
+    cwd: root,
+    stdio: 'inherit',
+  },
+);
+const served = join(root, 'playground', outDir);
+
+// 2. A tiny static server on a free port.
+/** @type {Record<string, string>} */
+const types = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.json': 'application/json',
+};
+const server = createServer((req, res) => {
+  const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
+    /^(\.\.[/\\])+/,
+    '',
+  );
+  const file = join(served, path);
+  if (!file.startsWith(served) || !existsSync(file) || !statSync(file).isFile()) {
+    res.writeHead(404).end();
+    return;
+  }
+  res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
+  createReadStream(file).pipe(res);
+});
+await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
+const address = server.address();
+const port = typeof address === 'object' && address ? address.port : 0;
+
+const browser = await chromium.launch({
+  executablePath: chromiumExecutable() ?? undefined,
+  args: chromiumArgs,
+});
+const page = await browser.newPage({ viewport: { width: WIDTH, height: HEIGHT } });
+await page.goto(`http://127.0.0.1:${port}/harness/tradeoff.html`);
+await page.waitForFunction(() => document.body.dataset.ready === '1');
+
+/** @typedef {import('../playground/src/tradeoff/tradeoffScene').TradeOption} TradeOption */
+/** @typedef {import('../playground/src/tradeoff/tradeoffScene').TradeView} TradeView */
+/** @type {TradeView} */
+const view = { width: WIDTH, height: HEIGHT };
+
+/** @type {TradeOption[]} */
+const options = [{ shading: 'impostor' }];
+for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {
+  for (const base of SPHERE_BASES) for (const level of levels) options.push({ shading, base, level });
+}
+/** @param {TradeOption} o */
+const key = (o) => (o.shading === 'impostor' ? 'impostor' : `${o.shading} ${o.base} ${o.level}`);
+
+// 3. Errors (one frame each; the reference is computed once in the page and cached).
+const referenceMs = await page.evaluate((v) => window.tradeoff.referenceMs(v), view);
+console.log(`reference ${WIDTH}×${HEIGHT} in the page: ${referenceMs.toFixed(0)} ms`);
+/** @type {Record<string, any>} */
+const rows = {};
+for (const option of options) {
+  const error = await page.evaluate(
+    ([v, o]) => window.tradeoff.compare(v, o),
+    /** @type {const} */ ([view, option]),
+  );
+  const cost = await page.evaluate((o) => window.tradeoff.cost(o), option);
+  rows[key(option)] = { option, ...cost, error, frames: /** @type {number[]} */ ([]) };
+}
+
+// 4. Frame times, round-robin so that load from other processes spreads over every option.
+for (let round = 0; round < rounds; round++) {
+  for (const option of options) {
+    const times = await page.evaluate(
+      ([v, o, n, w]) => window.tradeoff.time(v, o, n, w),
+      /** @type {const} */ ([view, option, Math.ceil(frames / rounds), round === 0 ? 3 : 1]),
+    );
+    rows[key(option)].frames.push(...times);
+  }
+}
+for (const row of Object.values(rows)) {
+  row.frameMs = summarize(row.frames);
+  delete row.frames;
+}
+
+// 5. Pareto front (frame time against each error) and the cheapest option per error target.
+const list = Object.entries(rows).map(([name, r]) => ({ name, ...r }));
+/** @param {(r: any) => number} err */
+function front(err) {
+  const sorted = [...list].sort((a, b) => a.frameMs.median - b.frameMs.median || err(a) - err(b));
+  const out = [];
+  let best = Number.POSITIVE_INFINITY;
+  for (const r of sorted) {
+    if (err(r) < best) {
+      out.push(r.name);
+      best = err(r);
+    }
+  }
+  return out;
+}
+const paretoRmse = front((r) => r.error.rmse);
+const paretoSilhouette = front((r) => r.error.silhouettePx);
+const rmseTargets = [1, 2, 4, 8];
+const silhouetteTargets = [0.5, 1, 2, 4];
+/** @type {Record<string, Record<string, string | null>>} */
+const cheapest = {};
+for (const rt of rmseTargets) {
+  cheapest[`rmse≤${rt}`] = {};
+  for (const st of silhouetteTargets) {
+    const meets = list.filter((r) => r.error.rmse <= rt && r.error.silhouettePx <= st);
+    meets.sort((a, b) => a.frameMs.median - b.frameMs.median || a.bytes - b.bytes);
+    cheapest[`rmse≤${rt}`][`silhouette≤${st}px`] = meets[0]?.name ?? null;
+  }
+}
+
+await browser.close();
+server.close();
+
+// 6. Auto detail over a zoom sweep of the lecture scene (perspective 90°, 720 px high, ellipsoid (2, 1, 2)):
+// the triangles AutoDetailSphere draws against a fixed tetrahedron level 6, (a) at the 0.5 px budget and
+// (b) at equal error: the budget is level 6's own worst error over the sweep (at the nearest distance), so
+// both keep the same error bound at every distance.
+const fixed = sphereCounts('tetrahedron', 6).triangles;
+const material = new MeshBasicMaterial();
+const distances = Array.from({ length: 25 }, (_, i) => 2.25 * 1.15 ** i); // 2.25 … ~63 units from the centre
+/** @param {number} d @param {number} budget */
+function autoAt(d, budget) {
+  const camera = new PerspectiveCamera(90, WIDTH / HEIGHT, 0.1, 1000);
+  camera.position.set(0, 0, d);
+  camera.updateMatrixWorld();
+  const sphere = new AutoDetailSphere(material, { maxErrorPx: budget, maxLevel: 10 });
+  sphere.scale.set(2, 1, 2);
+  sphere.update(camera, HEIGHT);
+  const { base, level, triangles, errorPx, radiusPx } = sphere.detail;
+  sphere.dispose();
+  return { base, level, triangles, errorPx, radiusPx };
+}
+const fixedError = distances.map((d) => autoAt(d, 0.5).radiusPx * sphereError('tetrahedron', 6));
+const equalBudget = Math.max(...fixedError);
+const sweep = distances.map((d, i) => {
+  const half = autoAt(d, 0.5);
+  const equal = autoAt(d, equalBudget);
+  return { distance: d, radiusPx: half.radiusPx, fixedErrorPx: fixedError[i], auto: half, autoEqual: equal };
+});
+const sum = (/** @type {number[]} */ a) => a.reduce((s, x) => s + x, 0);
+const zoomSweep = {
+  fixed: { base: 'tetrahedron', level: 6, triangles: fixed },
+  equalBudgetPx: equalBudget,
+  points: sweep,
+  trianglesFixed: fixed * sweep.length,
+  trianglesAutoHalfPx: sum(sweep.map((s) => s.auto.triangles)),
+  trianglesAutoEqualError: sum(sweep.map((s) => s.autoEqual.triangles)),
+  fixedMeetsHalfPx: sweep.filter((s) => s.fixedErrorPx <= 0.5).length,
+};
+
+const results = {
+  width: WIDTH,
+  height: HEIGHT,
+  frames,
+  rounds,
+  referenceMs,
+  load: { before: loadBefore, after: loadavg() },
+  note: 'headless Chromium, SwiftShader WebGL2 (CPU rendering): frame times are CPU-bound and relative; shared, loaded machine unless rerun quietly',
+  rows,
+  paretoRmse,
+  paretoSilhouette,
+  cheapest,
+  zoomSweep,
+};
+
+// 7. Tables.
+console.log(
+  `\nlecture scene ${WIDTH}×${HEIGHT}; frame ms = median of ${frames} (load ${loadBefore.map((x) => x.toFixed(1)).join(' ')})`,
+);
+console.log('| option | triangles | bytes | RMSE | max | silhouette px | frame ms (median) | min |');
+console.log('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+for (const r of list) {
+  console.log(
+    `| ${r.name} | ${r.triangles} | ${r.bytes} | ${r.error.rmse.toFixed(2)} | ${r.error.max} | ${r.error.silhouettePx.toFixed(2)} | ${r.frameMs.median.toFixed(2)} | ${r.frameMs.min.toFixed(2)} |`,
+  );
+}
+console.log(`\nPareto front (frame time vs RMSE): ${paretoRmse.join(' → ')}`);
+console.log(`Pareto front (frame time vs silhouette): ${paretoSilhouette.join(' → ')}`);
+console.log(`\n| cheapest meeting | ${silhouetteTargets.map((s) => `silhouette ≤ ${s} px`).join(' | ')} |`);
+console.log(`| --- | ${silhouetteTargets.map(() => '---').join(' | ')} |`);
+for (const rt of rmseTargets) {
+  console.log(
+    `| RMSE ≤ ${rt} | ${silhouetteTargets.map((s) => cheapest[`rmse≤${rt}`][`silhouette≤${s}px`] ?? '—').join(' | ')} |`,
+  );
+}
+const pct = (/** @type {number} */ n) => `${((1 - n / zoomSweep.trianglesFixed) * 100).toFixed(1)} % saved`;
+console.log(
+  `\nzoom sweep, ${sweep.length} distances from ${distances[0]} to ${distances.at(-1)?.toFixed(1)}:`,
+);
+console.log('| distance | radius px | tetrahedron 6 error px | auto 0.5 px | auto at equal error |');
+console.log('| ---: | ---: | ---: | --- | --- |');
+for (const p of sweep) {
+  const show = (/** @type {{ base: string, level: number, triangles: number }} */ a) =>
+    `${a.base} ${a.level} (${a.triangles})`;
+  console.log(
+    `| ${p.distance.toFixed(2)} | ${p.radiusPx.toFixed(1)} | ${p.fixedErrorPx.toFixed(3)} | ${show(p.auto)} | ${show(p.autoEqual)} |`,
+  );
+}
+console.log(
+  `totals: fixed ${zoomSweep.trianglesFixed} (meets 0.5 px at ${zoomSweep.fixedMeetsHalfPx}/${sweep.length}); auto 0.5 px ${zoomSweep.trianglesAutoHalfPx} (${pct(zoomSweep.trianglesAutoHalfPx)}); auto at level 6's worst error ${equalBudget.toFixed(3)} px: ${zoomSweep.trianglesAutoEqualError} (${pct(zoomSweep.trianglesAutoEqualError)})`,
+);
+writeResults(results);
