@@ -1,8 +1,10 @@
-// Ready to `npm install`: the packed tarballs, installed into two fresh apps made in a temporary folder (one on
-// plain three.js, one on react-three-fiber), type-check with the app's own TypeScript 5 in strict mode (our
-// .d.ts included: skipLibCheck off), build with Vite and render the lecture's scene in Chromium.
-// The app sources are tools/pack-apps/<app>/ (kept out of the repo's own type check: the r3f app needs
-// @react-three/fiber, which only the temporary app installs). SHADELAB_PACK_KEEP=1 keeps the temporary folder.
+// Ready to `npm install`: the packed tarballs, installed into fresh apps made in a temporary folder (plain
+// three.js on the newest and on the oldest supported three, and react-three-fiber), type-check with the app's
+// own TypeScript 5 in strict mode, build with Vite and render the lecture's scene in Chromium. The three.js
+// apps check every declaration file too (skipLibCheck off: our .d.ts against @types/three old and new); the
+// r3f app keeps Vite's template default (skipLibCheck on). The app sources are tools/pack-apps/<app>/ (kept out
+// of the repo's own type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
+// SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
 import {
   cpSync,
@@ -242,7 +244,7 @@ async function checkLectureScene(page: Page, app: App): Promise<void> {
 test.describe.configure({ mode: 'serial' });
 
 test.beforeAll(async () => {
-  // npm install of two apps, two strict type checks and two Vite builds on a 2-core machine.
+  // npm install of three apps, three strict type checks and three Vite builds on a 2-core machine.
   test.setTimeout(420_000);
   tmp = mkdtempSync(join(tmpdir(), 'shadelab-pack-'));
   packed = await timed('pack (tsc -b, npm pack)', async () => packPackages(join(tmp, 'tarballs')));
