@@ -76,10 +76,13 @@ const _ball: Vec3 = [0, 0, 0];
 const _arc: Quat = [0, 0, 0, 1];
 
 function positive(name: string, value: number, allowZero: boolean, finite = true): number {
-  const ok = (allowZero ? value >= 0 : value > 0) && (!finite || value < Number.POSITIVE_INFINITY);
+  const ok =
+    typeof value === 'number' &&
+    (allowZero ? value >= 0 : value > 0) &&
+    (!finite || value < Number.POSITIVE_INFINITY);
   if (!ok) {
     const range = `${allowZero ? '≥ 0' : '> 0'}${finite ? ' and finite' : ''}`;
-    throw new RangeError(`Trackball: ${name} must be a number ${range}, got ${value}`);
+    throw new RangeError(`Trackball: ${name} must be a number ${range}, got ${String(value)}`);
   }
   return value;
 }
@@ -171,6 +174,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this.dampingFactor = dampingFactor;
     this.radius = radius;
     this.target = target ? target.clone() : object ? object.getWorldPosition(new Vector3()) : new Vector3();
+    positive('target', Math.abs(this.target.x + this.target.y + this.target.z), true);
     this._objectHome.copy(this.object.quaternion);
     if (domElement !== null) this.connect(domElement);
   }
@@ -235,8 +239,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     return this._dampingFactor;
   }
   set dampingFactor(value: number) {
-    if (!(value > 0 && value <= 1)) {
-      throw new RangeError(`Trackball: dampingFactor must be in (0, 1], got ${value}`);
+    if (!(typeof value === 'number' && value > 0 && value <= 1)) {
+      throw new RangeError(`Trackball: dampingFactor must be in (0, 1], got ${String(value)}`);
     }
     this._dampingFactor = value;
   }
@@ -374,10 +378,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     const next = Math.min(this._maxZoom, Math.max(this._minZoom, value));
     const ratio = next / this._zoom;
     if (!(ratio > 0 && ratio < Number.POSITIVE_INFINITY) || ratio === 1) return false;
-    this._zoom = next;
     const camera = this.camera;
-    if (!camera) return true;
-    if (camera.isOrthographicCamera) {
+    if (camera?.isOrthographicCamera) {
       if (typeof camera.zoom === 'number' && typeof camera.updateProjectionMatrix === 'function') {
         camera.zoom *= ratio;
         camera.updateProjectionMatrix();
@@ -387,12 +389,15 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
         for (const i of [0, 4, 8, 12, 1, 5, 9, 13]) e[i] *= ratio;
         camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
       }
-    } else if (camera.isPerspectiveCamera) {
+    } else if (camera?.isPerspectiveCamera) {
       camera.getWorldPosition(_eye).sub(this.target).divideScalar(ratio).add(this.target);
       if (camera.parent) camera.parent.worldToLocal(_eye);
+      // An extreme minZoom would put the eye at infinity: that step is refused.
+      if (!Number.isFinite(_eye.x + _eye.y + _eye.z)) return false;
       camera.position.copy(_eye);
       camera.updateMatrixWorld();
     }
+    this._zoom = next;
     return true;
   }
 
@@ -416,10 +421,10 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     if (!element) return false;
     const rect = element.getBoundingClientRect();
     const half = (Math.min(rect.width, rect.height) / 2) * this._radius;
-    if (!(half > 0) || !Number.isFinite(clientX) || !Number.isFinite(clientY)) return false;
     const x = (clientX - (rect.left + rect.width / 2)) / half;
     const y = (rect.top + rect.height / 2 - clientY) / half;
-    if (!Number.isFinite(x) || !Number.isFinite(y)) return false;
+    // NaN, infinite and absurd (synthetic) coordinates, or an element without size: no rotation.
+    if (!(Math.abs(x) + Math.abs(y) < 1e150)) return false;
     projectToBall(x, y, this._mapping, out);
     return true;
   }

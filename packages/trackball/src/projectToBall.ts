@@ -38,8 +38,10 @@ export function projectToBall(
       out[1] = y;
       out[2] = Math.sqrt(Math.max(0, 1 - r2));
     } else {
-      out[0] = x / r;
-      out[1] = y / r;
+      // Halved first: |(x, y)| itself can overflow (x = 1e308, y = 1.5e308).
+      const h = Math.hypot(x / 2, y / 2);
+      out[0] = x / 2 / h;
+      out[1] = y / 2 / h;
       out[2] = 0;
     }
     return out;
