@@ -122,11 +122,13 @@ export class TradeoffScene {
       this.renderer.setSize(v.width, v.height, false);
     }
     const aspect = v.width / v.height;
+    // The lecture's near 0.1 and far 10, pushed out when the eye is farther (zoomed out).
+    const far = Math.max(10, 2 * Math.hypot(...v.eye) + 4);
     if (v.projection === 'orthographic') {
       const h = 1.5;
-      this.camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, 0.1, 10);
+      this.camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, 0.1, far);
     } else {
-      this.camera = new PerspectiveCamera(v.fovy, aspect, 0.1, 10);
+      this.camera = new PerspectiveCamera(v.fovy, aspect, 0.1, far);
     }
     this.camera.position.set(...v.eye);
     this.camera.lookAt(0, 0, 0);

@@ -1,0 +1,127 @@
+// Error against frame time for every measured option (recharts), the Pareto front as a line, and the
+// current choice marked.
+import {
+  CartesianGrid,
+  Legend,
+  ResponsiveContainer,
+  Scatter,
+  ScatterChart,
+  Tooltip,
+  XAxis,
+  YAxis,
+} from 'recharts';
+import { type ErrorMetric, paretoFront, TRADE_POINTS, type TradePoint } from './benchData';
+
+const COLORS: Record<TradePoint['shading'], string> = {
+  flat: '#e0a040',
+  gouraud: '#60b0e0',
+  phong: '#80d080',
+  impostor: '#ff60c0',
+};
+
+/** Log axes cannot show 0: errors below this are drawn at it. */
+const FLOOR = 0.01;
+
+interface ChartPoint {
+  name: string;
+  x: number;
+  y: number;
+  triangles: number;
+  bytes: number;
+  error: number;
+}
+
+function toChart(points: readonly TradePoint[], metric: ErrorMetric): ChartPoint[] {
+  return points.map((p) => ({
+    name: p.name,
+    x: p.frameMs,
+    y: Math.max(p[metric], FLOOR),
+    triangles: p.triangles,
+    bytes: p.bytes,
+    error: p[metric],
+  }));
+}
+
+export interface ParetoChartProps {
+  metric: ErrorMetric;
+  /** The bench name of the current option (`'phong icosahedron 4'`, `'impostor'`). */
+  current: string;
+  onPick?: (point: TradePoint) => void;
+}
+
+export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
+  const label = metric === 'rmse' ? 'interior RMSE (8-bit sRGB)' : 'silhouette error (px)';
+  const front = toChart(paretoFront(TRADE_POINTS, metric), metric);
+  const chosen = toChart(
+    TRADE_POINTS.filter((p) => p.name === current),
+    metric,
+  );
+  const pick = (data: unknown) => {
+    const name = (data as { payload?: ChartPoint } | undefined)?.payload?.name;
+    const point = TRADE_POINTS.find((p) => p.name === name);
+    if (point && onPick) onPick(point);
+  };
+  return (
+    <ResponsiveContainer width="100%" height={380}>
+      <ScatterChart margin={{ top: 10, right: 20, bottom: 30, left: 10 }}>
+        <CartesianGrid stroke="#333" />
+        <XAxis
+          type="number"
+          dataKey="x"
+          name="frame"
+          unit=" ms"
+          scale="log"
+          domain={['auto', 'auto']}
+          tickFormatter={(v: number) => v.toFixed(v < 10 ? 1 : 0)}
+          stroke="#aaa"
+          label={{ value: 'frame time at 1280×720 (ms, log)', position: 'bottom', fill: '#aaa' }}
+        />
+        <YAxis
+          type="number"
+          dataKey="y"
+          name={label}
+          scale="log"
+          domain={['auto', 'auto']}
+          tickFormatter={(v: number) => String(Number(v.toPrecision(2)))}
+          stroke="#aaa"
+          label={{ value: `${label}, log`, angle: -90, position: 'insideLeft', fill: '#aaa', dy: 90 }}
+        />
+        <Tooltip
+          cursor={{ strokeDasharray: '3 3' }}
+          contentStyle={{ background: '#222', border: '1px solid #444' }}
+          formatter={(value, name, item) => {
+            const p = (item as { payload?: ChartPoint }).payload;
+            if (name === 'frame') return [`${Number(value).toFixed(1)} ms`, p?.name ?? ''];
+            return [
+              `${(p?.error ?? Number(value)).toFixed(2)} (${p?.triangles} triangles, ${p?.bytes} B)`,
+              label,
+            ];
+          }}
+        />
+        <Legend verticalAlign="top" />
+        {(['flat', 'gouraud', 'phong', 'impostor'] as const).map((shading) => (
+          <Scatter
+            key={shading}
+            name={shading}
+            data={toChart(
+              TRADE_POINTS.filter((p) => p.shading === shading),
+              metric,
+            )}
+            fill={COLORS[shading]}
+            onClick={pick}
+            isAnimationActive={false}
+          />
+        ))}
+        <Scatter
+          name="Pareto front"
+          data={front}
+          line={{ stroke: '#ddd', strokeDasharray: '4 3' }}
+          fill="none"
+          shape={() => <g />}
+          isAnimationActive={false}
+        />
+        <Scatter name="current" data={chosen} fill="#ff3030" shape="star" isAnimationActive={false} />
+      </ScatterChart>
+    </ResponsiveContainer>
+  );
+}

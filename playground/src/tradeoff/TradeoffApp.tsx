@@ -1,0 +1,253 @@
+// The trade-off page: the measured Pareto chart (error against frame time, the current choice marked), and
+// the current view drawn with the chosen option beside its error heat map against the exact reference,
+// recomputed live whenever the option or the zoom changes. The scene comes from the playground's URL state
+// (`#s=…`, same schema and parser) when there is one, else the lecture's.
+import { compareToReference, type ImageError } from '@shadelab/reference';
+import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
+import { useEffect, useMemo, useRef, useState } from 'react';
+import { readUrlState } from '../state/persist';
+import { cheapestMeeting, type ErrorMetric, TRADE_CONDITIONS, type TradePoint } from './benchData';
+import { errorHeatmap } from './errorHeatmap';
+import { ParetoChart } from './ParetoChart';
+import { optionCost, optionKey, type TradeOption, TradeoffScene, type TradeView } from './tradeoffScene';
+
+const WIDTH = 640;
+const HEIGHT = 360;
+const MAX_LEVEL = 7;
+
+interface Initial {
+  view: TradeView;
+  option: TradeOption;
+}
+
+/** The playground's state from the URL, mapped onto the trade-off scene (camera looks at the origin). */
+function initialFromUrl(): Initial {
+  const view: TradeView = { width: WIDTH, height: HEIGHT };
+  const parsed = readUrlState();
+  if (parsed === null || !parsed.ok) {
+    return { view, option: { shading: 'phong', base: 'tetrahedron', level: 6 } };
+  }
+  const { material, lights, model, camera, sphere } = parsed.state;
+  return {
+    view: {
+      ...view,
+      projection: camera.projection,
+      fovy: camera.fovy,
+      eye: camera.eye,
+      scale: model.scale,
+      light: lights[0]?.position ?? [-5, 10, 20],
+      lighting: material.lighting,
+      celBands: material.celBands,
+      shininess: material.shininess,
+      ka: material.ka,
+      kd: material.kd,
+      ks: material.ks,
+    },
+    option: { shading: material.shading, base: sphere.base, level: Math.min(sphere.level, MAX_LEVEL) },
+  };
+}
+
+interface Live {
+  error: ImageError;
+  ms: number;
+}
+
+export function TradeoffApp() {
+  const initial = useMemo(initialFromUrl, []);
+  const [option, setOption] = useState<TradeOption>(initial.option);
+  const [zoom, setZoom] = useState(1);
+  const [metric, setMetric] = useState<ErrorMetric>('rmse');
+  const [targetRmse, setTargetRmse] = useState(2);
+  const [targetSilhouette, setTargetSilhouette] = useState(0.5);
+  const [live, setLive] = useState<Live | null>(null);
+  const [failure, setFailure] = useState<string | null>(null);
+  const viewCanvas = useRef<HTMLCanvasElement>(null);
+  const heatCanvas = useRef<HTMLCanvasElement>(null);
+  const trade = useRef<TradeoffScene | null>(null);
+
+  useEffect(() => {
+    const canvas = viewCanvas.current;
+    if (canvas === null) return;
+    try {
+      trade.current = new TradeoffScene(canvas);
+    } catch (e) {
+      setFailure(`WebGL2 is not available: ${String(e)}`);
+    }
+    return () => {
+      trade.current?.dispose();
+      trade.current = null;
+    };
+  }, []);
+
+  useEffect(() => {
+    const scene = trade.current;
+    const heat = heatCanvas.current?.getContext('2d');
+    if (!scene || !heat) return;
+    const eye = (initial.view.eye ?? [0, 0, 3]).map((c) => c * zoom) as [number, number, number];
+    try {
+      scene.setView({ ...initial.view, eye });
+      scene.setOption(option);
+      scene.render();
+      const t0 = performance.now();
+      const pixels = scene.readPixels();
+      const reference = scene.reference();
+      const error = compareToReference(pixels, reference);
+      const ms = performance.now() - t0;
+      heat.putImageData(new ImageData(errorHeatmap(error, reference), WIDTH, HEIGHT), 0, 0);
+      setLive({ error, ms });
+      setFailure(null);
+    } catch (e) {
+      setFailure(String(e));
+    }
+  }, [option, zoom, initial]);
+
+  const name = optionKey(option);
+  const cost = optionCost(option);
+  const shading = option.shading;
+  const base: SphereBase = option.shading === 'impostor' ? 'icosahedron' : option.base;
+  const level = option.shading === 'impostor' ? 4 : option.level;
+  const setShading = (s: TradeOption['shading']) =>
+    setOption(s === 'impostor' ? { shading: 'impostor' } : { shading: s, base, level });
+  const pick = (p: TradePoint) => setOption(p.option);
+  const cheapest = cheapestMeeting(targetRmse, targetSilhouette);
+
+  return (
+    <div className="tradeoff">
+      <h1>Speed against accuracy: the lit sphere against its exact image</h1>
+      <div className="controls">
+        <label>
+          shading
+          <select
+            data-testid="shading"
+            value={shading}
+            onChange={(e) => setShading(e.target.value as TradeOption['shading'])}
+          >
+            {(['flat', 'gouraud', 'phong', 'impostor'] as const).map((s) => (
+              <option key={s}>{s}</option>
+            ))}
+          </select>
+        </label>
+        <label>
+          base
+          <select
+            data-testid="base"
+            value={base}
+            disabled={shading === 'impostor'}
+            onChange={(e) =>
+              option.shading !== 'impostor' && setOption({ ...option, base: e.target.value as SphereBase })
+            }
+          >
+            {SPHERE_BASES.map((b) => (
+              <option key={b}>{b}</option>
+            ))}
+          </select>
+        </label>
+        <label>
+          level
+          <input
+            data-testid="level"
+            type="range"
+            min={0}
+            max={MAX_LEVEL}
+            value={level}
+            disabled={shading === 'impostor'}
+            onChange={(e) =>
+              option.shading !== 'impostor' && setOption({ ...option, level: Number(e.target.value) })
+            }
+          />
+          {level}
+        </label>
+        <label>
+          eye distance ×
+          <input
+            data-testid="zoom"
+            type="range"
+            min={0.8}
+            max={6}
+            step={0.05}
+            value={zoom}
+            onChange={(e) => setZoom(Number(e.target.value))}
+          />
+          {zoom.toFixed(2)}
+        </label>
+        <label>
+          chart
+          <select value={metric} onChange={(e) => setMetric(e.target.value as ErrorMetric)}>
+            <option value="rmse">RMSE</option>
+            <option value="silhouettePx">silhouette</option>
+          </select>
+        </label>
+        <label>
+          target RMSE ≤
+          <input
+            type="number"
+            min={0}
+            step={0.5}
+            value={targetRmse}
+            onChange={(e) => setTargetRmse(Number(e.target.value))}
+            style={{ width: '4em' }}
+          />
+        </label>
+        <label>
+          silhouette ≤
+          <input
+            type="number"
+            min={0}
+            step={0.25}
+            value={targetSilhouette}
+            onChange={(e) => setTargetSilhouette(Number(e.target.value))}
+            style={{ width: '4em' }}
+          />
+          px
+        </label>
+        <button
+          type="button"
+          data-testid="cheapest"
+          disabled={!cheapest}
+          onClick={() => cheapest && pick(cheapest)}
+        >
+          {cheapest ? `cheapest: ${cheapest.name}` : 'no option meets it'}
+        </button>
+      </div>
+      <section>
+        <h2>
+          {name} — {cost.triangles} triangles, {cost.bytes} B of buffers
+        </h2>
+        <canvas ref={viewCanvas} width={WIDTH} height={HEIGHT} data-testid="view" />
+      </section>
+      <section>
+        <h2>error against the exact reference</h2>
+        <canvas ref={heatCanvas} width={WIDTH} height={HEIGHT} data-testid="heatmap" />
+        <p className="legend">
+          grey: exact · yellow → red: interior colour error 1 … 16+ codes · cyan: silhouette off (brighter =
+          farther)
+        </p>
+        {live && (
+          <dl className="stats" data-testid="stats">
+            <dt>RMSE</dt>
+            <dd data-testid="rmse">{live.error.rmse.toFixed(2)}</dd>
+            <dt>max</dt>
+            <dd>{live.error.max}</dd>
+            <dt>silhouette</dt>
+            <dd data-testid="silhouette">{live.error.silhouettePx.toFixed(2)} px</dd>
+            <dt>mismatched</dt>
+            <dd>{live.error.mismatchedPixels} px</dd>
+            <dt>compare</dt>
+            <dd>{live.ms.toFixed(0)} ms (CPU reference + metrics)</dd>
+          </dl>
+        )}
+        {failure && <p className="note">{failure}</p>}
+      </section>
+      <section className="chart">
+        <h2>measured trade (click a point to draw it)</h2>
+        <ParetoChart metric={metric} current={name} onPick={pick} />
+        <p className="note">
+          Lecture scene at {TRADE_CONDITIONS.width}×{TRADE_CONDITIONS.height}, median of{' '}
+          {TRADE_CONDITIONS.frames} frames; {TRADE_CONDITIONS.note}; load average when measured{' '}
+          {TRADE_CONDITIONS.load.map((l: number) => l.toFixed(1)).join(' ')}. The live heat map above is the
+          current view ({WIDTH}×{HEIGHT}); the chart is the benchmark's.
+        </p>
+      </section>
+    </div>
+  );
+}
