@@ -75,6 +75,20 @@ test.describe('impostor vs reference', () => {
     expect(r.mismatchedPixels).toBe(0);
   });
 
+  test('extreme model scales (1e-20, 1e20) and a huge far/near view stay finite and agree with the reference', async ({
+    page,
+  }) => {
+    for (const scale of [1e-20, 1e20]) {
+      const r = await compare(page, { width: 160, height: 120, scale: [scale, scale, scale] });
+      expect(r.blackPixels).toBe(0);
+      expect(r.mismatchedBeyondHalfPx).toBe(0);
+    }
+    const far = await compare(page, { width: 160, height: 120, eye: [0, 0, 40], fovy: 8 });
+    expect(far.blackPixels).toBe(0);
+    expect(far.silhouettePx).toBeLessThanOrEqual(0.5);
+    expect(far.max).toBeLessThanOrEqual(2);
+  });
+
   test('the meshes converge on the same reference (phong, icosahedron 5 vs 1)', async ({ page }) => {
     const fine = await compare(
       page,
