@@ -32,6 +32,21 @@ test('trade-off page: live error of the current option, chart, cheapest pick', a
   expect(errors).toEqual([]);
 });
 
+test('trade-off page: auto detail keeps the silhouette within 0.5 px as the eye moves', async ({ page }) => {
+  await page.goto('/tradeoff.html');
+  await expect(page.getByTestId('stats')).toBeVisible();
+  await page.getByTestId('auto').check();
+  for (const zoom of ['0.9', '1.5', '3']) {
+    await page.getByTestId('zoom').fill(zoom);
+    await expect
+      .poll(async () => Number.parseFloat((await page.getByTestId('silhouette').textContent()) ?? 'NaN'))
+      .toBeLessThanOrEqual(0.5);
+  }
+  // Farther away needs fewer triangles: the level or base dropped from the nearest view.
+  const level = Number(await page.getByTestId('level').inputValue());
+  expect(level).toBeLessThanOrEqual(4);
+});
+
 test("trade-off page reads the playground's URL state", async ({ page }) => {
   const state = { material: { shading: 'gouraud' }, sphere: { base: 'octahedron', level: 3 } };
   await page.goto(`/tradeoff.html#s=${encodeURIComponent(JSON.stringify(state))}`);

@@ -3,7 +3,7 @@
 // recomputed live whenever the option or the zoom changes. The scene comes from the playground's URL state
 // (`#s=…`, same schema and parser) when there is one, else the lecture's.
 import { compareToReference, type ImageError } from '@shadelab/reference';
-import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
+import { chooseSphereDetail, projectedRadiusPx, SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { readUrlState } from '../state/persist';
 import { cheapestMeeting, type ErrorMetric, TRADE_CONDITIONS, type TradePoint } from './benchData';
@@ -59,6 +59,7 @@ export function TradeoffApp() {
   const [metric, setMetric] = useState<ErrorMetric>('rmse');
   const [targetRmse, setTargetRmse] = useState(2);
   const [targetSilhouette, setTargetSilhouette] = useState(0.5);
+  const [auto, setAuto] = useState(false);
   const [live, setLive] = useState<Live | null>(null);
   const [failure, setFailure] = useState<string | null>(null);
   const viewCanvas = useRef<HTMLCanvasElement>(null);
@@ -86,6 +87,20 @@ export function TradeoffApp() {
     const eye = (initial.view.eye ?? [0, 0, 3]).map((c) => c * zoom) as [number, number, number];
     try {
       scene.setView({ ...initial.view, eye });
+      if (auto && option.shading !== 'impostor') {
+        // detail 'auto': the cheapest base and level within 0.5 px on screen for this view.
+        scene.impostor.updateMatrixWorld();
+        const radiusPx = projectedRadiusPx({
+          camera: scene.camera,
+          matrixWorld: scene.impostor.matrixWorld,
+          viewportHeightPx: HEIGHT,
+        });
+        const detail = chooseSphereDetail({ radiusPx, maxErrorPx: 0.5, maxLevel: MAX_LEVEL });
+        if (detail.base !== option.base || detail.level !== option.level) {
+          setOption({ ...option, base: detail.base, level: detail.level });
+          return;
+        }
+      }
       scene.setOption(option);
       scene.render();
       const t0 = performance.now();
@@ -99,7 +114,7 @@ export function TradeoffApp() {
     } catch (e) {
       setFailure(String(e));
     }
-  }, [option, zoom, initial]);
+  }, [option, zoom, initial, auto]);
 
   const name = optionKey(option);
   const cost = optionCost(option);
@@ -156,6 +171,15 @@ export function TradeoffApp() {
             }
           />
           {level}
+        </label>
+        <label>
+          <input
+            data-testid="auto"
+            type="checkbox"
+            checked={auto}
+            onChange={(e) => setAuto(e.target.checked)}
+          />
+          auto detail (0.5 px)
         </label>
         <label>
           eye distance ×
