@@ -3,31 +3,14 @@
 // .gitignore. TypeDoc needs the TypeScript 5 compiler API, which the root's TypeScript 7 does not have, so it
 // lives in tools/docs, a separate npm project installed here when its node_modules is missing or stale.
 // --check: fail on any TypeDoc warning (an undocumented export, a broken {@link}).
-import { spawnSync } from 'node:child_process';
-import { createHash } from 'node:crypto';
-import { existsSync, readFileSync, writeFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { ensureDependencies, root, run } from './setup.mjs';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const tools = join(root, 'tools', 'docs');
 const out = join(root, 'docs', 'api');
 
-/** @param {string} cmd @param {string[]} args @param {string} [cwd] @returns {number} exit code */
-function run(cmd, args, cwd = root) {
-  const r = spawnSync(cmd, args, { cwd, stdio: 'inherit' });
-  if (r.error) throw r.error;
-  return r.status ?? 1;
-}
-
-const lock = join(tools, 'package-lock.json');
-const stamp = join(tools, 'node_modules', '.shadelab-lock-hash');
-const hash = createHash('sha256').update(readFileSync(lock)).digest('hex');
-if (!existsSync(stamp) || readFileSync(stamp, 'utf8') !== hash) {
-  console.log('docs: installing tools/docs (npm ci)…');
-  if (run('npm', ['ci', '--no-audit', '--no-fund', '--prefer-offline'], tools) !== 0) process.exit(1);
-  writeFileSync(stamp, hash);
-}
+ensureDependencies(tools);
 
 const typedoc = join(tools, 'node_modules', '.bin', 'typedoc');
 const args = ['--options', join(tools, 'typedoc.json'), '--out', out];

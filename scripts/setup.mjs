@@ -3,7 +3,7 @@
 import { spawnSync } from 'node:child_process';
 import { createHash } from 'node:crypto';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { dirname, join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -27,14 +27,25 @@ function must(cmd, args) {
   }
 }
 
-/** Install node modules when they are missing or older than package-lock.json. */
-export function ensureDependencies() {
-  const lock = join(root, 'package-lock.json');
-  const stamp = join(root, 'node_modules', '.shadelab-lock-hash');
+/**
+ * Install the node modules of `dir` (the repository root, or a separate tool project under tools/) when they
+ * are missing or older than its package-lock.json.
+ * @param {string} [dir]
+ */
+export function ensureDependencies(dir = root) {
+  const lock = join(dir, 'package-lock.json');
+  const stamp = join(dir, 'node_modules', '.shadelab-lock-hash');
   const hash = existsSync(lock) ? createHash('sha256').update(readFileSync(lock)).digest('hex') : 'none';
   if (existsSync(stamp) && readFileSync(stamp, 'utf8') === hash) return;
-  console.log('shadelab: installing node modules (npm ci)…');
-  must('npm', existsSync(lock) ? ['ci', '--no-audit', '--no-fund'] : ['install', '--no-audit', '--no-fund']);
+  console.log(`shadelab: installing node modules in ${relative(root, dir) || '.'} (npm ci)…`);
+  const args = existsSync(lock)
+    ? ['ci', '--no-audit', '--no-fund', '--prefer-offline']
+    : ['install', '--no-audit', '--no-fund'];
+  const code = run('npm', args, { cwd: dir });
+  if (code !== 0) {
+    console.error(`shadelab: npm ${args[0]} in ${dir} failed with exit code ${code}`);
+    process.exit(code);
+  }
   writeFileSync(stamp, hash);
 }
 

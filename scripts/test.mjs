@@ -18,6 +18,8 @@ const stages = [
     'npx',
     ['vitest', 'run', '--reporter=default', '--reporter=json', '--outputFile.json=test-results/vitest.json'],
   ],
+  ['unit (vitest) against the oldest supported three', 'node', ['scripts/three-compat.mjs']],
+  ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],
   ['end-to-end and visual (playwright)', 'npx', ['playwright', 'test']],
 ];
 
