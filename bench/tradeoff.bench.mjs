@@ -91,6 +91,7 @@ const key = (o) => (o.shading === 'impostor' ? 'impostor' : `${o.shading} ${o.ba
 
 // 3. Errors (one frame each; the reference is computed once in the page and cached).
 const referenceMs = await page.evaluate((v) => window.tradeoff.referenceMs(v), view);
+const gpuTimer = await page.evaluate(() => window.tradeoff.hasTimer);
 console.log(`reference ${WIDTH}×${HEIGHT} in the page: ${referenceMs.toFixed(0)} ms`);
 /** @type {Record<string, any>} */
 const rows = {};
@@ -100,7 +101,13 @@ for (const option of options) {
     /** @type {const} */ ([view, option]),
   );
   const cost = await page.evaluate((o) => window.tradeoff.cost(o), option);
-  rows[key(option)] = { option, ...cost, error, frames: /** @type {number[]} */ ([]) };
+  rows[key(option)] = {
+    option,
+    ...cost,
+    error,
+    frames: /** @type {number[]} */ ([]),
+    gpu: /** @type {number[]} */ ([]),
+  };
 }
 
 // 4. Frame times, round-robin so that load from other processes spreads over every option.
@@ -110,12 +117,15 @@ for (let round = 0; round < rounds; round++) {
       ([v, o, n, w]) => window.tradeoff.time(v, o, n, w),
       /** @type {const} */ ([view, option, Math.ceil(frames / rounds), round === 0 ? 3 : 1]),
     );
-    rows[key(option)].frames.push(...times);
+    rows[key(option)].frames.push(...times.frames);
+    rows[key(option)].gpu.push(...times.gpu);
   }
 }
 for (const row of Object.values(rows)) {
   row.frameMs = summarize(row.frames);
+  row.gpuMs = row.gpu.length ? summarize(row.gpu) : null;
   delete row.frames;
+  delete row.gpu;
 }
 
 // 5. Pareto front (frame time against each error) and the cheapest option per error target.
@@ -194,6 +204,7 @@ const results = {
   frames,
   rounds,
   referenceMs,
+  gpuTimer,
   load: { before: loadBefore, after: loadavg() },
   note: 'headless Chromium, SwiftShader WebGL2 (CPU rendering): frame times are CPU-bound and relative; shared, loaded machine unless rerun quietly',
   rows,
@@ -207,11 +218,11 @@ const results = {
 console.log(
   `\nlecture scene ${WIDTH}×${HEIGHT}; frame ms = median of ${frames} (load ${loadBefore.map((x) => x.toFixed(1)).join(' ')})`,
 );
-console.log('| option | triangles | bytes | RMSE | max | silhouette px | frame ms (median) | min |');
-console.log('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+console.log('| option | triangles | bytes | RMSE | max | silhouette px | frame ms (median) | min | GPU ms |');
+console.log('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
 for (const r of list) {
   console.log(
-    `| ${r.name} | ${r.triangles} | ${r.bytes} | ${r.error.rmse.toFixed(2)} | ${r.error.max} | ${r.error.silhouettePx.toFixed(2)} | ${r.frameMs.median.toFixed(2)} | ${r.frameMs.min.toFixed(2)} |`,
+    `| ${r.name} | ${r.triangles} | ${r.bytes} | ${r.error.rmse.toFixed(2)} | ${r.error.max} | ${r.error.silhouettePx.toFixed(2)} | ${r.frameMs.median.toFixed(2)} | ${r.frameMs.min.toFixed(2)} | ${r.gpuMs ? r.gpuMs.median.toFixed(2) : 'n/a'} |`,
   );
 }
 console.log(`\nPareto front (frame time vs RMSE): ${paretoRmse.join(' → ')}`);

@@ -86,8 +86,39 @@ function depthCheck(
   return { wrong, sphere, plane: planeCount };
 }
 
-/** Frame times in ms: `warmup` untimed frames, then `frames` timed ones, each ended by a 1×1 readPixels. */
-function time(view: TradeView, option: TradeOption, frames: number, warmup: number): number[] {
+const gl = trade.renderer.getContext() as WebGL2RenderingContext; // three 0.163+ is WebGL2 only
+const timer = gl.getExtension('EXT_disjoint_timer_query_webgl2') as { TIME_ELAPSED_EXT: number } | null;
+
+/** GPU times (ms) of finished timer queries; empty when unavailable or disjoint. */
+async function gpuTimes(queries: WebGLQuery[]): Promise<number[]> {
+  if (timer === null || queries.length === 0) return [];
+  const times: number[] = [];
+  for (const q of queries) {
+    for (let tries = 0; tries < 200 && !gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE); tries++) {
+      await new Promise((r) => setTimeout(r, 5));
+    }
+    if (
+      gl.getParameter(0x8fbb /* GPU_DISJOINT_EXT */) ||
+      !gl.getQueryParameter(q, gl.QUERY_RESULT_AVAILABLE)
+    ) {
+      return [];
+    }
+    times.push(gl.getQueryParameter(q, gl.QUERY_RESULT) / 1e6);
+    gl.deleteQuery(q);
+  }
+  return times;
+}
+
+/**
+ * Frame times in ms: `warmup` untimed frames, then `frames` timed ones, each ended by a 1×1 readPixels; and
+ * the GPU time of each timed frame (EXT_disjoint_timer_query_webgl2), empty without the extension.
+ */
+async function time(
+  view: TradeView,
+  option: TradeOption,
+  frames: number,
+  warmup: number,
+): Promise<{ frames: number[]; gpu: number[] }> {
   trade.setView(view);
   trade.setOption(option);
   for (let i = 0; i < warmup; i++) {
@@ -95,13 +126,20 @@ function time(view: TradeView, option: TradeOption, frames: number, warmup: numb
     trade.sync();
   }
   const out: number[] = [];
+  const queries: WebGLQuery[] = [];
   for (let i = 0; i < frames; i++) {
+    const query = timer === null ? null : gl.createQuery();
+    if (timer !== null && query !== null) gl.beginQuery(timer.TIME_ELAPSED_EXT, query);
     const t0 = performance.now();
     trade.render();
+    if (timer !== null && query !== null) {
+      gl.endQuery(timer.TIME_ELAPSED_EXT);
+      queries.push(query);
+    }
     trade.sync();
     out.push(performance.now() - t0);
   }
-  return out;
+  return { frames: out, gpu: await gpuTimes(queries) };
 }
 
 function referenceMs(view: TradeView): number {
@@ -111,7 +149,7 @@ function referenceMs(view: TradeView): number {
   return performance.now() - t0;
 }
 
-const api = { compare, depthCheck, time, cost: optionCost, referenceMs };
+const api = { compare, depthCheck, time, cost: optionCost, referenceMs, hasTimer: timer !== null };
 declare global {
   interface Window {
     tradeoff: typeof api;
