@@ -30,6 +30,11 @@ test('cel shading with 3 bands and the outline', async ({ page }) => {
   await shot(page, 'cel-3-bands-outline.png');
 });
 
+test('the ray-cast impostor (exact sphere on two triangles)', async ({ page }) => {
+  await open(page, { sphere: { render: 'impostor' } });
+  await shot(page, 'impostor.png');
+});
+
 test('orthographic camera', async ({ page }) => {
   await open(page, { camera: { projection: 'orthographic', top: 2.2, bottom: -2.2 } });
   await shot(page, 'orthographic.png');

@@ -83,6 +83,8 @@ test.describe('the playground', () => {
     test.setTimeout(120_000);
     await open(page);
     await eachChangesThePicture(page, [
+      ['ray-cast impostor', () => choose(page, 'Sphere.render', 'ray-cast impostor')],
+      ['subdivided mesh', () => choose(page, 'Sphere.render', 'subdivided mesh')],
       ['base', () => choose(page, 'Sphere.base', 'icosahedron')],
       ['level', () => typeInto(page, 'Sphere.level', '1')],
       ['auto detail', () => toggle(page, 'Sphere.auto')],

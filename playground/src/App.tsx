@@ -4,7 +4,14 @@ import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
 import { COMPARE_COLUMNS, compareLayout, type Layout, type SectionErrors, Viewer } from './engine/Viewer';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
-import { defaultLight, defaultState, MAX_LIGHTS, type PlaygroundState, validateState } from './state/schema';
+import {
+  defaultLight,
+  defaultState,
+  MAX_LIGHTS,
+  type PlaygroundState,
+  serializeState,
+  validateState,
+} from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
 import { ShaderEditor } from './ui/ShaderEditor';
 import { Stats, StatsFeed } from './ui/Stats';
@@ -236,7 +243,12 @@ export function App() {
           ))}
         </div>
         <Stats feed={feed} />
-        <p className="hint">Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS}</p>
+        <p className="hint">
+          Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
+          <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
+            speed/accuracy trade-off of this view
+          </a>
+        </p>
       </main>
       <aside className="side">
         <div className="panel" ref={panelRef}>

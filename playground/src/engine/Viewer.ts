@@ -6,10 +6,12 @@ import * as THREE from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import type { LightState, PlaygroundState, Vec3 } from '../state/schema';
 import {
+  applyImpostorMaterial,
   applyLight,
   applyMaterial,
   chooseDetail,
   createCamera,
+  createImpostor,
   createLight,
   createMaterial,
   createMover,
@@ -120,6 +122,8 @@ export class Viewer {
 
   private readonly compareMaterials: Material[];
   private readonly outline: ReturnType<typeof createOutlineMesh>;
+  /** The ray-cast sphere, drawn instead of the mesh when `sphere.render` is 'impostor' (single view). */
+  private readonly impostor: THREE.Mesh;
   private lights: Light[] = [];
   private markers: THREE.Mesh[] = [];
   private readonly markerGeometry = new THREE.SphereGeometry(0.08, 12, 8);
@@ -159,7 +163,9 @@ export class Viewer {
     this.mesh = new THREE.Mesh(new THREE.BufferGeometry(), this.material);
     this.outline = createOutlineMesh(this.mesh);
     this.outline.visible = false;
-    this.pivot.add(this.mesh);
+    this.impostor = createImpostor();
+    this.impostor.visible = false;
+    this.pivot.add(this.mesh, this.impostor);
     this.scene.add(this.pivot);
     // The gizmo listens first, so that grabbing a handle disables the trackball before it sees the press.
     this.gizmo = new TransformControls(this.camera, canvas);
@@ -299,6 +305,7 @@ export class Viewer {
             this.lights,
           );
         });
+        applyImpostorMaterial(this.impostor, state.material, this.lights);
         setOutlineWidth(this.outline, state.material.outlineWidth);
         this.captureGenerated();
       });
@@ -307,6 +314,7 @@ export class Viewer {
     attempt('model', () => {
       const [x, y, z] = state.model.scale;
       this.mesh.scale.set(x, y, z);
+      this.impostor.scale.set(x, y, z);
     });
     attempt('camera', () => this.applyCamera(state));
     attempt('sphere', () => this.applySphere(state));
@@ -551,6 +559,9 @@ export class Viewer {
     const { renderer } = this;
     const state = this.state!;
     this.outline.visible = state.material.outline && state.material.celBands > 0;
+    const impostor = state.sphere.render === 'impostor';
+    this.mesh.visible = !impostor || cols * rows > 1;
+    this.impostor.visible = impostor && cols * rows === 1;
     if (cols * rows === 1) {
       this.mesh.material = this.material;
       this.applyGeometry(state.material.shading);
@@ -686,6 +697,8 @@ export class Viewer {
     this.material.dispose();
     for (const m of this.compareMaterials) m.dispose();
     (this.outline.material as THREE.Material).dispose();
+    this.impostor.geometry.dispose();
+    (this.impostor.material as THREE.Material).dispose();
     this.renderer.dispose();
   }
 }

@@ -4,7 +4,14 @@
  */
 
 import { Camera, CameraMovement } from '@shadelab/camera';
-import { createOutline, type OutlineMaterial, PhongLight, ShadingMaterial } from '@shadelab/material';
+import {
+  createOutline,
+  type OutlineMaterial,
+  PhongLight,
+  ShadingMaterial,
+  SphereImpostor,
+  SphereImpostorMaterial,
+} from '@shadelab/material';
 import {
   chooseSphereDetail,
   projectedRadiusPx,
@@ -187,6 +194,25 @@ export function createMaterial(): Material {
 
 export function applyMaterial(material: Material, options: MaterialOptions, lights: Light[]): void {
   material.shading = options.shading;
+  material.lighting = options.lighting;
+  material.celBands = options.celBands;
+  material.ka = options.ka;
+  material.kd = options.kd;
+  material.ks = options.ks;
+  material.shininess = options.shininess;
+  material.phongLights = lights;
+}
+
+/**
+ * The ray-cast sphere (exact silhouette and normals on two triangles; always per-fragment shading), with its
+ * own material taking the same options as the mesh's but `shading`.
+ */
+export function createImpostor(): THREE.Mesh {
+  return new SphereImpostor(new SphereImpostorMaterial());
+}
+
+export function applyImpostorMaterial(impostor: THREE.Mesh, options: MaterialOptions, lights: Light[]): void {
+  const material = (impostor as SphereImpostor).material;
   material.lighting = options.lighting;
   material.celBands = options.celBands;
   material.ka = options.ka;

@@ -24,6 +24,8 @@ export type TrackballMapping = 'arcball' | 'bell';
 export type Projection = 'perspective' | 'orthographic';
 /** One view of the lit sphere, or the lecture's flat | Gouraud | Phong | cel slide. */
 export type ViewMode = 'single' | 'compare';
+/** How the sphere is drawn: a subdivided mesh, or a ray-cast impostor (exact, two triangles). */
+export type SphereRender = 'mesh' | 'impostor';
 
 /** One light: the lecture's Ia, Id, Is and attenuation 1/(a + b·t + c·t²). */
 export interface LightState {
@@ -51,7 +53,7 @@ export interface PlaygroundState {
     shininess: number;
   };
   lights: LightState[];
-  sphere: { base: SphereBase; level: number; auto: boolean; maxErrorPx: number };
+  sphere: { render: SphereRender; base: SphereBase; level: number; auto: boolean; maxErrorPx: number };
   model: { scale: Vec3 };
   camera: {
     projection: Projection;
@@ -121,7 +123,7 @@ export function defaultState(): PlaygroundState {
       shininess: 50,
     },
     lights: [defaultLight()],
-    sphere: { base: 'tetrahedron', level: 6, auto: false, maxErrorPx: 0.5 },
+    sphere: { render: 'mesh', base: 'tetrahedron', level: 6, auto: false, maxErrorPx: 0.5 },
     model: { scale: [2, 1, 2] },
     camera: {
       projection: 'perspective',
@@ -286,6 +288,7 @@ const stateParser = object<PlaygroundState>({
   }),
   lights: list(lightParser, MAX_LIGHTS, defaultLight),
   sphere: object({
+    render: oneOf('mesh', 'impostor'),
     base: oneOf('tetrahedron', 'octahedron', 'icosahedron'),
     level: num(0, 16, { integer: true }),
     auto: bool,

@@ -127,6 +127,13 @@ export function SceneControls({
   useFolder(
     'Sphere',
     {
+      render: {
+        input: { label: 'draw as', options: { 'subdivided mesh': 'mesh', 'ray-cast impostor': 'impostor' } },
+        read: (s) => s.sphere.render,
+        write: (d, v: PlaygroundState['sphere']['render']) => {
+          d.sphere.render = v;
+        },
+      },
       base: {
         input: { label: 'base', options: ['tetrahedron', 'octahedron', 'icosahedron'] },
         read: (s) => s.sphere.base,
