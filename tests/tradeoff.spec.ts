@@ -89,6 +89,15 @@ test.describe('impostor vs reference', () => {
     expect(far.max).toBeLessThanOrEqual(2);
   });
 
+  test('two impostors sharing one material: per-object uniforms are re-uploaded between draws', async ({
+    page,
+  }) => {
+    const r = await page.evaluate(() => window.tradeoff.sharedMaterialCheck());
+    expect(r.coveredA).toBeGreaterThan(500);
+    expect(r.coveredB).toBeGreaterThan(500);
+    expect(r.differing).toBe(0);
+  });
+
   test('the meshes converge on the same reference (phong, icosahedron 5 vs 1)', async ({ page }) => {
     const fine = await compare(
       page,

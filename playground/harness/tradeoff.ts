@@ -1,6 +1,8 @@
 // Harness for tests/tradeoff.spec.ts and bench/tradeoff.bench.mjs: draws the sphere with one option of the
 // trade (flat / Gouraud / Phong mesh at a base and level, or the ray-cast impostor), compares the pixels with
 // renderReference computed here in the page, and times frames (1×1 readPixels after each).
+
+import { SphereImpostor } from '@shadelab/material';
 import { compareToReference } from '@shadelab/reference';
 import { Mesh, MeshBasicMaterial, PlaneGeometry } from 'three';
 import { optionCost, type TradeOption, TradeoffScene, type TradeView } from '../src/tradeoff/tradeoffScene';
@@ -86,6 +88,51 @@ function depthCheck(
   return { wrong, sphere, plane: planeCount };
 }
 
+/**
+ * Two impostors sharing one material, drawn in one frame, against each drawn alone: the per-object uniforms
+ * (matrices, bounds) must be re-uploaded between the two draws. Returns the pixels that differ.
+ */
+function sharedMaterialCheck(): { differing: number; coveredA: number; coveredB: number } {
+  const view: TradeView = { width: 320, height: 240, scale: [0.6, 0.4, 0.6] };
+  trade.setView(view);
+  trade.setOption({ shading: 'impostor' });
+  const a = trade.impostor;
+  const b = new SphereImpostor(trade.impostorMaterial);
+  b.scale.set(0.5, 0.7, 0.5);
+  b.position.set(1.2, 0.3, 0);
+  a.position.set(-1, 0, 0);
+  trade.scene.add(b);
+  trade.scene.updateMatrixWorld();
+  const draw = (showA: boolean, showB: boolean) => {
+    a.visible = showA;
+    b.visible = showB;
+    trade.render();
+    return trade.readPixels();
+  };
+  const onlyA = draw(true, false);
+  const onlyB = draw(false, true);
+  const both = draw(true, true);
+  trade.scene.remove(b);
+  b.geometry.dispose();
+  a.position.set(0, 0, 0);
+  a.visible = true;
+  trade.scene.updateMatrixWorld();
+  let differing = 0;
+  let coveredA = 0;
+  let coveredB = 0;
+  const isBackground = (p: Uint8Array, k: number) => p[k] === 0 && p[k + 1] === 0 && p[k + 2] === 255;
+  for (let k = 0; k < both.length; k += 4) {
+    const inA = !isBackground(onlyA, k);
+    const inB = !isBackground(onlyB, k);
+    if (inA) coveredA++;
+    if (inB) coveredB++;
+    const expected = inA ? onlyA : onlyB;
+    if (both[k] !== expected[k] || both[k + 1] !== expected[k + 1] || both[k + 2] !== expected[k + 2])
+      differing++;
+  }
+  return { differing, coveredA, coveredB };
+}
+
 const gl = trade.renderer.getContext() as WebGL2RenderingContext; // three 0.163+ is WebGL2 only
 const timer = gl.getExtension('EXT_disjoint_timer_query_webgl2') as { TIME_ELAPSED_EXT: number } | null;
 
@@ -149,7 +196,15 @@ function referenceMs(view: TradeView): number {
   return performance.now() - t0;
 }
 
-const api = { compare, depthCheck, time, cost: optionCost, referenceMs, hasTimer: timer !== null };
+const api = {
+  compare,
+  depthCheck,
+  sharedMaterialCheck,
+  time,
+  cost: optionCost,
+  referenceMs,
+  hasTimer: timer !== null,
+};
 declare global {
   interface Window {
     tradeoff: typeof api;
