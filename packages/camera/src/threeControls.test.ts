@@ -11,8 +11,10 @@ function orbit<C extends Camera | PerspectiveCamera | OrthographicCamera>(camera
   const controls = new OrbitControls(camera, el);
   controls.target.set(1, 0, -1);
   controls.update();
-  controls.rotateLeft(0.4);
-  controls.dollyIn(1.5);
+  // rotateLeft/dollyIn are public since three r183; older releases (our oldest is r179) name them _rotateLeft/_dollyIn.
+  const c = controls as unknown as Record<string, ((x: number) => void) | undefined>;
+  (c.rotateLeft ?? c._rotateLeft)!.call(controls, 0.4);
+  (c.dollyIn ?? c._dollyIn)!.call(controls, 1.5);
   controls.update();
   controls.dispose();
   camera.updateMatrixWorld();

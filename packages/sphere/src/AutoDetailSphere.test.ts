@@ -218,14 +218,21 @@ describe('AutoDetailSphere', () => {
     expect(() => new AutoDetailSphere(material, { radius: -1 })).toThrow(/radius/);
   });
 
-  it('dispose() disposes every cached geometry', () => {
-    const sphere = new AutoDetailSphere(material);
-    sphere.update(perspective(3), 100);
-    sphere.update(perspective(30), 100);
-    const geometries = [sphere.geometry];
-    let disposed = 0;
-    for (const g of geometries) g.addEventListener('dispose', () => disposed++);
-    sphere.dispose();
-    expect(disposed).toBe(1);
+  it('disposeGeometries() (and dispose() where three has it) disposes every cached geometry', () => {
+    for (const how of ['disposeGeometries', 'dispose'] as const) {
+      const sphere = new AutoDetailSphere(material);
+      const geometries = new Set([sphere.geometry]);
+      sphere.update(perspective(3), 100);
+      geometries.add(sphere.geometry);
+      sphere.update(perspective(30), 100);
+      geometries.add(sphere.geometry);
+      expect(geometries.size).toBeGreaterThan(1);
+      let disposed = 0;
+      for (const g of geometries) g.addEventListener('dispose', () => disposed++);
+      const dispose = (sphere as unknown as Record<string, (() => void) | undefined>)[how];
+      if (how === 'dispose' && !dispose) continue; // three < 0.186 has no Object3D#dispose
+      dispose!.call(sphere);
+      expect(disposed).toBe(geometries.size);
+    }
   });
 });

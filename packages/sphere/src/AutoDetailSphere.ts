@@ -106,6 +106,8 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
       indexed,
     });
     this.material = material;
+    // three ≥ 0.186 fires `dispose` from Object3D#dispose(); the event name is not in every @types/three.
+    this.addEventListener('dispose' as never, () => this.disposeGeometries());
     // Until the first update: the coarsest sphere of the first base.
     this.#detail = this.#choose(0);
     this.geometry = this.#geometry(this.#detail);
@@ -156,11 +158,13 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
     if (this.update(camera, renderer)) this.dispatchEvent({ type: 'change' } as never);
   }
 
-  /** Dispose of every cached geometry (the material is the caller's), then three's `dispose` event. */
-  override dispose(): void {
+  /**
+   * Dispose of every cached geometry (the material is the caller's). On three ≥ 0.186, `Object3D#dispose()`
+   * does this too (through its `dispose` event); on older three, which has no `Object3D#dispose`, call this.
+   */
+  disposeGeometries(): void {
     for (const g of this.#cache.values()) g.dispose();
     this.#cache.clear();
-    super.dispose();
   }
 
   #choose(radiusPx: number): AutoDetail {
