@@ -14,6 +14,11 @@ const stages = [
   ['type check (tests, playground, bench)', 'npx', ['tsc', '-p', 'tsconfig.test.json']],
   ['lint (biome)', 'npx', ['biome', 'ci', '.']],
   [
+    'size budget (minified + gzipped, without three)',
+    'node',
+    ['scripts/size.mjs', '--json', 'test-results/size.json'],
+  ],
+  [
     'unit (vitest)',
     'npx',
     ['vitest', 'run', '--reporter=default', '--reporter=json', '--outputFile.json=test-results/vitest.json'],
