@@ -327,9 +327,10 @@ export class ShadingMaterial extends ShaderMaterial {
       const x = e[12];
       const y = e[13];
       const z = e[14];
-      if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
+      // Finite in float32, as uploaded (|coordinate| < 3.4e38).
+      if (![x, y, z].every((c) => Number.isFinite(Math.fround(c)))) {
         throw new RangeError(
-          `ShadingMaterial.lights[${i}] world position must be finite, got (${x}, ${y}, ${z})`,
+          `ShadingMaterial.lights[${i}] world position must be finite (in float32), got (${x}, ${y}, ${z})`,
         );
       }
       const j = 3 * i;

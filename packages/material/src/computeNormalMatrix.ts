@@ -63,16 +63,17 @@ export function computeNormalMatrix(matrix: Matrix4, target: Matrix3): Matrix3 {
     te.fill(0);
     return target;
   }
-  const f = (det < 0 ? -1 : 1) / m;
-  te[0] = c0x * f;
-  te[1] = c0y * f;
-  te[2] = c0z * f;
-  te[3] = c1x * f;
-  te[4] = c1y * f;
-  te[5] = c1z * f;
-  te[6] = c2x * f;
-  te[7] = c2y * f;
-  te[8] = c2z * f;
+  // Divide (each |c| ≤ m) rather than multiply by 1 / m, which overflows when m is subnormal.
+  const f = det < 0 ? -1 : 1;
+  te[0] = (c0x / m) * f;
+  te[1] = (c0y / m) * f;
+  te[2] = (c0z / m) * f;
+  te[3] = (c1x / m) * f;
+  te[4] = (c1y / m) * f;
+  te[5] = (c1z / m) * f;
+  te[6] = (c2x / m) * f;
+  te[7] = (c2y / m) * f;
+  te[8] = (c2z / m) * f;
   return target;
 }
 

@@ -12,11 +12,20 @@ function show(value: unknown): string {
   return String(value);
 }
 
-/** Throws unless `value` is a finite number ≥ 0. */
+/**
+ * Largest coefficient, colour channel or exponent accepted: 1e18, so that every product the material uploads
+ * (kd·Id, ks·Is, the ambient sum over the lights) stays finite in float32 uniforms (largest ≈ 3.4e38).
+ */
+export const MAX_COEFFICIENT = 1e18;
+
+/** Throws unless `value` is a finite number in 0 … {@link MAX_COEFFICIENT}. */
 export function checkNonNegative(name: string, value: unknown): number {
   if (typeof value !== 'number') throw new TypeError(`${name} must be a number, got ${show(value)}`);
   if (!Number.isFinite(value) || value < 0) {
     throw new RangeError(`${name} must be a finite number ≥ 0, got ${show(value)}`);
+  }
+  if (value > MAX_COEFFICIENT) {
+    throw new RangeError(`${name} must be at most 1e18 (float32 uniforms), got ${show(value)}`);
   }
   return value;
 }
@@ -31,10 +40,13 @@ export function checkOneOf<T extends string>(name: string, value: unknown, allow
   return value as T;
 }
 
-/** Throws unless every channel of `color` is finite and ≥ 0. */
+/** Throws unless every channel of `color` is finite, ≥ 0 and at most {@link MAX_COEFFICIENT}. */
 export function checkColorChannels(name: string, color: Color): Color {
   if (![color.r, color.g, color.b].every((c) => Number.isFinite(c) && c >= 0)) {
     throw new RangeError(`${name} must have finite channels ≥ 0 (linear RGB), got ${show(color)}`);
+  }
+  if (![color.r, color.g, color.b].every((c) => c <= MAX_COEFFICIENT)) {
+    throw new RangeError(`${name} must have channels at most 1e18 (float32 uniforms), got ${show(color)}`);
   }
   return color;
 }
