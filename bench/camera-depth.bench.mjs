@@ -6,58 +6,21 @@
 //
 //   node bench/camera-depth.bench.mjs [--json bench/results/camera-depth.json]
 //
-// Self-contained: builds the playground harness pages into a temporary folder, serves them on its own port.
-import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { createServer } from 'node:http';
-import { tmpdir } from 'node:os';
-import { extname, join, normalize } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
+// Builds the playground harness pages into a temporary folder and serves them on its own port (lib/browser.mjs).
 import { summarize, writeResults } from './lib/bench.mjs';
+import { openPlayground } from './lib/browser.mjs';
 
 /** @typedef {import('../playground/harness/camera').CameraDepthProbe} CameraDepthProbe (types window.cameraDepth) */
 
-const root = fileURLToPath(new URL('..', import.meta.url));
-const outDir = mkdtempSync(join(tmpdir(), 'shadelab-camera-depth-'));
 const RATIOS = [1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
 const DISTANCES = [1, 100, 1e4];
 const NEAR = 0.01;
 
-const build = spawnSync(
-  'npx',
-  ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
-  { cwd: root, stdio: 'inherit' },
-);
-if (build.status !== 0) process.exit(build.status ?? 1);
-
-/** @type {Record<string, string>} */
-const types = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css' };
-const server = createServer((req, res) => {
-  const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-    /^(\.\.[/\\])+/,
-    '',
-  );
-  try {
-    const body = readFileSync(join(outDir, path));
-    res.writeHead(200, { 'content-type': types[extname(path)] ?? 'application/octet-stream' });
-    res.end(body);
-  } catch {
-    res.writeHead(404).end();
-  }
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-const address = server.address();
-const port = typeof address === 'object' && address ? address.port : 0;
-
-const browser = await chromium.launch({
-  executablePath: chromiumExecutable() ?? undefined,
-  args: chromiumArgs,
-});
+const playground = await openPlayground();
+const browser = playground.browser;
 try {
   const page = await browser.newPage();
-  await page.goto(`http://127.0.0.1:${port}/harness/camera.html`);
+  await page.goto(playground.url('harness/camera.html'));
   await page.waitForFunction(() => document.getElementById('viewport')?.dataset.ready === 'true');
   const modes = await page.evaluate(() => window.cameraDepth.modes);
   const active = await page.evaluate((ms) => ms.map((m) => window.cameraDepth.activeMode(m)), modes);
@@ -131,7 +94,5 @@ try {
     frameTimes,
   });
 } finally {
-  await browser.close();
-  server.close();
-  rmSync(outDir, { recursive: true, force: true });
+  await playground.close();
 }

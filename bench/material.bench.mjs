@@ -4,21 +4,9 @@
 // gl.finish() does not wait); GPU time from EXT_disjoint_timer_query_webgl2.
 //
 //   node bench/material.bench.mjs [--json PATH] [--levels 4,6,8] [--frames 27] [--rounds 3] [--only NAME,...]
-import { execFileSync } from 'node:child_process';
-import { createReadStream, existsSync, statSync } from 'node:fs';
-import { createServer } from 'node:http';
-import { extname, join, normalize } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
-import { summarize, writeResults } from './lib/bench.mjs';
+import { arg, summarize, writeResults } from './lib/bench.mjs';
+import { openPlayground } from './lib/browser.mjs';
 
-const root = fileURLToPath(new URL('..', import.meta.url));
-/** @param {string} name @param {string} fallback */
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i >= 0 ? process.argv[i + 1] : fallback;
-};
 const levels = arg('--levels', '4,6,8').split(',').map(Number);
 const frames = Number(arg('--frames', '27'));
 // Variants run round-robin in `rounds` rounds of frames/rounds frames each, so that load from other
@@ -26,48 +14,11 @@ const frames = Number(arg('--frames', '27'));
 const rounds = Number(arg('--rounds', '3'));
 const only = arg('--only', ''); // run only the variants whose name contains one of these (comma-separated)
 
-// 1. Build the harness pages into a folder of our own (git-ignored by the dist-e2e-* pattern).
-const outDir = 'dist-e2e-bench-material';
-execFileSync(
-  'npx',
-  ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
-  {
-    cwd: root,
-    stdio: 'inherit',
-  },
-);
-const served = join(root, 'playground', outDir);
-
-// 2. A tiny static server on a free port.
-/** @type {Record<string, string>} */
-const types = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.json': 'application/json',
-};
-const server = createServer((req, res) => {
-  const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-    /^(\.\.[/\\])+/,
-    '',
-  );
-  const file = join(served, path);
-  if (!file.startsWith(served) || !existsSync(file) || !statSync(file).isFile()) {
-    res.writeHead(404).end();
-    return;
-  }
-  res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-  createReadStream(file).pipe(res);
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-const address = server.address();
-const port = typeof address === 'object' && address ? address.port : 0;
-
-// 3. Run every variant at every level.
-const executablePath = chromiumExecutable() ?? undefined;
-const browser = await chromium.launch({ executablePath, args: chromiumArgs });
+// 1. Build and serve the playground's harness pages, launch Chromium.
+const playground = await openPlayground();
+const browser = playground.browser;
 const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
-await page.goto(`http://127.0.0.1:${port}/harness/material-bench.html`);
+await page.goto(playground.url('harness/material-bench.html'));
 await page.waitForFunction(() => document.body.dataset.ready === '1');
 const hasTimer = await page.evaluate(() => window.materialBench.hasTimer);
 
@@ -157,6 +108,5 @@ for (const level of levels) {
     `targets (ratio of medians, of minima): phong/MeshPhong ${show(targets.phongVsMeshPhong)} (≤ 1), gouraud/phong ${show(targets.gouraudVsPhong)} (< 1), flat/phong ${show(targets.flatVsPhong)} (< 1), 2 lights/1 light ${show(targets.twoLightsVsOne)} (< 2)`,
   );
 }
-await browser.close();
-server.close();
+await playground.close();
 writeResults(results);

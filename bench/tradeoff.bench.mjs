@@ -6,24 +6,12 @@
 // it. Last, the auto-detail zoom sweep: triangles of AutoDetailSphere's choice against a fixed level 6.
 //
 //   node bench/tradeoff.bench.mjs [--json PATH] [--levels 0,1,...,7] [--frames 15] [--rounds 3]
-import { execFileSync } from 'node:child_process';
-import { createReadStream, existsSync, statSync } from 'node:fs';
-import { createServer } from 'node:http';
 import { loadavg } from 'node:os';
-import { extname, join, normalize } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
 import { AutoDetailSphere, SPHERE_BASES, sphereCounts, sphereError } from '@shadelab/sphere';
 import { MeshBasicMaterial, PerspectiveCamera } from 'three';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
-import { summarize, writeResults } from './lib/bench.mjs';
+import { arg, summarize, writeResults } from './lib/bench.mjs';
+import { openPlayground } from './lib/browser.mjs';
 
-const root = fileURLToPath(new URL('..', import.meta.url));
-/** @param {string} name @param {string} fallback */
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i >= 0 ? process.argv[i + 1] : fallback;
-};
 const levels = arg('--levels', '0,1,2,3,4,5,6,7').split(',').map(Number);
 const frames = Number(arg('--frames', '15'));
 const rounds = Number(arg('--rounds', '3'));
@@ -31,49 +19,10 @@ const WIDTH = 1280;
 const HEIGHT = 720;
 const loadBefore = loadavg();
 
-// 1. Build the harness pages into a folder of our own (git-ignored by the dist-* pattern).
-const outDir = 'dist-e2e-bench-tradeoff';
-execFileSync(
-  'npx',
-  ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
-  {
-    cwd: root,
-    stdio: 'inherit',
-  },
-);
-const served = join(root, 'playground', outDir);
-
-// 2. A tiny static server on a free port.
-/** @type {Record<string, string>} */
-const types = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.json': 'application/json',
-};
-const server = createServer((req, res) => {
-  const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-    /^(\.\.[/\\])+/,
-    '',
-  );
-  const file = join(served, path);
-  if (!file.startsWith(served) || !existsSync(file) || !statSync(file).isFile()) {
-    res.writeHead(404).end();
-    return;
-  }
-  res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-  createReadStream(file).pipe(res);
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-const address = server.address();
-const port = typeof address === 'object' && address ? address.port : 0;
-
-const browser = await chromium.launch({
-  executablePath: chromiumExecutable() ?? undefined,
-  args: chromiumArgs,
-});
+const playground = await openPlayground();
+const browser = playground.browser;
 const page = await browser.newPage({ viewport: { width: WIDTH, height: HEIGHT } });
-await page.goto(`http://127.0.0.1:${port}/harness/tradeoff.html`);
+await page.goto(playground.url('harness/tradeoff.html'));
 await page.waitForFunction(() => document.body.dataset.ready === '1');
 
 /** @typedef {import('../playground/src/tradeoff/tradeoffScene').TradeOption} TradeOption */
@@ -158,8 +107,7 @@ for (const rt of rmseTargets) {
   }
 }
 
-await browser.close();
-server.close();
+await playground.close();
 
 // 6. Auto detail over a zoom sweep of the lecture scene (perspective 90°, 720 px high, ellipsoid (2, 1, 2)):
 // the triangles AutoDetailSphere draws against a fixed tetrahedron level 6, (a) at the 0.5 px budget and

@@ -41,3 +41,9 @@ export function writeResults(results) {
   writeFileSync(path, `${JSON.stringify(results, null, 2)}\n`);
   console.log(`wrote ${path}`);
 }
+
+/** The value after `name` on the command line, or `fallback`. @param {string} name @param {string} fallback */
+export function arg(name, fallback) {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? process.argv[i + 1] : fallback;
+}
