@@ -12,7 +12,7 @@ export default defineConfig({
   workers: 2,
   retries: 0,
   timeout: 60_000,
-  reporter: [['list'], ['json', { outputFile: 'test-results/playwright.json' }]],
+  reporter: [['list'], ['json', { outputFile: 'reports/playwright.json' }]],
   expect: { toHaveScreenshot: { maxDiffPixels: 0, threshold: 0 } },
   use: {
     baseURL: `http://127.0.0.1:${port}`,

@@ -1,12 +1,14 @@
 // `npm test`: every set-up step, then type check, lint, unit and end-to-end/visual tests.
 // Runs every stage even when one fails, then prints one summary and exits non-zero on any failure.
-import { existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { ensureBrowser, ensureDependencies, root, run } from './setup.mjs';
 
 ensureDependencies();
 await ensureBrowser();
-mkdirSync(join(root, 'test-results'), { recursive: true });
+// Reports go to reports/: Playwright empties test-results/ (its output folder) when it starts.
+rmSync(join(root, 'reports'), { recursive: true, force: true });
+mkdirSync(join(root, 'reports'), { recursive: true });
 
 /** @type {[string, string, string[]][]} */
 const stages = [
@@ -16,12 +18,12 @@ const stages = [
   [
     'size budget (minified + gzipped, without three)',
     'node',
-    ['scripts/size.mjs', '--json', 'test-results/size.json'],
+    ['scripts/size.mjs', '--json', 'reports/size.json'],
   ],
   [
     'unit (vitest)',
     'npx',
-    ['vitest', 'run', '--reporter=default', '--reporter=json', '--outputFile.json=test-results/vitest.json'],
+    ['vitest', 'run', '--reporter=default', '--reporter=json', '--outputFile.json=reports/vitest.json'],
   ],
   ['unit (vitest) against the oldest supported three', 'node', ['scripts/three-compat.mjs']],
   ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],
@@ -36,13 +38,13 @@ for (const [name, cmd, args] of stages) {
 
 let passed = 0;
 let failedTests = 0;
-const vitest = join(root, 'test-results', 'vitest.json');
+const vitest = join(root, 'reports', 'vitest.json');
 if (existsSync(vitest)) {
   const r = JSON.parse(readFileSync(vitest, 'utf8'));
   passed += r.numPassedTests ?? 0;
   failedTests += r.numFailedTests ?? 0;
 }
-const pw = join(root, 'test-results', 'playwright.json');
+const pw = join(root, 'reports', 'playwright.json');
 if (existsSync(pw)) {
   const s = JSON.parse(readFileSync(pw, 'utf8')).stats ?? {};
   passed += (s.expected ?? 0) + (s.flaky ?? 0);
