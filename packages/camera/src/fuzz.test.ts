@@ -9,6 +9,7 @@ import {
 import fc from 'fast-check';
 import { Matrix4, PerspectiveCamera, Vector3 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
+import { worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor, option and setter, fed hostile values, either works with finite results or throws a
 // TypeError/RangeError naming the parameter. A camera that has refused a call is still finite and usable.
@@ -60,23 +61,6 @@ afterAll(() => {
     `camera fuzz: ${counts.calls} calls, ${counts.threw} refused with a named TypeError/RangeError`,
   );
 });
-
-function worksOrNamedError(names: readonly string[], fn: () => unknown): boolean {
-  counts.calls++;
-  try {
-    fn();
-    return true;
-  } catch (error) {
-    counts.threw++;
-    expect(error).toSatisfy((e) => e instanceof TypeError || e instanceof RangeError);
-    const message = (error as Error).message;
-    expect(
-      names.some((name) => message.includes(name)),
-      message,
-    ).toBe(true);
-    return false;
-  }
-}
 
 function expectFiniteMatrix(m: Matrix4, what: string): void {
   for (const [i, x] of m.elements.entries()) if (!Number.isFinite(x)) expect.fail(`${what}[${i}] = ${x}`);
@@ -168,7 +152,9 @@ describe('camera fuzz (hostile values everywhere)', () => {
     fc.assert(
       fc.property(options, (o) => {
         let camera: Camera | undefined;
-        if (worksOrNamedError(['options', ...PROJECTION_NAMES], () => (camera = new Camera(o as never)))) {
+        if (
+          worksOrNamedError(counts, ['options', ...PROJECTION_NAMES], () => (camera = new Camera(o as never)))
+        ) {
           expectSane(camera!);
         }
       }),
@@ -184,7 +170,7 @@ describe('camera fuzz (hostile values everywhere)', () => {
         for (const [name, names, op] of ops) {
           const before = camera.getMatrix().clone();
           const projection = camera.projection;
-          if (!worksOrNamedError(names, () => op(camera))) {
+          if (!worksOrNamedError(counts, names, () => op(camera))) {
             expect(camera.getMatrix().elements, `a refused ${name} changes nothing`).toEqual(before.elements);
             expect(camera.projection).toBe(projection);
           }
@@ -199,7 +185,7 @@ describe('camera fuzz (hostile values everywhere)', () => {
     fc.assert(
       fc.property(vec, vec, vec, fc.boolean(), (eye, at, up, memory) => {
         const frame = { e: new Vector3(), u: new Vector3(), v: new Vector3(), w: new Vector3() };
-        const ok = worksOrNamedError(['eye', 'at', 'up'], () =>
+        const ok = worksOrNamedError(counts, ['eye', 'at', 'up'], () =>
           lookAtFrame(eye, at, up, frame, memory ? createPoleMemory() : undefined),
         );
         if (!ok) return;
@@ -228,6 +214,7 @@ describe('camera fuzz (hostile values everywhere)', () => {
           let movement: CameraMovement | undefined;
           if (
             !worksOrNamedError(
+              counts,
               ['options', 'moveSpeed', 'turnSpeed'],
               () => (movement = new CameraMovement(camera, element, options as never)),
             )
@@ -235,11 +222,13 @@ describe('camera fuzz (hostile values everywhere)', () => {
             return;
           }
           // Assigning a speed directly is validated too (or it is refused by name).
-          worksOrNamedError([field], () => {
+          worksOrNamedError(counts, [field], () => {
             (movement as unknown as Record<string, unknown>)[field] = value;
           });
           for (const code of ['KeyW', 'KeyA', 'KeyE']) {
-            worksOrNamedError([field], () => element.dispatchEvent(new KeyboardEvent('keydown', { code })));
+            worksOrNamedError(counts, [field], () =>
+              element.dispatchEvent(new KeyboardEvent('keydown', { code })),
+            );
           }
           element.dispatchEvent(
             new PointerEvent('pointerdown', { button: 0, pointerId: 1, clientX: 0, clientY: 0 }),
@@ -257,7 +246,7 @@ describe('camera fuzz (hostile values everywhere)', () => {
   it('depthBufferParameters: a mode or a named error', () => {
     fc.assert(
       fc.property(fc.oneof(fc.constantFrom('standard', 'logarithmic', 'reversed'), hostile), (mode) => {
-        worksOrNamedError(['mode'], () => depthBufferParameters(mode as never));
+        worksOrNamedError(counts, ['mode'], () => depthBufferParameters(mode as never));
       }),
       { numRuns: 200 },
     );

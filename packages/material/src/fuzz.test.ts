@@ -13,6 +13,7 @@ import {
   Vector4,
 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
+import { worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor option and setter, fed hostile values, either works or throws a TypeError/RangeError
 // naming the parameter, and no NaN or Infinity ever reaches a uniform (checked after the per-draw update that
@@ -74,23 +75,6 @@ afterAll(() => {
     `material fuzz: ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.draws} draws with every uniform checked`,
   );
 });
-
-function worksOrNamedError(names: readonly string[], fn: () => unknown): boolean {
-  counts.calls++;
-  try {
-    fn();
-    return true;
-  } catch (error) {
-    counts.threw++;
-    expect(error).toSatisfy((e) => e instanceof TypeError || e instanceof RangeError);
-    const message = (error as Error).message;
-    expect(
-      names.some((name) => message.includes(name)),
-      message,
-    ).toBe(true);
-    return false;
-  }
-}
 
 /** Every number in every uniform is finite. */
 function expectFiniteUniforms(uniforms: Record<string, { value: unknown }>): void {
@@ -172,12 +156,18 @@ describe('material fuzz (hostile values everywhere)', () => {
         (options, lightList) => {
           const lights: PhongLight[] = [];
           for (const o of lightList) {
-            worksOrNamedError(LIGHT_NAMES, () => lights.push(new PhongLight(o as never)));
+            worksOrNamedError(counts, LIGHT_NAMES, () => lights.push(new PhongLight(o as never)));
           }
           let material: ShadingMaterial | undefined;
           const withLights =
             options !== null && typeof options === 'object' ? { ...options, lights } : options;
-          if (!worksOrNamedError(MATERIAL_NAMES, () => (material = new ShadingMaterial(withLights as never))))
+          if (
+            !worksOrNamedError(
+              counts,
+              MATERIAL_NAMES,
+              () => (material = new ShadingMaterial(withLights as never)),
+            )
+          )
             return;
           for (const [i, light] of lights.entries()) light.position.set(i, 2, 3);
           draw(material!, new Mesh(), new PerspectiveCamera());
@@ -227,7 +217,7 @@ describe('material fuzz (hostile values everywhere)', () => {
           if (kind === 'lightAt') {
             // A light the user put at NaN, infinity or beyond float32: that draw is refused by name.
             light.position.x = value as number;
-            worksOrNamedError(['lights[0] world position'], () => draw(material, mesh, camera));
+            worksOrNamedError(counts, ['lights[0] world position'], () => draw(material, mesh, camera));
             expectFiniteUniforms(material.uniforms as never);
             light.position.x = 2;
           } else if (kind === 'scale') {
@@ -241,7 +231,7 @@ describe('material fuzz (hostile values everywhere)', () => {
               target[name] instanceof Color ? (target[name] as Color).toArray() : target[name],
             );
             const label = name === 'phongLights' ? 'lights' : name;
-            if (!worksOrNamedError([label], () => (target[name] = value))) {
+            if (!worksOrNamedError(counts, [label], () => (target[name] = value))) {
               const after = JSON.stringify(
                 target[name] instanceof Color ? (target[name] as Color).toArray() : target[name],
               );
@@ -272,6 +262,7 @@ describe('material fuzz (hostile values everywhere)', () => {
           let material: OutlineMaterial | undefined;
           if (
             worksOrNamedError(
+              counts,
               ['options', 'thickness', 'color'],
               () => (material = new OutlineMaterial(options as never)),
             )

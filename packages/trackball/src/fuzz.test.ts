@@ -3,6 +3,7 @@ import { arcRotation, projectToBall, Trackball } from '@shadelab/trackball';
 import fc from 'fast-check';
 import { Matrix4, Object3D, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
+import { worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor option, setter and method, fed hostile values, either works with finite results or
 // throws a TypeError/RangeError naming the parameter; hostile pointer and wheel input never yields NaN.
@@ -42,23 +43,6 @@ afterAll(() => {
     `trackball fuzz: ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.events} hostile input events`,
   );
 });
-
-function worksOrNamedError(names: readonly string[], fn: () => unknown): boolean {
-  counts.calls++;
-  try {
-    fn();
-    return true;
-  } catch (error) {
-    counts.threw++;
-    expect(error).toSatisfy((e) => e instanceof TypeError || e instanceof RangeError);
-    const message = (error as Error).message;
-    expect(
-      names.some((name) => message.includes(name)),
-      message,
-    ).toBe(true);
-    return false;
-  }
-}
 
 function makeElement(): HTMLElement {
   const el = document.createElement('div');
@@ -181,14 +165,14 @@ function apply(trackball: Trackball, el: HTMLElement, step: Input): void {
       send(el, 'pointerup', step.a, 1);
       return;
     case 'update':
-      worksOrNamedError(['delta'], () => trackball.update(step.delta as number));
+      worksOrNamedError(counts, ['delta'], () => trackball.update(step.delta as number));
       return;
     case 'zoomBy':
-      worksOrNamedError(['factor'], () => trackball.zoomBy(step.factor as number));
+      worksOrNamedError(counts, ['factor'], () => trackball.zoomBy(step.factor as number));
       return;
     case 'set': {
       const before = (trackball as unknown as Record<string, unknown>)[step.name];
-      const ok = worksOrNamedError([step.name], () => {
+      const ok = worksOrNamedError(counts, [step.name], () => {
         (trackball as unknown as Record<string, unknown>)[step.name] = step.value;
       });
       // A refused value changes nothing; an accepted one reads back as given.
@@ -208,6 +192,7 @@ describe('trackball fuzz (hostile values everywhere)', () => {
         const withCamera = o !== null && typeof o === 'object' ? { ...o, camera } : o;
         if (
           worksOrNamedError(
+            counts,
             OPTIONS,
             () => (trackball = new Trackball(null, makeElement(), withCamera as never)),
           )
@@ -263,7 +248,7 @@ describe('trackball fuzz (hostile values everywhere)', () => {
         camera.position.set(0, 0, 5);
         const trackball = new Trackball(null, makeElement(), { camera, minZoom, maxZoom });
         for (const factor of [1e-300, 1e300, 1e-300, 1e300, 0.5, 2]) {
-          worksOrNamedError(['factor'], () => trackball.zoomBy(factor));
+          worksOrNamedError(counts, ['factor'], () => trackball.zoomBy(factor));
           expectSane(trackball, camera);
         }
       }
@@ -277,14 +262,14 @@ describe('trackball fuzz (hostile values everywhere)', () => {
         hostileNumber,
         fc.oneof(fc.constantFrom('arcball', 'bell'), hostile),
         (x, y, m) => {
-          if (worksOrNamedError(['x', 'y', 'mapping'], () => projectToBall(x, y, m as never))) {
+          if (worksOrNamedError(counts, ['x', 'y', 'mapping'], () => projectToBall(x, y, m as never))) {
             const p = projectToBall(x, y, m as never);
             expect(finite(p)).toBe(true);
             // On the unit sphere for the arcball; the bell's hyperbolic sheet (z = 1 / 2r) is not, by design.
             if (m === 'arcball') expect(Math.abs(Math.hypot(...p) - 1)).toBeLessThan(1e-9);
             // arcRotation refuses a point whose length overflows (bell far out), naming it.
             let q: number[] = [0, 0, 0, 1];
-            if (worksOrNamedError(['b'], () => (q = arcRotation([0, 0, 1], p, 1)))) {
+            if (worksOrNamedError(counts, ['b'], () => (q = arcRotation([0, 0, 1], p, 1)))) {
               expect(finite(q)).toBe(true);
               expect(Math.abs(Math.hypot(...q) - 1)).toBeLessThan(1e-6);
             }
