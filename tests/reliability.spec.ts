@@ -73,6 +73,9 @@ test.describe('no leaks: create, render and dispose 1,000 times', () => {
 });
 
 test.describe('the playground under hostile conditions', () => {
+  // A loaded 2-core machine has been seen to take most of a minute to set up a browser context after the
+  // hostile-state test; a timeout set inside a test starts too late to cover its fixtures, so set it here.
+  test.describe.configure({ timeout: 180_000 });
   test('context loss: the message shows, it recovers by itself, and every edit (also one made while lost) is intact', async ({
     page,
     browser,
@@ -185,9 +188,6 @@ test.describe('the playground under hostile conditions', () => {
   test('a sphere level that would not fit is refused from the URL before allocating; the page stays responsive', async ({
     page,
   }) => {
-    // Under a loaded 2-core machine this test has been seen to wait most of a minute for its browser context
-    // after the hostile-state test (not in its own steps, which take ~4 s alone): give it the leak tests' budget.
-    test.setTimeout(180_000);
     const seen = watch(page);
     await open(page, { sphere: { base: 'icosahedron', level: 3 } });
     const good = await picture(page);

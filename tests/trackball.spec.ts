@@ -140,8 +140,12 @@ test('a two-finger pinch zooms in, and the remaining finger then rotates', async
       { x: CX + 30 + 6 * i, y: CY, id: 2 },
     ]);
   }
+  // Span 60 → 120 px: zoom × 2, whatever the order and grouping of the pointer moves (the ratios telescope).
+  // Polled: under load Chromium may still be delivering the last pointer moves when the CDP call returns.
+  await expect
+    .poll(async () => (await state(canvas)).distance, { timeout: 10_000 })
+    .toBeCloseTo(before.distance / 2, 6);
   const pinched = await state(canvas);
-  expect(pinched.distance).toBeCloseTo(before.distance / 2, 6); // span 60 → 120 px: zoom × 2
   expect(pinched.quaternion).toEqual(before.quaternion); // no rotation while pinching
   // CDP's touchEnd lists the points that lift.
   await touch('touchEnd', [{ x: CX + 60, y: CY, id: 2 }]);

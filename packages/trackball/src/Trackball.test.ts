@@ -385,6 +385,15 @@ describe('Trackball: zoom', () => {
     expectMatrixClose(camera.projectionMatrixInverse, camera.projectionMatrix.clone().invert());
     tb.zoomBy(4);
     expectMatrixClose(camera.projectionMatrix, before);
+    // A zoom whose projection would overflow is refused and leaves the camera as it was.
+    camera.projectionMatrix.makeOrthographic(-0.01, 0.01, 0.01, -0.01, 0.1, 10);
+    const big = new Trackball(null, null, { camera, maxZoom: Number.MAX_VALUE });
+    big.zoomBy(1e300);
+    const atLimit = camera.projectionMatrix.clone();
+    expect(big.zoomBy(1e300)).toBe(false);
+    expect(big.zoom).toBe(1e300);
+    expect(camera.projectionMatrix.equals(atLimit)).toBe(true);
+    expect(camera.projectionMatrix.elements.every(Number.isFinite)).toBe(true);
   });
 
   it('zooms any Camera flagged isPerspectiveCamera by moving it, even inside a parent', () => {
@@ -629,10 +638,10 @@ describe('Trackball: option checks', () => {
     const tb = new Trackball();
     expect(() => {
       tb.minZoom = 1000;
-    }).toThrow(/minZoom must be ≤ maxZoom \(100\), got 1000/);
+    }).toThrow('minZoom (1000) must be ≤ maxZoom (100)');
     expect(() => {
       tb.maxZoom = 0.001;
-    }).toThrow(/maxZoom must be ≥ minZoom \(0.01\), got 0.001/);
+    }).toThrow('minZoom (0.01) must be ≤ maxZoom (0.001)');
     expect(() => tb.zoomBy(0)).toThrow(/factor must be a number > 0/);
     expect(() => tb.update(-1)).toThrow(/delta must be a number ≥ 0/);
   });

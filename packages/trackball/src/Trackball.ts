@@ -63,8 +63,8 @@ const SPIN_STALE_MS = 100;
 const SPIN_MIN = 1e-6;
 /** Wheel `deltaY` per zoom e-fold, in pixels. */
 const WHEEL_PIXELS_PER_EFOLD = 500;
-const WHEEL_LINE_PIXELS = 16;
-const WHEEL_PAGE_PIXELS = 800;
+/** Pixels per wheel `deltaY` unit, by `deltaMode`: pixel, line, page. */
+const WHEEL_MODE_PIXELS = [1, 16, 800];
 
 const _delta = /* @__PURE__ */ new Quaternion();
 const _world = /* @__PURE__ */ new Quaternion();
@@ -75,14 +75,13 @@ const _parentInverse = /* @__PURE__ */ new Quaternion();
 const _ball: Vec3 = [0, 0, 0];
 const _arc: Quat = [0, 0, 0, 1];
 
-function positive(name: string, value: number, allowZero: boolean, finite = true): number {
-  const ok =
-    typeof value === 'number' &&
-    (allowZero ? value >= 0 : value > 0) &&
-    (!finite || value < Number.POSITIVE_INFINITY);
-  if (!ok) {
-    const range = `${allowZero ? '≥ 0' : '> 0'}${finite ? ' and finite' : ''}`;
-    throw new RangeError(`Trackball: ${name} must be a number ${range}, got ${String(value)}`);
+function positive(name: string, value: number, allowZero: boolean): number {
+  if (
+    !(typeof value === 'number' && (allowZero ? value >= 0 : value > 0) && value < Number.POSITIVE_INFINITY)
+  ) {
+    throw new RangeError(
+      `Trackball: ${name} must be a number ${allowZero ? '≥' : '>'} 0 and finite, got ${String(value)}`,
+    );
   }
   return value;
 }
@@ -165,11 +164,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this.mapping = mapping;
     this.rotateSpeed = rotateSpeed;
     this.zoomSpeed = zoomSpeed;
-    if (!(positive('minZoom', minZoom, false) <= positive('maxZoom', maxZoom, false))) {
-      throw new RangeError(`Trackball: minZoom (${minZoom}) must be ≤ maxZoom (${maxZoom})`);
-    }
-    this._minZoom = minZoom;
-    this._maxZoom = maxZoom;
+    this._setLimits(minZoom, maxZoom);
     this.enableDamping = enableDamping;
     this.dampingFactor = dampingFactor;
     this.radius = radius;
@@ -215,11 +210,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     return this._minZoom;
   }
   set minZoom(value: number) {
-    positive('minZoom', value, false);
-    if (value > this._maxZoom) {
-      throw new RangeError(`Trackball: minZoom must be ≤ maxZoom (${this._maxZoom}), got ${value}`);
-    }
-    this._minZoom = value;
+    this._setLimits(value, this._maxZoom);
   }
 
   /** Largest zoom factor (furthest in). Finite and ≥ {@link Trackball.minZoom}. @defaultValue 100 */
@@ -227,11 +218,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     return this._maxZoom;
   }
   set maxZoom(value: number) {
-    positive('maxZoom', value, false);
-    if (value < this._minZoom) {
-      throw new RangeError(`Trackball: maxZoom must be ≥ minZoom (${this._minZoom}), got ${value}`);
-    }
-    this._maxZoom = value;
+    this._setLimits(this._minZoom, value);
   }
 
   /** Fraction of the spin lost per 1/60 s after release when damping. In (0, 1]. @defaultValue 0.05 */
@@ -373,6 +360,15 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
 
   // ── internals ──
 
+  /** Validate and set both zoom limits. */
+  private _setLimits(min: number, max: number): void {
+    if (!(positive('minZoom', min, false) <= positive('maxZoom', max, false))) {
+      throw new RangeError(`Trackball: minZoom (${min}) must be ≤ maxZoom (${max})`);
+    }
+    this._minZoom = min;
+    this._maxZoom = max;
+  }
+
   /** Clamp and apply a zoom factor; returns whether it changed. */
   private _setZoom(value: number): boolean {
     const next = Math.min(this._maxZoom, Math.max(this._minZoom, value));
@@ -380,13 +376,22 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     if (!(ratio > 0 && ratio < Number.POSITIVE_INFINITY) || ratio === 1) return false;
     const camera = this.camera;
     if (camera?.isOrthographicCamera) {
-      if (typeof camera.zoom === 'number' && typeof camera.updateProjectionMatrix === 'function') {
-        camera.zoom *= ratio;
+      // A zoom whose projection would overflow is refused (three's update computes 2 · zoom: ∞ above 9e307).
+      const e = camera.projectionMatrix.elements;
+      const zoom = camera.zoom;
+      if (typeof zoom === 'number' && typeof camera.updateProjectionMatrix === 'function') {
+        camera.zoom = zoom * ratio;
         camera.updateProjectionMatrix();
+        if (!e.every(Number.isFinite)) {
+          camera.zoom = zoom;
+          camera.updateProjectionMatrix();
+          return false;
+        }
       } else {
         // Scale NDC x and y (rows 0 and 1 of the column-major projection) about the view centre.
-        const e = camera.projectionMatrix.elements;
-        for (const i of [0, 4, 8, 12, 1, 5, 9, 13]) e[i] *= ratio;
+        const xy = [0, 4, 8, 12, 1, 5, 9, 13];
+        if (!xy.every((i) => Number.isFinite(e[i] * ratio))) return false;
+        for (const i of xy) e[i] *= ratio;
         camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
       }
     } else if (camera?.isPerspectiveCamera) {
@@ -554,9 +559,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
   private readonly _onWheel = (event: WheelEvent): void => {
     if (!this.enabled || this._zoomSpeed === 0) return;
     event.preventDefault();
-    let dy = event.deltaY;
-    if (event.deltaMode === 1) dy *= WHEEL_LINE_PIXELS;
-    else if (event.deltaMode === 2) dy *= WHEEL_PAGE_PIXELS;
+    // deltaMode 0 is pixels, 1 lines, 2 pages.
+    const dy = event.deltaY * (WHEEL_MODE_PIXELS[event.deltaMode] ?? 1);
     if (!Number.isFinite(dy) || dy === 0) return;
     this.dispatchEvent(_startEvent);
     if (this._setZoom(this._zoom * Math.exp((-dy / WHEEL_PIXELS_PER_EFOLD) * this._zoomSpeed))) {
