@@ -124,6 +124,15 @@ describe('arcRotation', () => {
     }
   });
 
+  it('stays a unit quaternion when speed · θ overflows (speed near Number.MAX_VALUE)', () => {
+    // Found by the trackball fuzz: rotateSpeed 1.8e308 and a 110 px drag gave sin(∞) = NaN.
+    for (const speed of [Number.MAX_VALUE, 1.7e308, 1e300]) {
+      const q = arcRotation([0, 0, 1], projectToBall(0, -3), speed); // θ ≈ 1.5 rad
+      expect(q.every(Number.isFinite)).toBe(true);
+      expect(Math.hypot(...q)).toBeCloseTo(1, 15);
+    }
+  });
+
   it('refuses zero or non-finite points and a bad speed, naming them', () => {
     expect(() => arcRotation([0, 0, 0], [0, 0, 1])).toThrow(/a must be a finite non-zero vector/);
     expect(() => arcRotation([0, 0, 1], [Number.NaN, 0, 1])).toThrow(/b must be a finite non-zero vector/);

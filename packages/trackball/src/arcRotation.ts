@@ -49,7 +49,9 @@ export function arcRotation(a: Readonly<Vec3>, b: Readonly<Vec3>, speed = 1, out
   const sin = Math.sqrt(cx * cx + cy * cy + cz * cz);
   const cos = ax * bx + ay * by + az * bz;
   const theta = Math.atan2(sin, cos);
-  const half = speed * theta;
+  // speed · θ overflows only for speeds near 1.8e308, where the angle means nothing: any finite angle keeps
+  // the result a unit quaternion.
+  const half = speed * theta < Number.POSITIVE_INFINITY ? speed * theta : (speed % Math.PI) * theta;
   if (sin > 0) {
     cx /= sin;
     cy /= sin;
