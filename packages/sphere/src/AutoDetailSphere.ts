@@ -9,7 +9,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { chooseSphereDetail, type SphereDetail } from './chooseSphereDetail.js';
-import { describeValue } from './describeValue.js';
+import { fail } from './fail.js';
 import { projectedRadiusPx } from './projectedRadiusPx.js';
 import { SPHERE_BASES, type SphereBase } from './SphereBase.js';
 import type { SphereNormals } from './SphereOptions.js';
@@ -91,9 +91,7 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
       indexed = normals !== 'flat',
     } = options;
     if (typeof maxLevel !== 'number' || !Number.isInteger(maxLevel) || maxLevel < 0 || maxLevel > 10) {
-      throw new RangeError(
-        `AutoDetailSphere: maxLevel must be an integer from 0 to 10; got ${describeValue(maxLevel)}`,
-      );
+      fail('AutoDetailSphere', 'maxLevel', 'an integer from 0 to 10', maxLevel);
     }
     // Validates maxErrorPx and bases.
     chooseSphereDetail({ radiusPx: 0, maxErrorPx, bases, maxLevel });

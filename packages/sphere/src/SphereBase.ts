@@ -1,4 +1,4 @@
-import { describeValue } from './describeValue.js';
+import { fail } from './fail.js';
 
 /** The solid a subdivision sphere starts from: the lecture's tetrahedron, or three.js's octahedron or icosahedron. */
 export type SphereBase = 'tetrahedron' | 'octahedron' | 'icosahedron';
@@ -10,8 +10,6 @@ export const SPHERE_BASES: readonly SphereBase[] = /* @__PURE__ */ Object.freeze
   'icosahedron',
 ]);
 
-const ALLOWED = "'tetrahedron', 'octahedron' or 'icosahedron'";
-
 /**
  * Throw unless `base` names a base solid: a TypeError for a non-string, a RangeError for an unknown name.
  * @param caller - Function name for the message.
@@ -19,10 +17,7 @@ const ALLOWED = "'tetrahedron', 'octahedron' or 'icosahedron'";
  * @internal
  */
 export function assertSphereBase(caller: string, name: string, base: unknown): asserts base is SphereBase {
-  if (typeof base !== 'string') {
-    throw new TypeError(`${caller}: ${name} must be ${ALLOWED}; got ${describeValue(base)}`);
-  }
-  if (!(SPHERE_BASES as readonly string[]).includes(base)) {
-    throw new RangeError(`${caller}: ${name} must be ${ALLOWED}; got '${base}'`);
+  if (!(SPHERE_BASES as readonly unknown[]).includes(base)) {
+    fail(caller, name, "'tetrahedron', 'octahedron' or 'icosahedron'", base, 'string');
   }
 }

@@ -1,5 +1,5 @@
 import { assertLevel } from './assertLevel.js';
-import { describeValue } from './describeValue.js';
+import { fail, mustBe } from './fail.js';
 import { assertSphereBase, type SphereBase } from './SphereBase.js';
 
 /** Which normals a subdivision sphere carries. */
@@ -80,7 +80,7 @@ const NORMALS: readonly SphereNormals[] = ['smooth', 'flat', 'none'];
  */
 export function resolveSphereOptions(caller: string, options: SubdivideSphereOptions): SphereParameters {
   if (options === null || typeof options !== 'object') {
-    throw new TypeError(`${caller}: options must be an object; got ${describeValue(options)}`);
+    throw new TypeError(mustBe(caller, 'options', 'an object', options));
   }
   const {
     level = 6,
@@ -91,38 +91,19 @@ export function resolveSphereOptions(caller: string, options: SubdivideSphereOpt
   } = options;
   assertLevel(caller, 'level', level);
   assertSphereBase(caller, 'base', base);
-  if (typeof radius !== 'number') {
-    throw new TypeError(
-      `${caller}: radius must be a number from 1e-30 to 1e30; got ${describeValue(radius)}`,
-    );
+  if (typeof radius !== 'number' || !(radius >= MIN_SPHERE_RADIUS && radius <= MAX_SPHERE_RADIUS)) {
+    fail(caller, 'radius', 'a number from 1e-30 to 1e30', radius, 'number');
   }
-  if (!(radius >= MIN_SPHERE_RADIUS && radius <= MAX_SPHERE_RADIUS)) {
-    throw new RangeError(`${caller}: radius must be a number from 1e-30 to 1e30; got ${radius}`);
-  }
-  if (typeof normals !== 'string') {
-    throw new TypeError(
-      `${caller}: normals must be 'smooth', 'flat' or 'none'; got ${describeValue(normals)}`,
-    );
-  }
-  if (!NORMALS.includes(normals)) {
-    throw new RangeError(`${caller}: normals must be 'smooth', 'flat' or 'none'; got '${normals}'`);
-  }
+  if (!NORMALS.includes(normals)) fail(caller, 'normals', "'smooth', 'flat' or 'none'", normals, 'string');
   const indexed = options.indexed ?? normals !== 'flat';
-  if (typeof indexed !== 'boolean') {
-    throw new TypeError(`${caller}: indexed must be true or false; got ${describeValue(indexed)}`);
-  }
+  if (typeof indexed !== 'boolean') fail(caller, 'indexed', 'true or false', indexed, 'boolean');
   if (indexed && normals === 'flat') {
     throw new RangeError(
       `${caller}: normals 'flat' needs indexed: false (a vertex shared by several faces has several face normals); got indexed: true`,
     );
   }
-  if (typeof maxBytes !== 'number') {
-    throw new TypeError(
-      `${caller}: maxBytes must be a number > 0 (Infinity allowed); got ${describeValue(maxBytes)}`,
-    );
-  }
-  if (!(maxBytes > 0)) {
-    throw new RangeError(`${caller}: maxBytes must be a number > 0 (Infinity allowed); got ${maxBytes}`);
+  if (typeof maxBytes !== 'number' || !(maxBytes > 0)) {
+    fail(caller, 'maxBytes', 'a number > 0 (Infinity allowed)', maxBytes, 'number');
   }
   return { level, base, radius, normals, indexed, maxBytes };
 }

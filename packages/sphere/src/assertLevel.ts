@@ -1,4 +1,4 @@
-import { describeValue } from './describeValue.js';
+import { fail } from './fail.js';
 
 /**
  * Throw unless `level` is a subdivision level: a TypeError for a non-number, a RangeError for NaN, a
@@ -11,11 +11,7 @@ export function assertLevel(
   level: unknown,
   max = Infinity,
 ): asserts level is number {
-  const allowed = max === Infinity ? 'an integer ≥ 0' : `an integer from 0 to ${max}`;
-  if (typeof level !== 'number') {
-    throw new TypeError(`${caller}: ${name} must be ${allowed}; got ${describeValue(level)}`);
-  }
-  if (!Number.isInteger(level) || level < 0 || level > max) {
-    throw new RangeError(`${caller}: ${name} must be ${allowed}; got ${level}`);
+  if (!Number.isInteger(level) || (level as number) < 0 || (level as number) > max) {
+    fail(caller, name, max === Infinity ? 'an integer ≥ 0' : `an integer from 0 to ${max}`, level, 'number');
   }
 }

@@ -1,5 +1,5 @@
 import { assertLevel } from './assertLevel.js';
-import { describeValue } from './describeValue.js';
+import { fail, mustBe } from './fail.js';
 import { assertSphereBase, SPHERE_BASES, type SphereBase } from './SphereBase.js';
 import { sphereCounts } from './sphereCounts.js';
 import { MAX_SPHERE_ERROR_LEVEL, sphereError } from './sphereError.js';
@@ -52,20 +52,16 @@ export interface SphereDetail {
 export function chooseSphereDetail(options: ChooseSphereDetailOptions): SphereDetail {
   const caller = 'chooseSphereDetail';
   if (options === null || typeof options !== 'object') {
-    throw new TypeError(`${caller}: options must be an object; got ${describeValue(options)}`);
+    throw new TypeError(mustBe(caller, 'options', 'an object', options));
   }
   const { radiusPx, maxErrorPx, bases = SPHERE_BASES, maxLevel = 10 } = options;
   if (typeof radiusPx !== 'number' || !(radiusPx >= 0) || !Number.isFinite(radiusPx)) {
-    const E = typeof radiusPx === 'number' ? RangeError : TypeError;
-    throw new E(`${caller}: radiusPx must be a finite number ≥ 0; got ${describeValue(radiusPx)}`);
+    fail(caller, 'radiusPx', 'a finite number ≥ 0', radiusPx, 'number');
   }
   if (typeof maxErrorPx !== 'number' || !(maxErrorPx > 0) || !Number.isFinite(maxErrorPx)) {
-    const E = typeof maxErrorPx === 'number' ? RangeError : TypeError;
-    throw new E(`${caller}: maxErrorPx must be a finite number > 0; got ${describeValue(maxErrorPx)}`);
+    fail(caller, 'maxErrorPx', 'a finite number > 0', maxErrorPx, 'number');
   }
-  if (!Array.isArray(bases)) {
-    throw new TypeError(`${caller}: bases must be an array of base names; got ${describeValue(bases)}`);
-  }
+  if (!Array.isArray(bases)) throw new TypeError(mustBe(caller, 'bases', 'an array of base names', bases));
   if (bases.length === 0) throw new RangeError(`${caller}: bases must name at least one base; got []`);
   bases.forEach((b, i) => {
     assertSphereBase(caller, `bases[${i}]`, b);

@@ -1,4 +1,4 @@
-import { describeValue } from './describeValue.js';
+import { fail, mustBe } from './fail.js';
 
 /** How `computeVertexNormals` weights the face normals meeting at a vertex. */
 export type NormalWeighting = 'average' | 'area' | 'angle';
@@ -33,33 +33,25 @@ export function computeVertexNormals(
 ): Float32Array {
   const caller = 'computeVertexNormals';
   if (positions == null || typeof positions.length !== 'number') {
-    throw new TypeError(`${caller}: positions must be an array of numbers; got ${describeValue(positions)}`);
+    throw new TypeError(mustBe(caller, 'positions', 'an array of numbers', positions));
   }
-  if (positions.length % 3 !== 0) {
-    throw new RangeError(`${caller}: positions.length must be a multiple of 3; got ${positions.length}`);
-  }
+  if (positions.length % 3 !== 0) fail(caller, 'positions.length', 'a multiple of 3', positions.length);
   const vertexCount = positions.length / 3;
   if (indices != null && typeof indices.length !== 'number') {
-    throw new TypeError(
-      `${caller}: indices must be an array of integers or null; got ${describeValue(indices)}`,
-    );
+    throw new TypeError(mustBe(caller, 'indices', 'an array of integers or null', indices));
   }
-  const cornerCount = indices == null ? positions.length / 3 : indices.length;
+  const cornerCount = indices == null ? vertexCount : indices.length;
   if (cornerCount % 3 !== 0) {
     const what = indices == null ? 'positions.length / 3 (a triangle soup)' : 'indices.length';
-    throw new RangeError(`${caller}: ${what} must be a multiple of 3; got ${cornerCount}`);
+    fail(caller, what, 'a multiple of 3', cornerCount);
   }
-  if (typeof weighting !== 'string' || !WEIGHTINGS.includes(weighting)) {
-    const E = typeof weighting === 'string' ? RangeError : TypeError;
-    throw new E(`${caller}: weighting must be 'average', 'area' or 'angle'; got ${describeValue(weighting)}`);
-  }
+  if (!WEIGHTINGS.includes(weighting))
+    fail(caller, 'weighting', "'average', 'area' or 'angle'", weighting, 'string');
   if (indices != null) {
     for (let i = 0; i < indices.length; i++) {
       const v = indices[i];
       if (!Number.isInteger(v) || v < 0 || v >= vertexCount) {
-        throw new RangeError(
-          `${caller}: indices[${i}] must be an integer from 0 to ${vertexCount - 1} (vertex count − 1); got ${v}`,
-        );
+        fail(caller, `indices[${i}]`, `an integer from 0 to ${vertexCount - 1} (vertex count − 1)`, v);
       }
     }
   }

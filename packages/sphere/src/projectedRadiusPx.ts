@@ -1,5 +1,5 @@
 import type { Camera, Matrix4 } from 'three';
-import { describeValue } from './describeValue.js';
+import { fail } from './fail.js';
 
 /** Options of {@link projectedRadiusPx}. */
 export interface ProjectedRadiusOptions {
@@ -34,14 +34,10 @@ export function projectedRadiusPx({
   radius = 1,
 }: ProjectedRadiusOptions): number {
   if (typeof viewportHeightPx !== 'number' || !(viewportHeightPx > 0) || !Number.isFinite(viewportHeightPx)) {
-    throw new RangeError(
-      `projectedRadiusPx: viewportHeightPx must be a finite number > 0; got ${describeValue(viewportHeightPx)}`,
-    );
+    fail('projectedRadiusPx', 'viewportHeightPx', 'a finite number > 0', viewportHeightPx);
   }
   if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
-    throw new RangeError(
-      `projectedRadiusPx: radius must be a finite number > 0; got ${describeValue(radius)}`,
-    );
+    fail('projectedRadiusPx', 'radius', 'a finite number > 0', radius);
   }
   const m = matrixWorld.elements;
   const scale = Math.sqrt(

@@ -1,4 +1,5 @@
 import { assertLevel } from './assertLevel.js';
+import { fail } from './fail.js';
 import { assertSphereBase, type SphereBase } from './SphereBase.js';
 
 /** Element counts of a subdivision sphere. */
@@ -32,14 +33,7 @@ export function sphereCounts(base: SphereBase, level: number): SphereCounts {
   assertLevel('sphereCounts', 'level', level);
   const triangles = BASE_FACES[base] * 4 ** level;
   if (triangles === Number.POSITIVE_INFINITY) {
-    throw new RangeError(
-      `sphereCounts: level must be an integer ≥ 0 whose counts are finite (at most 509 or 510); got ${level}`,
-    );
-  }
-  if (triangles === Number.POSITIVE_INFINITY) {
-    throw new RangeError(
-      `sphereCounts: level must be an integer from 0 to ${level > 0 ? 509 + Number(base !== 'icosahedron') : 0} (finite counts) for the ${base}; got ${level}`,
-    );
+    fail('sphereCounts', 'level', 'an integer ≥ 0 whose counts are finite (at most 509 or 510)', level);
   }
   return { triangles, vertices: 2 + triangles / 2, edges: (3 * triangles) / 2 };
 }
