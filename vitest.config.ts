@@ -1,7 +1,8 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 
-const src = (name: string) => fileURLToPath(new URL(`./packages/${name}/src/index.ts`, import.meta.url));
+// Each package resolves to its source folder: `@shadelab/x` to src/index.ts, a subpath `@shadelab/x/y` to src/y.ts.
+const src = (name: string) => fileURLToPath(new URL(`./packages/${name}/src`, import.meta.url));
 
 export default defineConfig({
   resolve: {

@@ -3,8 +3,9 @@ import { fileURLToPath } from 'node:url';
 import react from '@vitejs/plugin-react';
 import { defineConfig } from 'vite';
 
-// The playground edits the packages live: resolve them to their TypeScript sources.
-const src = (name: string) => fileURLToPath(new URL(`../packages/${name}/src/index.ts`, import.meta.url));
+// The playground edits the packages live: resolve them to their TypeScript sources (`@shadelab/x` to
+// src/index.ts, a subpath `@shadelab/x/y` to src/y.ts).
+const src = (name: string) => fileURLToPath(new URL(`../packages/${name}/src`, import.meta.url));
 
 const here = (path: string) => fileURLToPath(new URL(path, import.meta.url));
 

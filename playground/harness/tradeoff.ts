@@ -2,7 +2,7 @@
 // trade (flat / Gouraud / Phong mesh at a base and level, or the ray-cast impostor), compares the pixels with
 // renderReference computed here in the page, and times frames (1×1 readPixels after each).
 
-import { SphereImpostor } from '@shadelab/material';
+import { SphereImpostor } from '@shadelab/material/impostor';
 import { compareToReference } from '@shadelab/reference';
 import { Mesh, MeshBasicMaterial, PlaneGeometry } from 'three';
 import { optionCost, type TradeOption, TradeoffScene, type TradeView } from '../src/tradeoff/tradeoffScene';

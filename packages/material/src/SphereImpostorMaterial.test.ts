@@ -1,11 +1,10 @@
+import { PhongLight, ShadingMaterial } from '@shadelab/material';
 import {
   createImpostorQuad,
-  PhongLight,
   projectedBounds,
-  ShadingMaterial,
   SphereImpostor,
   SphereImpostorMaterial,
-} from '@shadelab/material';
+} from '@shadelab/material/impostor';
 import fc from 'fast-check';
 import {
   Euler,

@@ -1,3 +1,8 @@
+/**
+ * ShadingMaterial (flat, Gouraud, Phong shading × Phong, Blinn-Phong, cel lighting), PhongLight, the cel
+ * outline, and `shade()`, the same equations on the CPU. The ray-cast sphere is in `@shadelab/material/impostor`.
+ * @module @shadelab/material
+ */
 export { computeNormalMatrix } from './computeNormalMatrix.js';
 export { createOutline } from './createOutline.js';
 export { eyeOf } from './eyeOf.js';
@@ -12,12 +17,6 @@ export {
   type ShadingMaterialOptions,
   SPHERE_FLAG,
 } from './ShadingMaterial.js';
-export { createImpostorQuad, SphereImpostor } from './SphereImpostor.js';
-export {
-  projectedBounds,
-  SphereImpostorMaterial,
-  type SphereImpostorMaterialOptions,
-} from './SphereImpostorMaterial.js';
 export {
   type Attenuation,
   celDiffuse,

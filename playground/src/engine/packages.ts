@@ -4,14 +4,8 @@
  */
 
 import { Camera, CameraMovement } from '@shadelab/camera';
-import {
-  createOutline,
-  type OutlineMaterial,
-  PhongLight,
-  ShadingMaterial,
-  SphereImpostor,
-  SphereImpostorMaterial,
-} from '@shadelab/material';
+import { createOutline, type OutlineMaterial, PhongLight, ShadingMaterial } from '@shadelab/material';
+import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
 import {
   chooseSphereDetail,
   projectedRadiusPx,

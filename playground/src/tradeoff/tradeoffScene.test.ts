@@ -1,4 +1,4 @@
-import { createImpostorQuad } from '@shadelab/material';
+import { createImpostorQuad } from '@shadelab/material/impostor';
 import { SPHERE_BASES, SubdivisionSphereGeometry } from '@shadelab/sphere';
 import { describe, expect, it } from 'vitest';
 import { cheapestMeeting, paretoFront, TRADE_POINTS } from './benchData';

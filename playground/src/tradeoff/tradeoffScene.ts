@@ -7,9 +7,8 @@ import {
   type ShadeLight,
   type ShadeMaterial,
   ShadingMaterial,
-  SphereImpostor,
-  SphereImpostorMaterial,
 } from '@shadelab/material';
+import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
 import { type ReferenceImage, renderReference } from '@shadelab/reference';
 import { type SphereBase, SubdivisionSphereGeometry, sphereCounts } from '@shadelab/sphere';
 import {
