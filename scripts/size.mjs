@@ -1,5 +1,6 @@
-// Size budget, minified and gzipped, without three (external), of every entry point of every package, read
-// from the package.json `exports` maps so that a new entry is measured without editing this file:
+// Size budget, minified and gzipped, without dependencies (three; @shadelab/material for @shadelab/reference,
+// which has its own row), of every entry point of every package, read from the package.json `exports` maps so
+// that a new entry is measured without editing this file:
 // - a main entry (`@shadelab/x`): everything it exports, gated at the issue's targets (4 kB, material 8 kB);
 // - a subpath (`@shadelab/x/y`): everything it exports, and what it adds to an app that already imports the
 //   main entry (the bytes of main + subpath minus those of main), the latter gated at the same target;
@@ -30,7 +31,10 @@ async function measure(/** @type {string} */ name, /** @type {string[]} */ sourc
       write: false,
       minify: true,
       lib: { entry, formats: ['es'], fileName: 'size' },
-      rollupOptions: { external: (id) => id === 'three' || id.startsWith('three/') },
+      // Dependencies are not counted: three (a peer), and @shadelab/material in @shadelab/reference (its own row).
+      rollupOptions: {
+        external: (id) => id === 'three' || id.startsWith('three/') || id.startsWith('@shadelab/'),
+      },
     },
   });
   const outputs = (Array.isArray(result) ? result : [result]).flatMap((r) => ('output' in r ? r.output : []));
