@@ -1,5 +1,5 @@
+import { baseSolid } from './baseSolid.js';
 import { resolveSphereOptions, type SphereParameters, type SubdivideSphereOptions } from './SphereOptions.js';
-import { BASE_FACES } from './sphereCounts.js';
 
 /**
  * Bytes `subdivideSphere` allocates for these options: the output arrays plus its scratch (an edge table and
@@ -20,7 +20,7 @@ export function estimateSphereBytes(options: SubdivideSphereOptions = {}): numbe
 /** {@link estimateSphereBytes} for resolved options. @internal */
 export function bytesFor({ base, level, normals, indexed }: SphereParameters): number {
   // Counts as in sphereCounts, but Infinity (not an error) past 2^1024: an absurd level is then refused by size.
-  const T = BASE_FACES[base] * 4 ** level;
+  const T = (baseSolid(base).faces.length / 3) * 4 ** level;
   const V = 2 + T / 2;
   let bytes = 12 * V; // positions of the shared vertices
   bytes += V <= 65536 ? 6 * T : 12 * T; // indices

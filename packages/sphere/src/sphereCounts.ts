@@ -1,4 +1,5 @@
 import { assertLevel } from './assertLevel.js';
+import { baseSolid } from './baseSolid.js';
 import { fail } from './fail.js';
 import { assertSphereBase, type SphereBase } from './SphereBase.js';
 
@@ -12,13 +13,6 @@ export interface SphereCounts {
   readonly edges: number;
 }
 
-/** Faces of each base solid. @internal */
-export const BASE_FACES: Readonly<Record<SphereBase, number>> = {
-  tetrahedron: 4,
-  octahedron: 8,
-  icosahedron: 20,
-};
-
 /**
  * Exact element counts of the sphere `subdivideSphere({ base, level })` builds, without building it.
  *
@@ -31,7 +25,7 @@ export const BASE_FACES: Readonly<Record<SphereBase, number>> = {
 export function sphereCounts(base: SphereBase, level: number): SphereCounts {
   assertSphereBase('sphereCounts', 'base', base);
   assertLevel('sphereCounts', 'level', level);
-  const triangles = BASE_FACES[base] * 4 ** level;
+  const triangles = (baseSolid(base).faces.length / 3) * 4 ** level;
   if (triangles === Number.POSITIVE_INFINITY) {
     fail('sphereCounts', 'level', 'an integer ≥ 0 whose counts are finite (at most 509 or 510)', level);
   }

@@ -41,46 +41,42 @@ export interface SphereMesh {
  */
 export function subdivideSphere(options: SubdivideSphereOptions = {}): SphereMesh {
   const params = resolveSphereOptions('subdivideSphere', options);
+  const { level, base, radius, normals, indexed, maxBytes } = params;
   const bytes = bytesFor(params);
+  const needs = `subdivideSphere: level ${level} of the ${base}`;
   // Infinity bytes is refused even with maxBytes: Infinity (its arrays cannot exist).
-  if (!(bytes <= params.maxBytes && bytes < Number.POSITIVE_INFINITY)) {
+  if (!(bytes <= maxBytes && bytes < Number.POSITIVE_INFINITY)) {
     throw new RangeError(
-      `subdivideSphere: level ${params.level} of the ${params.base} (${params.indexed ? 'indexed' : 'non-indexed'}, normals '${params.normals}') needs about ${formatBytes(bytes)}, above maxBytes = ${formatBytes(params.maxBytes)}; lower the level or raise maxBytes`,
+      `${needs} (${indexed ? 'indexed' : 'non-indexed'}, normals '${normals}') needs about ${formatBytes(bytes)}, above maxBytes = ${formatBytes(maxBytes)}; lower the level or raise maxBytes`,
     );
   }
   let built: { positions: Float32Array; indices: IndexArray };
   try {
-    built = buildIndexed(params.base, params.level, params.radius);
+    built = buildIndexed(base, level, radius);
   } catch (cause) {
     // Only reachable with a raised maxBytes: the engine refused an array (too long, or out of memory).
     throw new RangeError(
-      `subdivideSphere: level ${params.level} of the ${params.base} needs about ${formatBytes(bytes)}, which could not be allocated (maxBytes = ${params.maxBytes}); lower the level`,
+      `${needs} needs about ${formatBytes(bytes)}, which could not be allocated (maxBytes = ${maxBytes}); lower the level`,
       { cause },
     );
   }
-  const { positions, indices } = built;
-  if (params.indexed) {
-    return params.normals === 'smooth'
-      ? { positions, normals: smoothNormals(positions), indices }
-      : { positions, indices };
-  }
-  const soup = expand(positions, indices);
-  if (params.normals === 'smooth') return { positions: soup, normals: smoothNormals(soup) };
-  if (params.normals === 'flat') return { positions: soup, normals: flatNormals(soup) };
-  return { positions: soup };
+  const positions = indexed ? built.positions : expand(built.positions, built.indices);
+  const mesh: SphereMesh = { positions };
+  if (normals !== 'none') mesh.normals = (normals === 'smooth' ? smoothNormals : flatNormals)(positions);
+  if (indexed) mesh.indices = built.indices;
+  return mesh;
 }
 
 /** `1234567890` → `'1.23 GB (1234567890 bytes)'`. @internal */
 export function formatBytes(bytes: number): string {
   if (!Number.isFinite(bytes)) return `${bytes} bytes`;
-  const units = ['bytes', 'kB', 'MB', 'GB', 'TB', 'PB', 'EB'];
   let v = bytes;
   let u = 0;
-  while (v >= 1000 && u < units.length - 1) {
+  while (v >= 1000 && u < 6) {
     v /= 1000;
     u++;
   }
-  return u === 0 ? `${bytes} bytes` : `${v.toPrecision(3)} ${units[u]} (${bytes} bytes)`;
+  return u === 0 ? `${bytes} bytes` : `${v.toPrecision(3)} ${'kMGTPE'[u - 1]}B (${bytes} bytes)`;
 }
 
 type IndexArray = Uint16Array | Uint32Array;
@@ -101,17 +97,15 @@ function buildIndexed(
 
   const indices = vertexCount <= 65536 ? new Uint16Array(3 * triangles) : new Uint32Array(3 * triangles);
   // Scratch: the edge table (2 endpoints per edge; 2E = 3T) and the edge ids of every triangle (3T) of one
-  // level. Levels alternate between two regions: A holds level L − 1 (and L − 3, …), B holds L − 2 (and L − 4, …).
+  // level. Levels alternate between two regions: A holds level L − 1 (and L − 3, …), B holds L − 2 (and L − 4, …),
+  // so level 0 starts in A when L is odd.
   const sizeA = (3 * triangles) / 4;
-  const edgesA = new Uint32Array(sizeA);
-  const trisA = new Uint32Array(sizeA);
-  const edgesB = level >= 2 ? new Uint32Array(sizeA / 4) : edgesA;
-  const trisB = level >= 2 ? new Uint32Array(sizeA / 4) : trisA;
-  const inA = (k: number) => (level - 1 - k) % 2 === 0;
+  const regionA = [new Uint32Array(sizeA), new Uint32Array(sizeA)];
+  const regionB = level >= 2 ? [new Uint32Array(sizeA / 4), new Uint32Array(sizeA / 4)] : regionA;
+  let [edges, tris] = level % 2 ? regionA : regionB;
+  let [nextEdges, nextTris] = level % 2 ? regionB : regionA;
 
   // Level 0: each triangle edge gets an id, ×2, + 1 when the triangle runs against the stored direction.
-  let edges = inA(0) ? edgesA : edgesB;
-  let tris = inA(0) ? trisA : trisB;
   let edgeCount = 0;
   for (let c = 0; c < faces.length; c++) {
     const u = faces[c];
@@ -131,15 +125,12 @@ function buildIndexed(
   let vertexBase = vertices.length / 3;
   let triangleCount = f0;
   for (let k = 1; k < level; k++) {
-    const nextEdges = inA(k) ? edgesA : edgesB;
-    const nextTris = inA(k) ? trisA : trisB;
     midpoints(positions, edges, edgeCount, vertexBase, radius);
     refine(edges, tris, edgeCount, triangleCount, vertexBase, nextEdges, nextTris);
     vertexBase += edgeCount;
     edgeCount = 2 * edgeCount + 3 * triangleCount;
     triangleCount *= 4;
-    edges = nextEdges;
-    tris = nextTris;
+    [edges, tris, nextEdges, nextTris] = [nextEdges, nextTris, edges, tris];
   }
   midpoints(positions, edges, edgeCount, vertexBase, radius);
   finalTriangles(edges, tris, triangleCount, vertexBase, indices);
