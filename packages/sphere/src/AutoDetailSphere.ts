@@ -9,13 +9,13 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { chooseSphereDetail, type SphereDetail } from './chooseSphereDetail.js';
-import { fail } from './fail.js';
 import { projectedRadiusPx } from './projectedRadiusPx.js';
 import { SPHERE_BASES, type SphereBase } from './SphereBase.js';
 import type { SphereNormals } from './SphereOptions.js';
 import { SubdivisionSphereGeometry } from './SubdivisionSphereGeometry.js';
 import { sphereCounts } from './sphereCounts.js';
 import { sphereError } from './sphereError.js';
+import { fail } from './validate.js';
 
 /** Options of {@link AutoDetailSphere}. */
 export interface AutoDetailSphereOptions {

@@ -1,6 +1,5 @@
-import { assertLevel } from './assertLevel.js';
-import { fail, mustBe } from './fail.js';
 import { assertSphereBase, type SphereBase } from './SphereBase.js';
+import { assertLevel, fail, mustBe } from './validate.js';
 
 /** Which normals a subdivision sphere carries. */
 export type SphereNormals = 'smooth' | 'flat' | 'none';

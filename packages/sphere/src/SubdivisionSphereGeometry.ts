@@ -42,7 +42,7 @@ export class SubdivisionSphereGeometry extends BufferGeometry {
   /** The exact bounding sphere: centre at the origin, radius `parameters.radius` (every vertex lies on it). */
   override computeBoundingSphere(): void {
     if (this.boundingSphere === null) this.boundingSphere = new Sphere();
-    this.boundingSphere.set(new Vector3(0, 0, 0), this.parameters.radius);
+    this.boundingSphere.set(new Vector3(), this.parameters.radius);
   }
 
   /** Copy `source`'s attributes, index, groups and bounds (three's `copy`) and its `parameters`. */

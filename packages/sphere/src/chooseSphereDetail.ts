@@ -1,8 +1,7 @@
-import { assertLevel } from './assertLevel.js';
-import { fail, mustBe } from './fail.js';
 import { assertSphereBase, SPHERE_BASES, type SphereBase } from './SphereBase.js';
 import { sphereCounts } from './sphereCounts.js';
 import { MAX_SPHERE_ERROR_LEVEL, sphereError } from './sphereError.js';
+import { assertLevel, fail, mustBe } from './validate.js';
 
 /** Options of {@link chooseSphereDetail}. */
 export interface ChooseSphereDetailOptions {

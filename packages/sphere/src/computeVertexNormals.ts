@@ -1,4 +1,4 @@
-import { fail, mustBe } from './fail.js';
+import { fail, mustBe } from './validate.js';
 
 /** How `computeVertexNormals` weights the face normals meeting at a vertex. */
 export type NormalWeighting = 'average' | 'area' | 'angle';

@@ -1,4 +1,4 @@
-import { baseSolid } from './baseSolid.js';
+import { baseSolid } from './SphereBase.js';
 import { resolveSphereOptions, type SphereParameters, type SubdivideSphereOptions } from './SphereOptions.js';
 
 /**

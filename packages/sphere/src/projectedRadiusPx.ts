@@ -1,5 +1,5 @@
 import type { Camera, Matrix4 } from 'three';
-import { fail } from './fail.js';
+import { fail } from './validate.js';
 
 /** Options of {@link projectedRadiusPx}. */
 export interface ProjectedRadiusOptions {

@@ -1,7 +1,5 @@
-import { assertLevel } from './assertLevel.js';
-import { baseSolid } from './baseSolid.js';
-import { fail } from './fail.js';
-import { assertSphereBase, type SphereBase } from './SphereBase.js';
+import { assertSphereBase, baseSolid, type SphereBase } from './SphereBase.js';
+import { assertLevel, fail } from './validate.js';
 
 /** Element counts of a subdivision sphere. */
 export interface SphereCounts {

@@ -1,6 +1,5 @@
-import { assertLevel } from './assertLevel.js';
-import { baseSolid } from './baseSolid.js';
-import { assertSphereBase, type SphereBase } from './SphereBase.js';
+import { assertSphereBase, baseSolid, type SphereBase } from './SphereBase.js';
+import { assertLevel } from './validate.js';
 
 /** Highest level `sphereError` accepts: 20 (error about 4e-12 of the radius; double rounding in the vertices limits the relative precision there to about 1e-4, and deeper levels only get worse). */
 export const MAX_SPHERE_ERROR_LEVEL = 20;

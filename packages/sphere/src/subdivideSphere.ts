@@ -1,6 +1,5 @@
-import { baseSolid } from './baseSolid.js';
 import { bytesFor } from './estimateSphereBytes.js';
-import type { SphereBase } from './SphereBase.js';
+import { baseSolid, type SphereBase } from './SphereBase.js';
 import { resolveSphereOptions, type SubdivideSphereOptions } from './SphereOptions.js';
 
 /** The arrays of a subdivision sphere. */

@@ -1,3 +1,5 @@
+// Validation shared by every entry point: one message format, one throw.
+
 /** A value as shown in error messages: strings quoted, numbers as written, objects by kind. */
 function describeValue(value: unknown): string {
   if (typeof value === 'string') return `'${value}'`;
@@ -24,4 +26,20 @@ export function mustBe(caller: string, name: string, allowed: string, value: unk
 export function fail(caller: string, name: string, allowed: string, value: unknown, type?: string): never {
   const message = mustBe(caller, name, allowed, value);
   throw type !== undefined && typeof value !== type ? new TypeError(message) : new RangeError(message);
+}
+
+/**
+ * Throw unless `level` is a subdivision level: a TypeError for a non-number, a RangeError for NaN, a
+ * negative or fractional number, or one above `max`.
+ * @internal
+ */
+export function assertLevel(
+  caller: string,
+  name: string,
+  level: unknown,
+  max = Infinity,
+): asserts level is number {
+  if (!Number.isInteger(level) || (level as number) < 0 || (level as number) > max) {
+    fail(caller, name, max === Infinity ? 'an integer ≥ 0' : `an integer from 0 to ${max}`, level, 'number');
+  }
 }
