@@ -4,7 +4,8 @@
 // level, the cheapest base per error budget, and the cost of sphereError itself.
 //
 //   npx tsc -b packages/sphere && node bench/sphere.bench.mjs [--json bench/results/sphere.json] [--quick]
-import { SPHERE_BASES, sphereCounts, sphereError, subdivideSphere } from '@shadelab/sphere';
+import { SPHERE_BASES, sphereCounts, subdivideSphere } from '@shadelab/sphere';
+import { sphereError } from '@shadelab/sphere/detail';
 import { IcosahedronGeometry } from 'three';
 import { measure, writeResults } from './lib/bench.mjs';
 

@@ -7,7 +7,8 @@
 //
 //   node bench/tradeoff.bench.mjs [--json PATH] [--levels 0,1,...,7] [--frames 15] [--rounds 3]
 import { loadavg } from 'node:os';
-import { AutoDetailSphere, SPHERE_BASES, sphereCounts, sphereError } from '@shadelab/sphere';
+import { SPHERE_BASES, sphereCounts } from '@shadelab/sphere';
+import { AutoDetailSphere, sphereError } from '@shadelab/sphere/detail';
 import { MeshBasicMaterial, PerspectiveCamera } from 'three';
 import { arg, summarize, writeResults } from './lib/bench.mjs';
 import { openPlayground } from './lib/browser.mjs';

@@ -293,10 +293,19 @@ test('each package.json is ready to publish: types-first exports, files, no side
     expect(manifest.private, where).toBeUndefined();
     expect(manifest.type, where).toBe('module');
     expect(manifest.sideEffects, where).toBe(false);
-    const root = manifest.exports?.['.'];
-    expect(Object.keys(root ?? {})[0], `${where}: exports['.'] lists "types" first`).toBe('types');
-    expect(p.files, where).toContain(root.types.replace(/^\.\//, ''));
-    expect(p.files, where).toContain(root.import.replace(/^\.\//, ''));
+    expect(Object.keys(manifest.exports ?? {}), `${where}: exports`).toContain('.');
+    // Every entry point (the main one and subpaths such as './impostor') lists "types" first, and both files
+    // are in the tarball.
+    for (const [path, entry] of Object.entries(
+      manifest.exports as Record<string, string | Record<string, string>>,
+    )) {
+      if (path === './package.json') continue;
+      if (typeof entry === 'string')
+        throw new Error(`${where}: exports['${path}'] must be a conditions object`);
+      expect(Object.keys(entry)[0], `${where}: exports['${path}'] lists "types" first`).toBe('types');
+      expect(p.files, `${where}: exports['${path}']`).toContain(entry.types.replace(/^\.\//, ''));
+      expect(p.files, `${where}: exports['${path}']`).toContain(entry.import.replace(/^\.\//, ''));
+    }
     expect(Array.isArray(manifest.files) && manifest.files.length > 0, `${where}: files`).toBe(true);
     expect(manifest.engines?.node, where).toMatch(/^>=\d+/);
     expect(manifest.repository?.url, where).toMatch(/^git\+https:\/\//);
@@ -331,6 +340,8 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
     import { Camera } from '@shadelab/camera';
     import { PhongLight, ShadingMaterial, shade } from '@shadelab/material';
     import { sphereCounts, subdivideSphere, SubdivisionSphereGeometry } from '@shadelab/sphere';
+    import { chooseSphereDetail } from '@shadelab/sphere/detail';
+    import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
     import { intersectSphere } from '@shadelab/reference';
     import { Trackball } from '@shadelab/trackball';
     const hit = intersectSphere([0, 0, 3], [0, 0, -1]);
@@ -342,6 +353,8 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
     const light = new PhongLight();
     const material = new ShadingMaterial({ lights: [light] });
     const trackball = new Trackball(null, null, { camera });
+    const detail = chooseSphereDetail({ radiusPx: 300, maxErrorPx: 0.5 });
+    const impostor = new SphereImpostor(new SphereImpostorMaterial({ lights: [light] }));
     const lit = shade(
       { position: [0, 0, 1], normal: [0, 0, 1], eye: [0, 0, 3, 1] },
       { ka: [0, 0, 0], kd: [1, 1, 1], ks: [0, 0, 0], shininess: 1, lighting: 'phong', celBands: 0 },
@@ -356,6 +369,8 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
       matrix: trackball.getMatrix().toArray(),
       lit: Array.from(lit),
       hit: hit && [hit.t0, hit.t1],
+      detail: [detail.errorPx <= 0.5, detail.triangles === sphereCounts(detail.base, detail.level).triangles],
+      impostorShading: impostor.material.shading,
     }));
   `;
   const out = await run('node', ['--input-type=module', '-e', script], join(tmp, 'vanilla'));
@@ -373,6 +388,9 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
   // The CPU reference: a ray from z = 3 down the axis enters the unit sphere at t = 2 and leaves at t = 4.
   expect(result.hit[0]).toBeCloseTo(2, 12);
   expect(result.hit[1]).toBeCloseTo(4, 12);
+  // The subpath entries resolve from the tarballs too.
+  expect(result.detail).toEqual([true, true]);
+  expect(result.impostorShading).toBe('phong');
 });
 
 test("a fresh react-three-fiber app renders the lecture's scene from the tarballs and the trackball turns it", async ({

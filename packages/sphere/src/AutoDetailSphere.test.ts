@@ -1,11 +1,5 @@
-import {
-  AutoDetailSphere,
-  projectedRadiusPx,
-  SPHERE_BASES,
-  SubdivisionSphereGeometry,
-  sphereCounts,
-  sphereError,
-} from '@shadelab/sphere';
+import { SPHERE_BASES, SubdivisionSphereGeometry, sphereCounts } from '@shadelab/sphere';
+import { AutoDetailSphere, projectedRadiusPx, sphereError } from '@shadelab/sphere/detail';
 import fc from 'fast-check';
 import {
   Matrix4,

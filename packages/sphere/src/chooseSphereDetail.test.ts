@@ -1,10 +1,5 @@
-import {
-  chooseSphereDetail,
-  SPHERE_BASES,
-  type SphereBase,
-  sphereCounts,
-  sphereError,
-} from '@shadelab/sphere';
+import { SPHERE_BASES, type SphereBase, sphereCounts } from '@shadelab/sphere';
+import { chooseSphereDetail, sphereError } from '@shadelab/sphere/detail';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 

@@ -1,4 +1,5 @@
-import { computeVertexNormals, type NormalWeighting, subdivideSphere } from '@shadelab/sphere';
+import { subdivideSphere } from '@shadelab/sphere';
+import { computeVertexNormals, type NormalWeighting } from '@shadelab/sphere/normals';
 import fc from 'fast-check';
 import { BoxGeometry, BufferAttribute, BufferGeometry, TorusKnotGeometry } from 'three';
 import { describe, expect, it } from 'vitest';

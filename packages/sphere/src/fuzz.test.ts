@@ -1,12 +1,11 @@
 import {
-  chooseSphereDetail,
-  computeVertexNormals,
   estimateSphereBytes,
   SubdivisionSphereGeometry,
   sphereCounts,
-  sphereError,
   subdivideSphere,
 } from '@shadelab/sphere';
+import { chooseSphereDetail, sphereError } from '@shadelab/sphere/detail';
+import { computeVertexNormals } from '@shadelab/sphere/normals';
 import fc from 'fast-check';
 import { afterAll, describe, expect, it } from 'vitest';
 

@@ -1,12 +1,11 @@
-export { type AutoDetail, AutoDetailSphere, type AutoDetailSphereOptions } from './AutoDetailSphere.js';
-export {
-  type ChooseSphereDetailOptions,
-  chooseSphereDetail,
-  type SphereDetail,
-} from './chooseSphereDetail.js';
-export { computeVertexNormals, type NormalWeighting } from './computeVertexNormals.js';
+/**
+ * The sphere by recursive subdivision of a tetrahedron (the lecture's), an octahedron or an icosahedron: typed
+ * arrays (`subdivideSphere`) or a three.js geometry (`SubdivisionSphereGeometry`), with their exact counts and
+ * memory estimate. Detail from an error budget is in `@shadelab/sphere/detail`, vertex normals of any indexed
+ * mesh in `@shadelab/sphere/normals`.
+ * @module @shadelab/sphere
+ */
 export { estimateSphereBytes } from './estimateSphereBytes.js';
-export { type ProjectedRadiusOptions, projectedRadiusPx } from './projectedRadiusPx.js';
 export { SPHERE_BASES, type SphereBase } from './SphereBase.js';
 export {
   DEFAULT_SPHERE_MAX_BYTES,
@@ -18,5 +17,4 @@ export {
 } from './SphereOptions.js';
 export { SubdivisionSphereGeometry } from './SubdivisionSphereGeometry.js';
 export { type SphereCounts, sphereCounts } from './sphereCounts.js';
-export { MAX_SPHERE_ERROR_LEVEL, sphereError } from './sphereError.js';
 export { type SphereMesh, subdivideSphere } from './subdivideSphere.js';

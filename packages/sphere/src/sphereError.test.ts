@@ -1,10 +1,5 @@
-import {
-  MAX_SPHERE_ERROR_LEVEL,
-  SPHERE_BASES,
-  type SphereBase,
-  sphereError,
-  subdivideSphere,
-} from '@shadelab/sphere';
+import { SPHERE_BASES, type SphereBase, subdivideSphere } from '@shadelab/sphere';
+import { MAX_SPHERE_ERROR_LEVEL, sphereError } from '@shadelab/sphere/detail';
 import fc from 'fast-check';
 import { IcosahedronGeometry, OctahedronGeometry } from 'three';
 import { describe, expect, it } from 'vitest';

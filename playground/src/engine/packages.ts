@@ -6,13 +6,13 @@
 import { Camera, CameraMovement } from '@shadelab/camera';
 import { createOutline, type OutlineMaterial, PhongLight, ShadingMaterial } from '@shadelab/material';
 import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   chooseSphereDetail,
   projectedRadiusPx,
   type SphereDetail,
-  SubdivisionSphereGeometry,
   sphereError,
-} from '@shadelab/sphere';
+} from '@shadelab/sphere/detail';
 import { Trackball } from '@shadelab/trackball';
 import type * as THREE from 'three';
 import type {

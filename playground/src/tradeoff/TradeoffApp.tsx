@@ -3,7 +3,8 @@
 // recomputed live whenever the option or the zoom changes. The scene comes from the playground's URL state
 // (`#s=…`, same schema and parser) when there is one, else the lecture's.
 import { compareToReference, type ImageError } from '@shadelab/reference';
-import { chooseSphereDetail, projectedRadiusPx, SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
+import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
+import { chooseSphereDetail, projectedRadiusPx } from '@shadelab/sphere/detail';
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { readUrlState } from '../state/persist';
 import { cheapestMeeting, type ErrorMetric, TRADE_CONDITIONS, type TradePoint } from './benchData';
