@@ -4,63 +4,14 @@
 // (tests/playground-session.spec.ts, tests/reliability.spec.ts).
 //
 // node bench/reliability.bench.mjs [--changes 10000] [--cycles 10000] [--json PATH]
-import { execFileSync } from 'node:child_process';
-import { createReadStream, existsSync, statSync } from 'node:fs';
-import { createServer } from 'node:http';
-import { extname, join, normalize } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
-import { summarize, writeResults } from './lib/bench.mjs';
+import { arg, summarize, writeResults } from './lib/bench.mjs';
+import { openPlayground } from './lib/browser.mjs';
 
-const root = fileURLToPath(new URL('..', import.meta.url));
-/** @param {string} name @param {string} fallback */
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i >= 0 ? process.argv[i + 1] : fallback;
-};
 const changes = Number(arg('--changes', '10000'));
 const cycles = Number(arg('--cycles', '10000'));
 
-const outDir = 'dist-bench-reliability';
-execFileSync(
-  'npx',
-  ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
-  {
-    cwd: root,
-    stdio: 'inherit',
-  },
-);
-const served = join(root, 'playground', outDir);
-
-/** @type {Record<string, string>} */
-const types = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.json': 'application/json',
-};
-const server = createServer((req, res) => {
-  const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-    /^(\.\.[/\\])+/,
-    '',
-  );
-  const file = join(served, path === '/' || path === '\\' ? 'index.html' : path);
-  if (!file.startsWith(served) || !existsSync(file) || !statSync(file).isFile()) {
-    res.writeHead(404).end();
-    return;
-  }
-  res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-  createReadStream(file).pipe(res);
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-const address = server.address();
-const base = `http://127.0.0.1:${typeof address === 'object' && address ? address.port : 0}`;
-
-const browser = await chromium.launch({
-  executablePath: chromiumExecutable() ?? undefined,
-  args: chromiumArgs,
-});
+const playground = await openPlayground();
+const browser = playground.browser;
 const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
 /** @type {string[]} */
 const errors = [];
@@ -108,7 +59,7 @@ function randomState(i) {
   };
 }
 
-await page.goto(`${base}/`);
+await page.goto(playground.url('/'));
 await page.waitForFunction(
   () => Number(document.querySelector('[data-testid="viewport"]')?.getAttribute('data-frames')) > 0,
 );
@@ -165,7 +116,7 @@ const afterWarmUp = samples[0]?.heapMiB ?? 0;
 const atEnd = samples.at(-1)?.heapMiB ?? 0;
 
 // The leaks harness at the full count (the program-compiling kind at 1,000: ~20 ms a compile).
-await page.goto(`${base}/harness/leaks.html`);
+await page.goto(playground.url('harness/leaks.html'));
 await page.waitForFunction(() => document.getElementById('viewport')?.dataset.ready === 'true');
 /** @type {Record<string, unknown>} */
 const leaks = {};
@@ -185,8 +136,7 @@ for (const kind of await page.evaluate(() => window.leaks.kinds)) {
   );
 }
 
-await browser.close();
-server.close();
+await playground.close();
 
 const results = {
   session: {

@@ -37,7 +37,7 @@ export async function openPlayground() {
       /^(\.\.[/\\])+/,
       '',
     );
-    const file = join(outDir, path);
+    const file = join(outDir, path === '/' || path === '\\' ? 'index.html' : path);
     if (!file.startsWith(outDir) || !existsSync(file) || !statSync(file).isFile()) {
       res.writeHead(404).end();
       return;
