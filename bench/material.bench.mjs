@@ -46,6 +46,8 @@ variants.push(['three MeshPhongMaterial', { kind: 'three-phong' }]);
 variants.push(['three MeshPhongMaterial, 2 lights', { kind: 'three-phong', lights: 2 }]);
 variants.push(['three MeshLambertMaterial', { kind: 'three-lambert' }]);
 variants.push(['three MeshToonMaterial', { kind: 'three-toon' }]);
+// No lighting: what transforming and rasterising the sphere costs by itself.
+variants.push(['three MeshBasicMaterial (no lighting)', { kind: 'three-basic' }]);
 
 /** @typedef {import('../playground/harness/material-bench').BenchResult} BenchResult */
 /** @type {{ width: number, height: number, frames: number, rounds: number, gpuTimer: boolean, levels: Record<number, unknown> }} */

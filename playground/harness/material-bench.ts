@@ -1,11 +1,13 @@
 // Benchmark page for bench/material.bench.mjs: frame time (a 1×1 readPixels after each frame) and GPU time
 // (EXT_disjoint_timer_query_webgl2) of a sphere filling most of a 1280×720 canvas, ShadingMaterial variants
-// against three's MeshPhongMaterial, MeshLambertMaterial and MeshToonMaterial on the same geometry.
+// against three's MeshPhongMaterial, MeshLambertMaterial and MeshToonMaterial on the same geometry, and
+// MeshBasicMaterial (no lighting) as the floor.
 import { type Lighting, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
 import {
   AmbientLight,
   type Material,
   Mesh,
+  MeshBasicMaterial,
   MeshLambertMaterial,
   MeshPhongMaterial,
   MeshToonMaterial,
@@ -18,7 +20,7 @@ import { sphereGeometry } from './material-sphere';
 
 export interface BenchVariant {
   /** 'shadelab' or one of three's materials. */
-  kind: 'shadelab' | 'three-phong' | 'three-lambert' | 'three-toon';
+  kind: 'shadelab' | 'three-phong' | 'three-lambert' | 'three-toon' | 'three-basic';
   shading?: Shading;
   lighting?: Lighting;
   celBands?: number;
@@ -74,6 +76,8 @@ function material(variant: BenchVariant, scene: Scene): Material {
   const color = 0xc89664;
   if (variant.kind === 'three-phong') return new MeshPhongMaterial({ color, shininess: 32 });
   if (variant.kind === 'three-lambert') return new MeshLambertMaterial({ color });
+  // No lighting at all: the floor that transforming and rasterising the sphere costs.
+  if (variant.kind === 'three-basic') return new MeshBasicMaterial({ color });
   return new MeshToonMaterial({ color });
 }
 
