@@ -35,6 +35,10 @@ for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {
   }
 }
 variants.push([
+  'flat × phong (triangle soup)',
+  { kind: 'shadelab', shading: 'flat', lighting: 'phong', soup: true },
+]);
+variants.push([
   'phong × phong, 2 lights',
   { kind: 'shadelab', shading: 'phong', lighting: 'phong', lights: 2 },
 ]);
@@ -58,7 +62,7 @@ for (const level of levels) {
     ([name]) =>
       !only ||
       only.split(',').some((o) => name.includes(o)) ||
-      /^phong × phong$|^three MeshPhongMaterial$|^gouraud × phong$|^flat × phong$|^phong × phong, 2 lights$/.test(
+      /^phong × phong$|^three MeshPhongMaterial$|^gouraud × phong$|^flat × phong$|^phong × phong, 2 lights$|Basic|soup/.test(
         name,
       ),
   );
@@ -93,6 +97,7 @@ for (const level of levels) {
     phongVsMeshPhong: ratio('phong × phong', 'three MeshPhongMaterial'),
     gouraudVsPhong: ratio('gouraud × phong', 'phong × phong'),
     flatVsPhong: ratio('flat × phong', 'phong × phong'),
+    flatSoupVsPhong: ratio('flat × phong (triangle soup)', 'phong × phong'),
     twoLightsVsOne: ratio('phong × phong, 2 lights', 'phong × phong'),
   };
   results.levels[level] = { triangles: 4 * 4 ** level, memory, rows, targets };

@@ -45,6 +45,29 @@ for (const shading of ['phong', 'gouraud', 'flat'] as const) {
   }
 }
 
+test('flat shading of a flatShadingGeometry (indexed, each face on its own last vertex) matches shade() too', async ({
+  page,
+}) => {
+  await open(page);
+  for (const lighting of ['phong', 'blinn-phong'] as const) {
+    for (const celBands of [0, 3]) {
+      const stats = await compare(page, { shading: 'flat', lighting, celBands, flatCorners: true });
+      expectMatch(stats, 6000);
+      expect(stats.facesChecked).toBeGreaterThan(1000);
+      expect(stats.facesMultiColour).toBe(0);
+    }
+  }
+  const mirrored = await compare(page, {
+    shading: 'flat',
+    lighting: 'phong',
+    flatCorners: true,
+    scale: [2, -1, 2],
+    rotation: [0.3, -0.7, 0.2],
+  });
+  expectMatch(mirrored, 6000);
+  expect(mirrored.facesMultiColour).toBe(0);
+});
+
 test('gouraud with analytic sphere normals (no normal attribute) and phong with a normal attribute', async ({
   page,
 }) => {

@@ -2,13 +2,8 @@
 // and control many times and reports renderer.info.memory, renderer.info.programs and the DOM listener count
 // (counted by the wrapper the page installs before anything else runs, see leaks.html).
 import { Camera, CameraMovement } from '@shadelab/camera';
-import {
-  createOutline,
-  OutlineMaterial,
-  PhongLight,
-  type Shading,
-  ShadingMaterial,
-} from '@shadelab/material';
+import { PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
+import { createOutline, OutlineMaterial } from '@shadelab/material/outline';
 import { type SphereBase, SubdivisionSphereGeometry } from '@shadelab/sphere';
 import { Trackball } from '@shadelab/trackball';
 import {

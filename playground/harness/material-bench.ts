@@ -2,9 +2,16 @@
 // (EXT_disjoint_timer_query_webgl2) of a sphere filling most of a 1280×720 canvas, ShadingMaterial variants
 // against three's MeshPhongMaterial, MeshLambertMaterial and MeshToonMaterial on the same geometry, and
 // MeshBasicMaterial (no lighting) as the floor.
-import { type Lighting, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
+import {
+  flatShadingGeometry,
+  type Lighting,
+  PhongLight,
+  type Shading,
+  ShadingMaterial,
+} from '@shadelab/material';
 import {
   AmbientLight,
+  type BufferGeometry,
   type Material,
   Mesh,
   MeshBasicMaterial,
@@ -25,6 +32,8 @@ export interface BenchVariant {
   lighting?: Lighting;
   celBands?: number;
   lights?: number;
+  /** Flat shading of the triangle soup (face positions from a texture) instead of flatShadingGeometry. */
+  soup?: boolean;
 }
 
 export interface BenchResult {
@@ -81,6 +90,16 @@ function material(variant: BenchVariant, scene: Scene): Material {
   return new MeshToonMaterial({ color });
 }
 
+const flatSpheres = new Map<number, BufferGeometry>();
+function flatSphere(level: number): BufferGeometry {
+  let g = flatSpheres.get(level);
+  if (g === undefined) {
+    g = flatShadingGeometry(sphereGeometry(level, false, true));
+    flatSpheres.set(level, g);
+  }
+  return g;
+}
+
 async function gpuTimes(queries: WebGLQuery[]): Promise<number[]> {
   if (timer === null || queries.length === 0) return [];
   const times: number[] = [];
@@ -102,9 +121,14 @@ async function run(variant: BenchVariant, level: number, frames = 25, warmup = 5
   const scene = new Scene();
   const mat = material(variant, scene);
   // Each draws the geometry it needs and no more: ours reads positions only (analytic sphere normals), three's
-  // need normals; flat shading needs a triangle soup, everything else draws the indexed sphere (shared
-  // vertices: V = 2 + T/2, so a quarter of the vertex-shader runs of a soup, or less after the vertex cache).
-  const geometry = sphereGeometry(level, variant.kind !== 'shadelab', variant.shading !== 'flat');
+  // need normals; flat shading draws flatShadingGeometry (each face on its own last vertex: V′ = T) or the
+  // triangle soup, everything else the indexed sphere (shared vertices: V = 2 + T/2).
+  const geometry =
+    variant.shading !== 'flat'
+      ? sphereGeometry(level, variant.kind !== 'shadelab', true)
+      : variant.soup
+        ? sphereGeometry(level, false)
+        : flatSphere(level);
   const mesh = new Mesh(geometry, mat);
   mesh.scale.setScalar(2);
   scene.add(mesh);
@@ -141,14 +165,27 @@ async function run(variant: BenchVariant, level: number, frames = 25, warmup = 5
 
 /** Bytes each mode's geometry needs on the GPU at `level`: attributes, index, and flat shading's texture. */
 function memory(level: number): {
-  flat: { vertices: number; positionsBytes: number; flatTextureBytes: number };
+  flat: { vertices: number; positionsBytes: number; cornersBytes: number; indexBytes: number };
+  flatSoup: { vertices: number; positionsBytes: number; flatTextureBytes: number };
   indexed: { vertices: number; positionsBytes: number; indexBytes: number; normalsBytes: number };
 } {
   const soup = sphereGeometry(level, false).getAttribute('position').count;
+  const flat = flatSphere(level);
+  const flatVertices = flat.getAttribute('position').count;
   const shared = sphereGeometry(level, false, true);
   const vertices = shared.getAttribute('position').count;
   return {
-    flat: { vertices: soup, positionsBytes: soup * 12, flatTextureBytes: 2048 * Math.ceil(soup / 2048) * 12 },
+    flat: {
+      vertices: flatVertices,
+      positionsBytes: flatVertices * 12,
+      cornersBytes: flatVertices * 24,
+      indexBytes: flat.index!.array.byteLength,
+    },
+    flatSoup: {
+      vertices: soup,
+      positionsBytes: soup * 12,
+      flatTextureBytes: 2048 * Math.ceil(soup / 2048) * 12,
+    },
     indexed: {
       vertices,
       positionsBytes: vertices * 12,

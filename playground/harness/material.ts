@@ -4,8 +4,8 @@
 // binning of the triangles so that each ray tests only the few triangles whose screen box covers it.
 import {
   computeNormalMatrix,
-  createOutline,
   eyeOf,
+  flatShadingGeometry,
   type Lighting,
   linearToSrgb8,
   PhongLight,
@@ -15,7 +15,9 @@ import {
   ShadingMaterial,
   shade,
 } from '@shadelab/material';
+import { createOutline } from '@shadelab/material/outline';
 import {
+  type BufferGeometry,
   type Camera,
   Matrix3,
   Mesh,
@@ -47,6 +49,8 @@ export interface CompareConfig {
   light?: [number, number, number];
   attenuation?: { a?: number; b?: number; c?: number };
   size?: number;
+  /** Flat shading of `flatShadingGeometry(indexed sphere)` instead of the triangle soup. */
+  flatCorners?: boolean;
 }
 
 export interface CompareStats {
@@ -166,6 +170,17 @@ function raycastPixels(world: Float64Array, camera: Camera, size: number, mirror
 
 const hitCache = new Map<string, Hits>();
 
+const cornerSpheres = new Map<number, BufferGeometry>();
+/** The indexed sphere prepared for flat shading (each face's last vertex carries the face). */
+function cornerSphere(level: number): BufferGeometry {
+  let g = cornerSpheres.get(level);
+  if (g === undefined) {
+    g = flatShadingGeometry(sphereGeometry(level, false, true));
+    cornerSpheres.set(level, g);
+  }
+  return g;
+}
+
 function render(config: CompareConfig): {
   pixels: Uint8Array;
   mesh: Mesh;
@@ -189,7 +204,9 @@ function render(config: CompareConfig): {
     ...(config.kd ? { kd: config.kd } : {}),
   });
   const analytic = config.analytic ?? config.shading !== 'gouraud';
-  const mesh = new Mesh(sphereGeometry(config.level ?? 6, !analytic), material);
+  const level = config.level ?? 6;
+  const geometry = config.flatCorners ? cornerSphere(level) : sphereGeometry(level, !analytic);
+  const mesh = new Mesh(geometry, material);
   mesh.scale.set(...(config.scale ?? [2, 1, 2]));
   mesh.rotation.set(...(config.rotation ?? [0, 0, 0]));
   const scene = new Scene();
@@ -205,7 +222,9 @@ function render(config: CompareConfig): {
 /** Render `config` on the GPU and compare every covered pixel away from the silhouette with shade(). */
 function compare(config: CompareConfig): CompareStats {
   const { pixels, mesh, material, light, camera, size } = render(config);
-  const positions = mesh.geometry.getAttribute('position').array as Float32Array;
+  // Triangle by triangle, corners in the order drawn (a flatShadingGeometry is indexed: expand it).
+  const soup = mesh.geometry.index === null ? mesh.geometry : mesh.geometry.toNonIndexed();
+  const positions = soup.getAttribute('position').array as Float32Array;
   const count = positions.length / 3;
   // World positions and world normals of the vertices, as the vertex shader computes them.
   const nm = computeNormalMatrix(mesh.matrixWorld, new Matrix3());
@@ -241,7 +260,7 @@ function compare(config: CompareConfig): CompareStats {
     }
     return d;
   };
-  const key = `${config.level ?? 6}/${mesh.matrixWorld.elements.join(',')}/${config.orthographic ?? false}/${size}`;
+  const key = `${config.level ?? 6}/${config.flatCorners ?? false}/${mesh.matrixWorld.elements.join(',')}/${config.orthographic ?? false}/${size}`;
   let hits = hitCache.get(key);
   if (hits === undefined) {
     hits = raycastPixels(world, camera, size, mesh.matrixWorld.determinant() < 0);

@@ -5,6 +5,7 @@
 //   NUM_LIGHTS n                                   number of PhongLights
 //   USE_ATTENUATION                                some light has b or c ≠ 0 or a ≠ 1
 //   SPHERE_NORMALS                                 object normal = position (no normal attribute)
+//   FLAT_CORNERS                                   flat shading of a flatShadingGeometry (indexed, per-vertex face)
 // Everything is in world space. The rules for degenerate inputs match `shade()` in shade.ts exactly.
 
 /** The lighting equation, shared by the vertex (flat, gouraud) and fragment (phong) stages. */
@@ -86,12 +87,18 @@ export const vertexShader = /* glsl */ `
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
 
 #if defined(SHADING_FLAT)
-uniform highp sampler2D facePositions; // object-space positions of the non-indexed geometry, one texel each
 flat out vec3 vColor;
+#ifdef FLAT_CORNERS
+// flatShadingGeometry: this vertex provokes one face; these are its other two corners (object space).
+in vec3 flatCornerA;
+in vec3 flatCornerB;
+#else
+uniform highp sampler2D facePositions; // object-space positions of the non-indexed geometry, one texel each
 vec3 fetchPosition(int i) {
   int width = textureSize(facePositions, 0).x;
   return texelFetch(facePositions, ivec2(i % width, i / width), 0).xyz;
 }
+#endif
 #elif defined(SHADING_GOURAUD)
 out vec3 vColor;
 #else
@@ -106,11 +113,17 @@ ${lighting}
 void main() {
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 #if defined(SHADING_FLAT)
-  // Once per face: at the centroid of the triangle this vertex belongs to, with the face normal.
+  // Once per face: at the centroid of the triangle this vertex belongs to (or provokes), with the face normal.
+#ifdef FLAT_CORNERS
+  vec3 p0 = flatCornerA;
+  vec3 p1 = flatCornerB;
+  vec3 p2 = position;
+#else
   int first = gl_VertexID - gl_VertexID % 3;
   vec3 p0 = fetchPosition(first);
   vec3 p1 = fetchPosition(first + 1);
   vec3 p2 = fetchPosition(first + 2);
+#endif
   vec3 faceCentre = (modelMatrix * vec4((p0 + p1 + p2) / 3.0, 1.0)).xyz;
   vec3 faceNormal = cross(p1 - p0, p2 - p0);
   float m = max(max(abs(faceNormal.x), abs(faceNormal.y)), abs(faceNormal.z));

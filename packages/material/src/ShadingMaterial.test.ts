@@ -1,4 +1,4 @@
-import { eyeOf, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
+import { eyeOf, flatShadingGeometry, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
 import fc from 'fast-check';
 import {
   BufferGeometry,
@@ -168,14 +168,22 @@ describe('ShadingMaterial variants (defines) and recompiles', () => {
     );
   });
 
-  it('flat shading refuses indexed geometry; gouraud and phong need normals unless a flagged sphere', () => {
+  it('flat shading takes a flatShadingGeometry or a soup, not a plain indexed one; gouraud and phong need normals unless a flagged sphere', () => {
     const indexed = new BufferGeometry();
     indexed.setAttribute('position', new Float32BufferAttribute([0, 0, 0, 1, 0, 0, 0, 1, 0], 3));
     indexed.setIndex([0, 1, 2]);
     const m = new ShadingMaterial({ shading: 'flat' });
-    expect(() => draw(m, new Mesh(indexed, m))).toThrow(/flat shading needs non-indexed geometry/);
+    expect(() => draw(m, new Mesh(indexed, m))).toThrow(
+      /flat shading needs a flatShadingGeometry\(geometry\)/,
+    );
+    // The indexed way: each face's last vertex carries the face (FLAT_CORNERS), no texture.
+    draw(m, new Mesh(flatShadingGeometry(indexed), m));
+    expect(m.defines.FLAT_CORNERS).toBe('');
+    expect(m.uniforms.facePositions.value).toBeNull();
     const bare = indexed.toNonIndexed();
-    draw(m, new Mesh(bare, m)); // flat needs positions only
+    draw(m, new Mesh(bare, m)); // the soup way: positions only, fetched from a texture
+    expect(m.defines.FLAT_CORNERS).toBeUndefined();
+    expect(m.uniforms.facePositions.value).not.toBeNull();
     m.shading = 'gouraud';
     expect(() => draw(m, new Mesh(bare, m))).toThrow(/gouraud shading needs a normal attribute/);
   });

@@ -55,6 +55,9 @@ export interface ShadingMaterialOptions {
 /** The `userData` flag that marks a geometry as a sphere centred at its origin (see {@link ShadingMaterial}). */
 export const SPHERE_FLAG = 'isSphere';
 
+/** The attributes flat shading reads from a geometry made by `flatShadingGeometry`: a face's other two corners. */
+export const FLAT_CORNERS = ['flatCornerA', 'flatCornerB'] as const;
+
 const _normalMatrix = /* @__PURE__ */ new Matrix3();
 const _eye = /* @__PURE__ */ new Vector4();
 
@@ -70,10 +73,11 @@ const _eye = /* @__PURE__ */ new Vector4();
  *
  * Geometry: gouraud and phong read the `normal` attribute, or, when a geometry has none and is a sphere
  * centred at its origin (`geometry.type === 'SubdivisionSphereGeometry'` or `geometry.userData.isSphere
- * === true`), use the exact normal = position. Flat shading reads only `position` and needs non-indexed
- * geometry (each triangle owns its three vertices; use `geometry.toNonIndexed()`): the vertex shader fetches
- * the three vertices of its triangle from a float texture (12 bytes per vertex, cached per geometry) and
- * lights the face once, at its centroid with its face normal. Morph targets and skinning are not supported.
+ * === true`), use the exact normal = position. Flat shading lights each face once, at its centroid with its
+ * face normal, and takes either a {@link flatShadingGeometry} (indexed; each face's last vertex carries the
+ * face: the cheaper way) or a non-indexed geometry (each triangle owns its three vertices; the vertex shader
+ * fetches them from a float texture, 12 bytes per vertex, cached per geometry). Morph targets and skinning are
+ * not supported.
  *
  * Colours are linear (three's working colour space) and written through three's output colour space
  * conversion; no tone mapping. The object's normal matrix is sign(det)·cof(M) of its world matrix (see
@@ -102,6 +106,7 @@ export class ShadingMaterial extends ShaderMaterial {
   readonly #ks = new Color(0.5, 0.5, 0.5);
   // What the last drawn geometry and lights asked for (part of the variant).
   #sphereNormals = false;
+  #flatCorners = false;
   #attenuation = false;
 
   constructor({
@@ -252,12 +257,13 @@ export class ShadingMaterial extends ShaderMaterial {
     const u = this.uniforms;
     const hasNormal = geometry.getAttribute('normal') !== undefined;
     if (this.#shading === 'flat') {
-      if (geometry.index !== null) {
+      this.#flatCorners = geometry.index !== null;
+      if (this.#flatCorners && geometry.getAttribute(FLAT_CORNERS[0]) === undefined) {
         throw new TypeError(
-          `ShadingMaterial: flat shading needs non-indexed geometry (each triangle owns its vertices), got an indexed ${geometry.type}; use geometry.toNonIndexed()`,
+          `ShadingMaterial: flat shading needs a flatShadingGeometry(geometry) or a non-indexed geometry (each triangle owns its vertices), got an indexed ${geometry.type}`,
         );
       }
-      u.facePositions.value = facePositionTexture(geometry);
+      u.facePositions.value = this.#flatCorners ? null : facePositionTexture(geometry);
     } else {
       const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true;
       if (!hasNormal && !sphere) {
@@ -284,6 +290,7 @@ export class ShadingMaterial extends ShaderMaterial {
     defines.NUM_LIGHTS = this.#lights.length;
     if (this.#attenuation) defines.USE_ATTENUATION = '';
     if (this.#sphereNormals && this.#shading !== 'flat') defines.SPHERE_NORMALS = '';
+    if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
     const old = this.defines ?? {};
     const keys = Object.keys(defines);
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);

@@ -1,4 +1,5 @@
-import { createOutline, OutlineMaterial, ShadingMaterial } from '@shadelab/material';
+import { ShadingMaterial } from '@shadelab/material';
+import { createOutline, OutlineMaterial } from '@shadelab/material/outline';
 import {
   BackSide,
   Group,

@@ -1,4 +1,5 @@
-import { computeNormalMatrix, OutlineMaterial, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+import { computeNormalMatrix, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+import { OutlineMaterial } from '@shadelab/material/outline';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import fc from 'fast-check';
 import {

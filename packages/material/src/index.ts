@@ -1,15 +1,16 @@
 /**
- * ShadingMaterial (flat, Gouraud, Phong shading × Phong, Blinn-Phong, cel lighting), PhongLight, the cel
- * outline, and `shade()`, the same equations on the CPU. The ray-cast sphere is in `@shadelab/material/impostor`.
+ * ShadingMaterial (flat, Gouraud, Phong shading × Phong, Blinn-Phong, cel lighting), PhongLight, and `shade()`,
+ * the same equations on the CPU. The cel outline is in `@shadelab/material/outline`, the ray-cast sphere in
+ * `@shadelab/material/impostor`.
  * @module @shadelab/material
  */
 export { computeNormalMatrix } from './computeNormalMatrix.js';
-export { createOutline } from './createOutline.js';
 export { eyeOf } from './eyeOf.js';
+export { flatShadingGeometry } from './flatShadingGeometry.js';
 export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
-export { OutlineMaterial, type OutlineMaterialOptions } from './OutlineMaterial.js';
 export { PhongLight, type PhongLightOptions } from './PhongLight.js';
 export {
+  FLAT_CORNERS,
   MAX_CEL_BANDS,
   SHADINGS,
   type Shading,

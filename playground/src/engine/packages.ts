@@ -4,8 +4,9 @@
  */
 
 import { Camera, CameraMovement } from '@shadelab/camera';
-import { createOutline, type OutlineMaterial, PhongLight, ShadingMaterial } from '@shadelab/material';
+import { flatShadingGeometry, PhongLight, ShadingMaterial } from '@shadelab/material';
 import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
+import { createOutline, type OutlineMaterial } from '@shadelab/material/outline';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   chooseSphereDetail,
@@ -26,9 +27,16 @@ import type {
 
 // ---- sphere ------------------------------------------------------------------------------------------------
 
-/** The unit sphere for `shading`: non-indexed for flat, indexed otherwise; no normal attribute (analytic). */
+/**
+ * The unit sphere for `shading`, indexed with no normal attribute (analytic normals); for flat shading
+ * prepared by `flatShadingGeometry` (each face lit once, on a last vertex of its own).
+ */
 export function createSphere(base: SphereBase, level: number, shading: Shading): THREE.BufferGeometry {
-  return new SubdivisionSphereGeometry({ base, level, normals: 'none', indexed: shading !== 'flat' });
+  const sphere = new SubdivisionSphereGeometry({ base, level, normals: 'none' });
+  if (shading !== 'flat') return sphere;
+  const flat = flatShadingGeometry(sphere);
+  sphere.dispose();
+  return flat;
 }
 
 /** The geometry a shading needs differs only between flat and the others. */
@@ -226,14 +234,6 @@ export function variantKey(material: Material): string {
     .sort()
     .map((k) => `${k}=${String(defines[k])}`)
     .join(',');
-}
-
-/**
- * Flat shading evaluates once per face, so it needs non-indexed triangles; Gouraud and Phong read the
- * sphere's analytic normal (no normal attribute needed).
- */
-export function needsNonIndexed(shading: Shading): boolean {
-  return shading === 'flat';
 }
 
 /** Outline thickness along the normal, in model units (before the model scale). */
