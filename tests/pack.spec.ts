@@ -342,6 +342,8 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
     import { sphereCounts, subdivideSphere, SubdivisionSphereGeometry } from '@shadelab/sphere';
     import { chooseSphereDetail } from '@shadelab/sphere/detail';
     import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
+    import { OutlineMaterial } from '@shadelab/material/outline';
+    import { flatShadingGeometry } from '@shadelab/material';
     import { intersectSphere } from '@shadelab/reference';
     import { Trackball } from '@shadelab/trackball';
     const hit = intersectSphere([0, 0, 3], [0, 0, -1]);
@@ -371,6 +373,8 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
       hit: hit && [hit.t0, hit.t1],
       detail: [detail.errorPx <= 0.5, detail.triangles === sphereCounts(detail.base, detail.level).triangles],
       impostorShading: impostor.material.shading,
+      outlineThickness: new OutlineMaterial({ thickness: 0.05 }).thickness,
+      flatVertices: flatShadingGeometry(geometry).attributes.position.count,
     }));
   `;
   const out = await run('node', ['--input-type=module', '-e', script], join(tmp, 'vanilla'));
@@ -391,6 +395,8 @@ test('the packages import and work in Node (server-side code, tests): no DOM tou
   // The subpath entries resolve from the tarballs too.
   expect(result.detail).toEqual([true, true]);
   expect(result.impostorShading).toBe('phong');
+  expect(result.outlineThickness).toBe(0.05);
+  expect(result.flatVertices).toBe(64); // level 2: one vertex per face
 });
 
 test("a fresh react-three-fiber app renders the lecture's scene from the tarballs and the trackball turns it", async ({
