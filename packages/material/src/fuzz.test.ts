@@ -1,8 +1,17 @@
-import { computeNormalMatrix, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+import {
+  computeNormalMatrix,
+  FLAT_CORNERS,
+  flatShadingGeometry,
+  PhongLight,
+  ShadingMaterial,
+  shade,
+} from '@shadelab/material';
 import { OutlineMaterial } from '@shadelab/material/outline';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import fc from 'fast-check';
 import {
+  BufferAttribute,
+  BufferGeometry,
   Color,
   Matrix3,
   Matrix4,
@@ -270,6 +279,44 @@ describe('material fuzz (hostile values everywhere)', () => {
           ) {
             expectFiniteUniforms(material!.uniforms as never);
             material!.dispose();
+          }
+        },
+      ),
+      { numRuns: 300 },
+    );
+  });
+
+  it('flatShadingGeometry: a flat-ready geometry with finite attributes, or a named error', () => {
+    const geometry = (xyz: unknown, faces: unknown): unknown => {
+      const g = new BufferGeometry();
+      if (xyz instanceof Float32Array) g.setAttribute('position', new BufferAttribute(xyz, 3));
+      if (Array.isArray(faces)) g.setIndex(faces);
+      return g;
+    };
+    fc.assert(
+      fc.property(
+        fc.oneof(
+          fc
+            .integer({ min: 1, max: 8 })
+            .chain((n) =>
+              fc.tuple(
+                fc.float32Array({ minLength: 3 * n, maxLength: 3 * n, noNaN: true, noDefaultInfinity: true }),
+                fc.oneof(fc.constant(null), fc.array(fc.nat(n - 1), { maxLength: 30 })),
+              ),
+            )
+            .map(([xyz, faces]) => geometry(xyz, faces)),
+          fc.constant(geometry(null, null)),
+          hostile,
+        ),
+        (g) => {
+          let out: BufferGeometry | undefined;
+          if (worksOrNamedError(counts, ['geometry'], () => (out = flatShadingGeometry(g as never)))) {
+            for (const name of ['position', ...FLAT_CORNERS]) {
+              expect(Array.from(out!.getAttribute(name).array).every(Number.isFinite), name).toBe(true);
+            }
+            expect(out!.index!.count).toBe(
+              ((g as BufferGeometry).index ?? (g as BufferGeometry).getAttribute('position')).count,
+            );
           }
         },
       ),
