@@ -74,6 +74,26 @@ test('two surfaces 1 unit apart at z = 1e4 (near 0.01, far 1e6): which depth mod
   });
 });
 
+test('ShadingMaterial keeps the same depth modes, alone and next to three materials (it writes logarithmic depth like them)', async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => {
+    const d = window.cameraDepth;
+    const modes = ['standard', 'logarithmic', 'reversed', 'reversed-float'] as const;
+    const materials = ['shading', 'shading-near', 'shading-far'] as const;
+    return Object.fromEntries(
+      modes.map((m) => [m, materials.map((q) => d.kept(m, 0.01, 1e6, 1e4, 1e-4, q))]),
+    );
+  });
+  expect(result).toEqual({
+    standard: ['far', 'far', 'far'],
+    logarithmic: ['near', 'near', 'near'],
+    reversed: ['near', 'near', 'near'],
+    'reversed-float': ['near', 'near', 'near'],
+  });
+});
+
 test('far/near from 10 to 1e9 (DESIGN.md extremes): logarithmic and reversed keep Δz/z = 1e-5 at z = far/4', async ({
   page,
 }) => {

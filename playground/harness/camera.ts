@@ -2,14 +2,17 @@
 // 1. A small scene seen through @shadelab/camera's Camera, moved by CameraMovement (keys/drag on the canvas);
 //    renders only on `change`, and reports the frame on the canvas's data attributes.
 // 2. `window.cameraDepth`: renders two overlapping quads (red near, green farther, drawn last) in each depth mode
-//    and reads the centre pixel, to measure which separations stay in the right order.
+//    and reads the centre pixel, to measure which separations stay in the right order; the quads are drawn with
+//    three's MeshBasicMaterial, @shadelab/material's ShadingMaterial, or one of each.
 import { Camera, CameraMovement, type DepthMode, depthBufferParameters, depthModeOf } from '@shadelab/camera';
+import { PhongLight, ShadingMaterial } from '@shadelab/material';
 import {
   BoxGeometry,
   Color,
   DepthTexture,
   FloatType,
   GridHelper,
+  type Material,
   Mesh,
   MeshBasicMaterial,
   MeshNormalMaterial,
@@ -71,11 +74,27 @@ const probes = new Map<ProbeMode, Probe>();
 const depthScene = new Scene();
 depthScene.background = new Color(0x000000);
 const quad = new PlaneGeometry(1, 1);
-const nearQuad = new Mesh(quad, new MeshBasicMaterial({ color: 0xff0000 }));
-const farQuad = new Mesh(quad, new MeshBasicMaterial({ color: 0x00ff00 }));
+const nearQuad = new Mesh<PlaneGeometry, Material>(quad, new MeshBasicMaterial({ color: 0xff0000 }));
+const farQuad = new Mesh<PlaneGeometry, Material>(quad, new MeshBasicMaterial({ color: 0x00ff00 }));
 nearQuad.renderOrder = 0;
 farQuad.renderOrder = 1; // the farther quad is drawn last: only the depth test can keep it hidden
 depthScene.add(nearQuad, farQuad);
+// The same colours from ShadingMaterial: ambient only (ka · Ia), unlit otherwise.
+const ambientLight = new PhongLight({ ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] });
+depthScene.add(ambientLight);
+const shaded = (ka: [number, number, number]) =>
+  new ShadingMaterial({ ka, kd: [0, 0, 0], ks: [0, 0, 0], lights: [ambientLight] });
+const quadMaterials = {
+  basic: [nearQuad.material, farQuad.material],
+  shading: [shaded([1, 0, 0]), shaded([0, 1, 0])],
+};
+/** Which materials draw the near and the far quad. */
+type QuadMaterials = 'basic' | 'shading' | 'shading-near' | 'shading-far';
+function useMaterials(which: QuadMaterials): void {
+  nearQuad.material =
+    quadMaterials[which === 'shading' || which === 'shading-near' ? 'shading' : 'basic'][0]!;
+  farQuad.material = quadMaterials[which === 'shading' || which === 'shading-far' ? 'shading' : 'basic'][1]!;
+}
 const depthCamera = new Camera({ fovy: 60, aspect: 1, near: 0.01, far: 100 });
 const pixel = new Uint8Array(4);
 
@@ -137,9 +156,21 @@ function place(near: number, far: number, z: number, dzRel: number): void {
 }
 
 /** Does `mode` draw the red quad at distance z in front of the green one at z·(1 + dzRel)? */
-function kept(mode: ProbeMode, near: number, far: number, z: number, dzRel: number): 'near' | 'far' | 'none' {
+function kept(
+  mode: ProbeMode,
+  near: number,
+  far: number,
+  z: number,
+  dzRel: number,
+  materials: QuadMaterials = 'basic',
+): 'near' | 'far' | 'none' {
   place(near, far, z, dzRel);
-  return centre(probe(mode));
+  useMaterials(materials);
+  try {
+    return centre(probe(mode));
+  } finally {
+    useMaterials('basic');
+  }
 }
 
 /**
@@ -174,7 +205,7 @@ export interface CameraDepthProbe {
   kept: typeof kept;
   threshold: typeof threshold;
 }
-export type { ProbeMode };
+export type { ProbeMode, QuadMaterials };
 
 declare global {
   interface Window {

@@ -2,6 +2,8 @@
 
 /** Vertex stage: world position + thickness · unit world normal. */
 export const vertexShader = /* glsl */ `
+#include <common>
+#include <logdepthbuf_pars_vertex>
 uniform mat3 shadingNormalMatrix;
 uniform float thickness;
 
@@ -17,14 +19,17 @@ void main() {
   vec4 worldPosition = modelMatrix * vec4(position, 1.0);
   worldPosition.xyz += thickness * n;
   gl_Position = projectionMatrix * viewMatrix * worldPosition;
+  #include <logdepthbuf_vertex>
 }
 `;
 
 /** Fragment stage: one colour. */
 export const fragmentShader = /* glsl */ `
+#include <logdepthbuf_pars_fragment>
 uniform vec3 outlineColor;
 
 void main() {
+  #include <logdepthbuf_fragment>
   gl_FragColor = vec4(outlineColor, 1.0);
   #include <colorspace_fragment>
 }

@@ -84,6 +84,8 @@ vec3 shadeColor(vec3 p, vec3 normal) {
 
 /** Vertex stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights (see {@link withLightCount}). */
 export const vertexShader = /* glsl */ `
+#include <common>
+#include <logdepthbuf_pars_vertex>
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
 
 #if defined(SHADING_FLAT)
@@ -112,6 +114,8 @@ ${lighting}
 
 void main() {
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+  // three's logarithmic depth buffer (when the renderer has one), like its own materials.
+  #include <logdepthbuf_vertex>
 #if defined(SHADING_FLAT)
   // Once per face: at the centroid of the triangle this vertex belongs to (or provokes), with the face normal.
 #ifdef FLAT_CORNERS
@@ -150,6 +154,7 @@ void main() {
 
 /** Fragment stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights. */
 export const fragmentShader = /* glsl */ `
+#include <logdepthbuf_pars_fragment>
 #if defined(SHADING_FLAT)
 flat in vec3 vColor;
 #elif defined(SHADING_GOURAUD)
@@ -161,6 +166,7 @@ ${lighting}
 #endif
 
 void main() {
+  #include <logdepthbuf_fragment>
 #if defined(SHADING_PHONG)
   vec3 color = shadeColor(vWorldPosition, vNormal);
 #else
