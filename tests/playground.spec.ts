@@ -142,6 +142,52 @@ test.describe('the playground', () => {
     expect(await rim()).not.toBe(arcball);
   });
 
+  test('with damping on, a fling keeps the sphere turning after release until it rests; off, it stops at once', async ({
+    page,
+  }) => {
+    await open(page);
+    const box = (await page.getByTestId('viewport').boundingBox())!;
+    const rotationY = async () =>
+      ((await urlState(page))['trackball'] as { rotation: number[] }).rotation[1]!;
+    /** A quick drag, released at once (the trackball spins only after a release within 100 ms of the last move). */
+    const fling = async () => {
+      await page.mouse.move(box.x + box.width * 0.45, box.y + box.height * 0.5);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.5, { steps: 3 });
+      await page.mouse.up();
+    };
+    // Damping off: the picture after the release is the last one.
+    await fling();
+    await settle(page);
+    const released = await frames(page);
+    await page.waitForTimeout(500);
+    expect(await frames(page)).toBe(released);
+    const without = await rotationY();
+
+    await press(page, 'reset rotation');
+    await toggle(page, 'Trackball.damping');
+    await settle(page);
+    // Damping on: frames keep coming after the release and the sphere turns further than the drag alone.
+    // A loaded machine may deliver the release more than 100 ms after the last move: try the fling again then.
+    let spun = false;
+    for (let attempt = 0; attempt < 5 && !spun; attempt++) {
+      if (attempt > 0) {
+        await press(page, 'reset rotation');
+        await settle(page);
+      }
+      await fling();
+      const atRelease = await frames(page);
+      await page.waitForTimeout(300);
+      spun = (await frames(page)) > atRelease + 3;
+    }
+    expect(spun, 'frames kept coming after the release').toBe(true);
+    await settle(page); // the spin rests by itself
+    const rested = await frames(page);
+    await page.waitForTimeout(500);
+    expect(await frames(page)).toBe(rested);
+    expect(await rotationY()).toBeGreaterThan(without * 1.5);
+  });
+
   test('the wheel zooms, by zoomSpeed', async ({ page }) => {
     await open(page);
     const canvas = page.getByTestId('viewport');

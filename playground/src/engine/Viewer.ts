@@ -178,7 +178,7 @@ export class Viewer {
     this.trackball = createTrackball(this.pivot, this.camera);
     this.mover = createMover(this.camera);
     this.trackball.addEventListener('change', this.onTrackballChange);
-    this.trackball.addEventListener('end', this.onViewEnd);
+    this.trackball.addEventListener('end', this.onTrackballEnd);
     this.mover.addEventListener('change', this.onMoverChange);
     this.mover.addEventListener('start', this.onMoverStart);
     this.mover.addEventListener('end', this.onMoverEnd);
@@ -223,6 +223,22 @@ export class Viewer {
     // Wheel zoom has no drag to end: report the view once the wheel rests.
     window.clearTimeout(this.viewTimer);
     this.viewTimer = window.setTimeout(this.onViewEnd, 250);
+  };
+  /**
+   * A drag ended: report the view, and with damping on keep the trackball spinning, one `update` per
+   * animation frame until it rests (each step's `change` renders; the view is reported once it is quiet).
+   */
+  private spinFrame = 0;
+  private readonly onTrackballEnd = () => {
+    this.onViewEnd();
+    if (!this.trackball.enableDamping || this.spinFrame !== 0) return;
+    let last = performance.now();
+    const step = (now: number) => {
+      const dt = Math.min(0.1, Math.max(0, (now - last) / 1000));
+      last = now;
+      this.spinFrame = !this.disposed && this.trackball.update(dt) ? requestAnimationFrame(step) : 0;
+    };
+    this.spinFrame = requestAnimationFrame(step);
   };
   /** The movement keys translate the camera: `at` moves with the eye. */
   private moverDragging = false;
@@ -323,6 +339,8 @@ export class Viewer {
       this.trackball.rotateSpeed = state.trackball.rotateSpeed;
       this.trackball.zoomSpeed = state.trackball.zoomSpeed;
       setTrackballZoomLimits(this.trackball, state.trackball.minZoom, state.trackball.maxZoom);
+      this.trackball.dampingFactor = state.trackball.dampingFactor;
+      this.trackball.enableDamping = state.trackball.damping;
       const current = getTrackballRotation(this.pivot);
       if (current.some((c, i) => Math.abs(c - state.trackball.rotation[i]!) > 1e-12)) {
         setTrackballRotation(this.pivot, state.trackball.rotation);
@@ -678,7 +696,8 @@ export class Viewer {
     this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
     this.trackball.removeEventListener('change', this.onTrackballChange);
-    this.trackball.removeEventListener('end', this.onViewEnd);
+    this.trackball.removeEventListener('end', this.onTrackballEnd);
+    cancelAnimationFrame(this.spinFrame);
     this.mover.removeEventListener('change', this.onMoverChange);
     this.mover.removeEventListener('start', this.onMoverStart);
     this.mover.removeEventListener('end', this.onMoverEnd);

@@ -86,6 +86,10 @@ export interface PlaygroundState {
     /** Zoom limits (factors of the opening view). */
     minZoom: number;
     maxZoom: number;
+    /** After a fling the sphere keeps turning and slows down (the trackball's `enableDamping`). */
+    damping: boolean;
+    /** Fraction of the spin lost per 1/60 s when damping, in (0, 1]. */
+    dampingFactor: number;
     /** Accumulated rotation as a unit quaternion `[x, y, z, w]`. */
     rotation: [number, number, number, number];
   };
@@ -149,6 +153,8 @@ export function defaultState(): PlaygroundState {
       zoomSpeed: 1,
       minZoom: 0.01,
       maxZoom: 100,
+      damping: false,
+      dampingFactor: 0.05,
       rotation: [0, 0, 0, 1],
     },
   };
@@ -319,6 +325,8 @@ const stateParser = object<PlaygroundState>({
     zoomSpeed: num(0, 100),
     minZoom: num(1e-3, 1e3, { openMin: true }),
     maxZoom: num(1e-3, 1e3, { openMin: true }),
+    damping: bool,
+    dampingFactor: num(0, 1, { openMin: true }),
     rotation: quaternion,
   }),
 });

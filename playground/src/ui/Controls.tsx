@@ -323,6 +323,20 @@ export function SceneControls({
           d.trackball.maxZoom = v;
         },
       },
+      damping: {
+        input: { label: 'damping (spin on)' },
+        read: (s) => s.trackball.damping,
+        write: (d, v: boolean) => {
+          d.trackball.damping = v;
+        },
+      },
+      dampingFactor: {
+        input: { label: 'damping factor', step: 0.01, min: 0.01, max: 1 },
+        read: (s) => s.trackball.dampingFactor,
+        write: (d, v: number) => {
+          d.trackball.dampingFactor = v;
+        },
+      },
     },
     state,
     update,
