@@ -90,7 +90,7 @@ const quadMaterials = {
 };
 /** Which materials draw the near and the far quad. */
 type QuadMaterials = 'basic' | 'shading' | 'shading-near' | 'shading-far';
-function useMaterials(which: QuadMaterials): void {
+function setQuadMaterials(which: QuadMaterials): void {
   nearQuad.material =
     quadMaterials[which === 'shading' || which === 'shading-near' ? 'shading' : 'basic'][0]!;
   farQuad.material = quadMaterials[which === 'shading' || which === 'shading-far' ? 'shading' : 'basic'][1]!;
@@ -165,11 +165,11 @@ function kept(
   materials: QuadMaterials = 'basic',
 ): 'near' | 'far' | 'none' {
   place(near, far, z, dzRel);
-  useMaterials(materials);
+  setQuadMaterials(materials);
   try {
     return centre(probe(mode));
   } finally {
-    useMaterials('basic');
+    setQuadMaterials('basic');
   }
 }
 
