@@ -188,6 +188,28 @@ test.describe('the playground', () => {
     expect(await rotationY()).toBeGreaterThan(without * 1.5);
   });
 
+  test('the depth buffer mode makes a new renderer in that mode; the scene and every edit carry over', async ({
+    page,
+  }) => {
+    await open(page);
+    await typeInto(page, 'Material.shininess', '5');
+    await drag(page, [0.5, 0.5], [0.6, 0.45]);
+    const standard = await picture(page);
+    await expect(page.getByTestId('stats-depth')).toHaveText('standard');
+    for (const mode of ['logarithmic', 'reversed'] as const) {
+      await page.locator('[id="Camera.depth"]').selectOption({ label: mode });
+      await expect(page.getByTestId('stats-depth')).toHaveText(mode); // reversed: EXT_clip_control is there
+      await settle(page);
+      // One convex sphere: the depth mode changes no colour.
+      expect(await picture(page), mode).toBe(standard);
+      expect(((await urlState(page))['camera'] as { depth: string }).depth).toBe(mode);
+    }
+    await page.reload();
+    await settle(page);
+    await expect(page.getByTestId('stats-depth')).toHaveText('reversed');
+    expect(await picture(page)).toBe(standard);
+  });
+
   test('the wheel zooms, by zoomSpeed', async ({ page }) => {
     await open(page);
     const canvas = page.getByTestId('viewport');

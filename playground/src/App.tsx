@@ -5,6 +5,7 @@ import type { ShaderSource } from './engine/ShaderProbe';
 import { COMPARE_COLUMNS, compareLayout, type Layout, type SectionErrors, Viewer } from './engine/Viewer';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
+  DEPTH_MODES,
   defaultLight,
   defaultState,
   MAX_LIGHTS,
@@ -56,32 +57,40 @@ export function App() {
     });
   }, []);
 
+  // The depth mode is fixed for a renderer's life (and a WebGL context keeps its clip control): a new mode
+  // gets a new canvas (keyed below) and a new viewer.
+  const depth = DEPTH_MODES.includes(state.camera.depth) ? state.camera.depth : 'standard';
+
   // The viewer lives as long as the canvas; React only feeds it states.
   useEffect(() => {
     const canvas = canvasRef.current!;
-    const viewer = new Viewer(canvas, {
-      onView: ({ eye, at, up, zoom, rotation }) =>
-        update((d) => {
-          d.camera.eye = eye;
-          d.camera.at = at;
-          if (up) d.camera.up = up;
-          d.camera.zoom = zoom;
-          d.trackball.rotation = rotation;
-        }),
-      onVariant: () => refreshVariant(viewer),
-      onRenderError: (message) => setRenderError(message),
-      onLightMoved: (index, position) =>
-        update((d) => {
-          const light = d.lights[index];
-          if (light) light.position = position;
-        }),
-      onStats: (stats) => feed.push(stats),
-      onContext: (status) => setContext(status),
-      onFirstFrame: (ms) => {
-        feed.firstFrameMs = ms;
-        console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
+    const viewer = new Viewer(
+      canvas,
+      {
+        onView: ({ eye, at, up, zoom, rotation }) =>
+          update((d) => {
+            d.camera.eye = eye;
+            d.camera.at = at;
+            if (up) d.camera.up = up;
+            d.camera.zoom = zoom;
+            d.trackball.rotation = rotation;
+          }),
+        onVariant: () => refreshVariant(viewer),
+        onRenderError: (message) => setRenderError(message),
+        onLightMoved: (index, position) =>
+          update((d) => {
+            const light = d.lights[index];
+            if (light) light.position = position;
+          }),
+        onStats: (stats) => feed.push(stats),
+        onContext: (status) => setContext(status),
+        onFirstFrame: (ms) => {
+          feed.firstFrameMs = ms;
+          console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
+        },
       },
-    });
+      depth,
+    );
     viewerRef.current = viewer;
     const observer = new ResizeObserver(() => {
       setLayout(compareLayout(canvas.clientWidth || 1, canvas.clientHeight || 1));
@@ -94,7 +103,7 @@ export function App() {
       viewer.dispose();
       viewerRef.current = null;
     };
-  }, [feed, update, refreshVariant]);
+  }, [feed, update, refreshVariant, depth]);
 
   // leva labels only the first field of a vector (x/r); name the others for screen readers ("ka y", …).
   useEffect(() => {
@@ -196,6 +205,7 @@ export function App() {
     <div className="app">
       <main className="stage">
         <canvas
+          key={depth}
           ref={canvasRef}
           data-testid="viewport"
           tabIndex={0}

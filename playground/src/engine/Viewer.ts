@@ -4,8 +4,9 @@
  */
 import * as THREE from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
-import type { LightState, PlaygroundState, Vec3 } from '../state/schema';
+import type { DepthMode, LightState, PlaygroundState, Vec3 } from '../state/schema';
 import {
+  activeDepth,
   applyImpostorMaterial,
   applyLight,
   applyMaterial,
@@ -19,6 +20,7 @@ import {
   createSphere,
   createTrackball,
   type Detail,
+  depthParameters,
   getCameraEye,
   getCameraFrame,
   getTrackballRotation,
@@ -53,6 +55,8 @@ export interface FrameStats {
   vertices: number;
   bufferBytes: number;
   programs: number;
+  /** The depth mode the renderer runs. */
+  depth: DepthMode;
   detail: Detail | null;
   /** The drawn sphere's largest radial error on screen, px (exact); null when unknown. */
   errorPx: number | null;
@@ -149,11 +153,22 @@ export class Viewer {
   private contextLost = false;
   private renderError = false;
 
+  /** The depth mode the renderer really runs (see {@link activeDepth}). */
+  readonly depth: DepthMode;
+
+  /** @param depth - The renderer's depth mode; a different one needs a new canvas and Viewer. */
   constructor(
     readonly canvas: HTMLCanvasElement,
     private readonly events: ViewerEvents = {},
+    depth: DepthMode = 'standard',
   ) {
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({
+      canvas,
+      antialias: false,
+      preserveDrawingBuffer: true,
+      ...depthParameters(depth),
+    });
+    this.depth = activeDepth(this.renderer);
     this.renderer.setPixelRatio(1);
     this.renderer.info.autoReset = false;
     this.scene.background = new THREE.Color(0x000000);
@@ -640,6 +655,7 @@ export class Viewer {
       vertices: geometry.attributes['position']?.count ?? 0,
       bufferBytes,
       programs: info.programs?.length ?? 0,
+      depth: this.depth,
       detail: this.lastDetail,
       errorPx: this.errorPx(),
     };

@@ -3,7 +3,7 @@
  * package's API change (or swapping a stand-in for the real package) is a change to this file only.
  */
 
-import { Camera, CameraMovement } from '@shadelab/camera';
+import { Camera, CameraMovement, depthBufferParameters, depthModeOf } from '@shadelab/camera';
 import { flatShadingGeometry, PhongLight, ShadingMaterial } from '@shadelab/material';
 import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
 import { createOutline, type OutlineMaterial } from '@shadelab/material/outline';
@@ -17,6 +17,7 @@ import {
 import { Trackball } from '@shadelab/trackball';
 import type * as THREE from 'three';
 import type {
+  DepthMode,
   LightState,
   PlaygroundState,
   Shading,
@@ -72,6 +73,19 @@ export function chooseDetail(radiusPx: number, maxErrorPx: number): Detail {
 // ---- camera -------------------------------------------------------------------------------------------------
 
 export type ViewCamera = Camera;
+
+/** `WebGLRenderer` parameters for a depth mode (fixed for the renderer's life). */
+export function depthParameters(depth: DepthMode): {
+  logarithmicDepthBuffer: boolean;
+  reversedDepthBuffer: boolean;
+} {
+  return depthBufferParameters(depth);
+}
+
+/** The depth mode a renderer really runs (reversed-Z falls back to standard without EXT_clip_control). */
+export function activeDepth(renderer: THREE.WebGLRenderer): DepthMode {
+  return depthModeOf(renderer);
+}
 
 export function createCamera(): ViewCamera {
   return new Camera({ fovy: 90, aspect: 1, near: 0.1, far: 10 });

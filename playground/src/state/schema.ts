@@ -22,6 +22,10 @@ export type SphereBase = 'tetrahedron' | 'octahedron' | 'icosahedron';
 export type TrackballMapping = 'arcball' | 'bell';
 /** Camera projection. */
 export type Projection = 'perspective' | 'orthographic';
+/** How the renderer stores depth (@shadelab/camera's DepthMode); changing it makes a new renderer. */
+export type DepthMode = 'standard' | 'logarithmic' | 'reversed';
+/** Every depth mode, in the order the controls list them. */
+export const DEPTH_MODES: readonly DepthMode[] = ['standard', 'logarithmic', 'reversed'];
 /** One view of the lit sphere, or the lecture's flat | Gouraud | Phong | cel slide. */
 export type ViewMode = 'single' | 'compare';
 /** How the sphere is drawn: a subdivided mesh, or a ray-cast impostor (exact, two triangles). */
@@ -57,6 +61,8 @@ export interface PlaygroundState {
   model: { scale: Vec3 };
   camera: {
     projection: Projection;
+    /** Depth buffer mode (a new canvas and renderer when it changes). */
+    depth: DepthMode;
     eye: Vec3;
     at: Vec3;
     up: Vec3;
@@ -131,6 +137,7 @@ export function defaultState(): PlaygroundState {
     model: { scale: [2, 1, 2] },
     camera: {
       projection: 'perspective',
+      depth: 'standard',
       eye: [0, 0, 3],
       at: [0, 0, 0],
       up: [0, 1, 0],
@@ -303,6 +310,7 @@ const stateParser = object<PlaygroundState>({
   model: object({ scale: vec3(1e3) }),
   camera: object({
     projection: oneOf('perspective', 'orthographic'),
+    depth: oneOf('standard', 'logarithmic', 'reversed'),
     eye: vec3(1e4),
     at: vec3(1e4),
     up: vec3(1e4),

@@ -184,6 +184,13 @@ export function SceneControls({
         d.camera.projection = v;
       },
     },
+    depth: {
+      input: { label: 'depth buffer', options: ['standard', 'logarithmic', 'reversed'] },
+      read: (s) => s.camera.depth,
+      write: (d, v: PlaygroundState['camera']['depth']) => {
+        d.camera.depth = v;
+      },
+    },
     eye: {
       input: vec3('eye'),
       read: (s) => s.camera.eye,

@@ -39,6 +39,8 @@ export function Stats({ feed }: { feed: StatsFeed }) {
       <dd>{bytes(stats.bufferBytes)}</dd>
       <dt>programs</dt>
       <dd data-testid="stats-programs">{stats.programs}</dd>
+      <dt>depth</dt>
+      <dd data-testid="stats-depth">{stats.depth}</dd>
       {stats.errorPx !== null && (
         <>
           <dt>radial error</dt>
