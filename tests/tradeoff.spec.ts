@@ -69,6 +69,34 @@ test.describe('impostor vs reference', () => {
     }
   });
 
+  for (const depth of ['logarithmic', 'reversed'] as const) {
+    test(`a ${depth} depth buffer: the same exact pixels, and exact depth against a mesh plane`, async ({
+      page,
+    }) => {
+      for (const view of [
+        { width: 320, height: 240 },
+        { width: 320, height: 240, projection: 'orthographic' },
+        { width: 320, height: 240, rotation: [0.4, -0.7, 0.2], eye: [0.8, -0.5, 3.2] },
+      ] satisfies TradeView[]) {
+        const r = await page.evaluate(([v, o, d]) => window.tradeoff.compare(v, o, d), [
+          view,
+          impostor,
+          depth,
+        ] as const);
+        expectExact(r);
+      }
+      for (const planeZ of [1.6, 1.8, 1.9]) {
+        const r = await page.evaluate(
+          ([o, z, d]) => window.tradeoff.depthCheck({ width: 320, height: 240 }, o, z, 1e-5, d),
+          [impostor, planeZ, depth] as const,
+        );
+        expect(r.sphere).toBeGreaterThan(100);
+        expect(r.plane).toBeGreaterThan(100);
+        expect(r.wrong, `plane at z = ${planeZ}`).toBe(0);
+      }
+    });
+  }
+
   test('eye inside the ellipsoid: nothing drawn (front surface clipped), no NaN', async ({ page }) => {
     const r = await compare(page, { width: 160, height: 120, eye: [0, 0, 0.5] });
     expect(r.blackPixels).toBe(0);

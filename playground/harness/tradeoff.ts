@@ -10,6 +10,27 @@ import { optionCost, type TradeOption, TradeoffScene, type TradeView } from '../
 const canvas = document.getElementById('viewport') as HTMLCanvasElement;
 const trade = new TradeoffScene(canvas);
 
+/** The renderer's depth buffer for a check: three's default, logarithmic, or reversed-Z. */
+export type DepthBuffer = 'standard' | 'logarithmic' | 'reversed';
+const scenes = new Map<DepthBuffer, TradeoffScene>([['standard', trade]]);
+/** A scene on its own canvas for each depth buffer (fixed for a renderer's life). */
+function sceneFor(depth: DepthBuffer): TradeoffScene {
+  let s = scenes.get(depth);
+  if (s === undefined) {
+    s = new TradeoffScene(document.createElement('canvas'), {
+      logarithmicDepthBuffer: depth === 'logarithmic',
+      reversedDepthBuffer: depth === 'reversed',
+    });
+    scenes.set(depth, s);
+  }
+  return s;
+}
+/** The exact image of `view`, from the standard scene (its camera is never switched to reversed depth). */
+function referenceOf(view: TradeView) {
+  trade.setView(view);
+  return trade.reference();
+}
+
 export interface CompareResult {
   rmse: number;
   max: number;
@@ -23,12 +44,13 @@ export interface CompareResult {
   blackPixels: number;
 }
 
-function compare(view: TradeView, option: TradeOption): CompareResult {
-  trade.setView(view);
-  trade.setOption(option);
-  trade.render();
-  const pixels = trade.readPixels();
-  const reference = trade.reference();
+function compare(view: TradeView, option: TradeOption, depth: DepthBuffer = 'standard'): CompareResult {
+  const t = sceneFor(depth);
+  t.setView(view);
+  t.setOption(option);
+  t.render();
+  const pixels = t.readPixels();
+  const reference = referenceOf(view);
   const e = compareToReference(pixels, reference);
   let beyond = 0;
   for (const s of e.silhouetteError) if (s > 0.5) beyond++;
@@ -56,19 +78,22 @@ function depthCheck(
   option: TradeOption,
   planeZ: number,
   eps = 1e-5,
+  depth: DepthBuffer = 'standard',
 ): { wrong: number; sphere: number; plane: number } {
-  trade.setView(view);
-  trade.setOption(option);
+  const t = sceneFor(depth);
+  t.setView(view);
+  t.setOption(option);
   const plane = new Mesh(new PlaneGeometry(100, 100), new MeshBasicMaterial({ color: 0x808080 }));
   plane.position.z = planeZ;
-  trade.scene.add(plane);
-  trade.scene.updateMatrixWorld();
-  trade.render();
-  const pixels = trade.readPixels();
-  trade.scene.remove(plane);
+  t.scene.add(plane);
+  t.scene.updateMatrixWorld();
+  t.render();
+  const pixels = t.readPixels();
+  t.scene.remove(plane);
   plane.geometry.dispose();
   plane.material.dispose();
-  const reference = trade.reference();
+  // Which is nearer, by the standard depth of the exact reference (every depth mode keeps the same order).
+  const reference = referenceOf(view);
   const camera = trade.camera;
   const p = plane.position.clone().project(camera);
   const planeDepth = p.z * 0.5 + 0.5;

@@ -37,14 +37,23 @@ uniform mat4 impostorInverseMvp; // (P·V·M)⁻¹
 uniform mat4 impostorModelMatrix;
 uniform vec4 impostorViewport; // x, y, width, height in framebuffer pixels
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(M)
+#ifdef USE_LOGARITHMIC_DEPTH_BUFFER
+uniform float logDepthBufFC; // three's 2 / log2(far + 1)
+#endif
 ${/* @__PURE__ */ lightingChunk(shadingFragmentShader)}
 void main() {
   // The pixel's ray between the near and far planes, in model space (perspective and orthographic alike).
-  // (P·V·M)⁻¹·(x, y, ∓1, 1) = x·c0 + y·c1 + c3 ∓ c2 with c the columns: one shared part, two points.
+  // (P·V·M)⁻¹·(x, y, z, 1) = x·c0 + y·c1 + c3 + z·c2 with c the columns: one shared part, two points, at
+  // NDC z = −1 (near) and 1 (far), or, with three's reversed depth (clip z in [0, 1]), z = 1 (near) and 0 (far).
   vec2 ndc = (gl_FragCoord.xy - impostorViewport.xy) / impostorViewport.zw * 2.0 - 1.0;
   vec4 through = impostorInverseMvp[0] * ndc.x + impostorInverseMvp[1] * ndc.y + impostorInverseMvp[3];
+#ifdef USE_REVERSED_DEPTH_BUFFER
+  vec4 nearH = through + impostorInverseMvp[2];
+  vec4 farH = through;
+#else
   vec4 nearH = through - impostorInverseMvp[2];
   vec4 farH = through + impostorInverseMvp[2];
+#endif
   vec3 o = nearH.xyz / nearH.w;
   vec3 d = farH.xyz / farH.w - o;
   float len = length(d);
@@ -59,8 +68,16 @@ void main() {
   float t0 = q == 0.0 ? 0.0 : min(c / q, q);
   if (t0 < 0.0 || t0 > len) discard; // front surface between the near and far planes only
   vec3 p = o + t0 * d; // model space; the exact normal is p itself
+  // The exact depth of the hit, in the renderer's depth mode (as three's materials write theirs).
   vec4 clip = impostorMvp * vec4(p, 1.0);
+#if defined(USE_REVERSED_DEPTH_BUFFER)
+  gl_FragDepth = clamp(clip.z / clip.w, 0.0, 1.0);
+#else
   gl_FragDepth = clamp((clip.z / clip.w) * 0.5 + 0.5, 0.0, 1.0);
+#endif
+#ifdef USE_LOGARITHMIC_DEPTH_BUFFER
+  if (!isOrthographic) gl_FragDepth = log2(1.0 + clip.w) * logDepthBufFC * 0.5;
+#endif
   vec3 worldPosition = (impostorModelMatrix * vec4(p, 1.0)).xyz;
   gl_FragColor = vec4(shadeColor(worldPosition, shadingNormalMatrix * p), 1.0);
   #include <colorspace_fragment>

@@ -35,8 +35,8 @@ const _viewport = /* @__PURE__ */ new Vector4();
  * quadric (the planes x = a·w tangent to it in clip space: a² (r₄Dr₄) − 2a (r₁Dr₄) + r₁Dr₁ = 0 with r the rows
  * of P·V·M and D = diag(1, 1, 1, −1)), widened by one pixel; when the eye plane touches the ellipsoid (camera
  * inside or beside it) the quad covers the whole viewport. Only the front surface is drawn, clipped by the
- * near and far planes like a mesh (no caps). Depth is written for three's default depth range and a
- * standard (not logarithmic, not reversed) depth buffer. A singular model matrix (a zero scale) draws nothing
+ * near and far planes like a mesh (no caps). Depth is written in the renderer's depth mode (standard,
+ * logarithmic or reversed-Z), as three's materials write theirs. A singular model matrix (a zero scale) draws nothing
  * (unlike a mesh, which draws the flattened shape). Writing depth disables early depth tests, so
  * overdraw costs a full fragment each.
  *
@@ -98,6 +98,13 @@ export class SphereImpostorMaterial extends ShadingMaterial {
   ): void {
     super.onBeforeRender(renderer, scene, camera, geometry, object, group);
     syncShaders(this);
+    // A reversed-depth renderer switches the camera to reversed depth when it sets up the first program of a
+    // frame, which may come after this: switch it now, as three does, so that the matrices below are the ones
+    // the depth buffer expects.
+    if (renderer.capabilities?.reversedDepthBuffer && !camera.reversedDepth) {
+      (camera as unknown as { _reversedDepth: boolean })._reversedDepth = true;
+      (camera as unknown as { updateProjectionMatrix?: () => void }).updateProjectionMatrix?.();
+    }
     const u = this.uniforms;
     const mvp = _mvp
       .multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse)

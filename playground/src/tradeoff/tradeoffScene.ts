@@ -104,8 +104,12 @@ export class TradeoffScene {
   readonly #geometries = new Map<string, BufferGeometry>();
   #reference: { key: string; image: ReferenceImage } | null = null;
 
-  constructor(canvas: HTMLCanvasElement | OffscreenCanvas) {
-    this.renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+  /** @param depth - The renderer's depth buffer: three's `logarithmicDepthBuffer` / `reversedDepthBuffer`. */
+  constructor(
+    canvas: HTMLCanvasElement | OffscreenCanvas,
+    depth: { logarithmicDepthBuffer?: boolean; reversedDepthBuffer?: boolean } = {},
+  ) {
+    this.renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true, ...depth });
     this.renderer.setPixelRatio(1);
     this.renderer.setClearColor(BACKGROUND, 1);
     this.meshMaterial.phongLights = [this.light];
