@@ -2,7 +2,7 @@
 // into DIR (a new temporary folder by default) and print what each tarball holds: packed and unpacked size and
 // file count. tests/pack.spec.ts imports `packPackages` to install the tarballs into fresh apps.
 import { spawnSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -49,12 +49,15 @@ function mustRun(cmd, args) {
 }
 
 /**
- * Build the packages (`tsc -b`) and `npm pack` each into `outDir`.
+ * Build the packages from scratch (`tsc -b` into emptied `dist/` folders) and `npm pack` each into `outDir`.
  * @param {string} [outDir] folder for the tarballs; a new one in the OS temp folder when omitted
  * @returns {PackedPackage[]}
  */
 export function packPackages(outDir = mkdtempSync(join(tmpdir(), 'shadelab-pack-'))) {
   mkdirSync(outDir, { recursive: true });
+  // A clean build: tsc -b never deletes the output of a source file that was removed or renamed, and npm
+  // pack would ship it.
+  for (const p of PACKAGES) rmSync(join(root, 'packages', p, 'dist'), { recursive: true, force: true });
   mustRun('npx', ['tsc', '-b', ...PACKAGES.map((p) => join('packages', p))]);
   return PACKAGES.map((p) => {
     // --ignore-scripts: packing must not depend on lifecycle scripts; the build above is the only step.

@@ -278,9 +278,12 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
       const sibling = packed.find((q) => q.name === dep);
       if (sibling) expect(range, `${p.name} → ${dep}`).toBe(`^${sibling.version}`);
     }
-    // Every module has its declaration beside it.
+    // Every module has its declaration beside it, and its source: no stale build of a removed module ships.
     for (const js of p.files.filter((f) => f.endsWith('.js'))) {
       expect(p.files, `${p.name}: ${js}`).toContain(js.replace(/\.js$/, '.d.ts'));
+      expect(p.files, `${p.name}: ${js} has no source`).toContain(
+        js.replace(/^dist\/(.*)\.js$/, 'src/$1.ts'),
+      );
     }
   }
 });
