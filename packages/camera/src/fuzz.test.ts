@@ -9,39 +9,13 @@ import {
 import fc from 'fast-check';
 import { Matrix4, PerspectiveCamera, Vector3 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
-import { worksOrNamedError } from '../../../test-utils/fuzz.js';
+import { hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor, option and setter, fed hostile values, either works with finite results or throws a
 // TypeError/RangeError naming the parameter. A camera that has refused a call is still finite and usable.
 
-/** Numbers that break naive code: NaN, ±Infinity, ±0, the largest and smallest doubles, subnormals. */
-const hostileNumber = fc.oneof(
-  fc.constantFrom(
-    Number.NaN,
-    Number.POSITIVE_INFINITY,
-    Number.NEGATIVE_INFINITY,
-    0,
-    -0,
-    1e308,
-    -1e308,
-    1e-308,
-    -1e-308,
-    Number.MIN_VALUE,
-    -Number.MIN_VALUE,
-    Number.MAX_VALUE,
-    179.99999999999997,
-    1e-300,
-    1e300,
-  ),
-  fc.double(),
-);
-
-/** Anything a caller might pass by mistake: hostile numbers, wrong types, missing values. */
-const hostile = fc.oneof(
-  { weight: 4, arbitrary: hostileNumber },
-  fc.constantFrom(undefined, null, true, '', '5', [], {}, [1, 2], { x: 1 }, 10n, Symbol('s')),
-  fc.string({ maxLength: 6 }),
-);
+const hostileNumber = hostileNumbers(179.99999999999997, 1e-300, 1e300);
+const hostile = hostileValue(hostileNumber, { values: ['5', [1, 2], { x: 1 }] });
 
 /** Sometimes a sensible number, sometimes a hostile value. */
 const num = (min: number, max: number) =>

@@ -8,38 +8,13 @@ import { chooseSphereDetail, sphereError } from '@shadelab/sphere/detail';
 import { computeVertexNormals } from '@shadelab/sphere/normals';
 import fc from 'fast-check';
 import { afterAll, describe, expect, it } from 'vitest';
+import { hostileNumbers, hostileValue } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every public entry point, fed hostile values, either works with finite results or throws a
 // TypeError/RangeError naming the parameter. Nothing non-finite reaches an array.
 
-/** Numbers that break naive code: NaN, ±Infinity, ±0, the largest and smallest doubles, subnormals. */
-const hostileNumber = fc.oneof(
-  fc.constantFrom(
-    Number.NaN,
-    Number.POSITIVE_INFINITY,
-    Number.NEGATIVE_INFINITY,
-    0,
-    -0,
-    1e308,
-    -1e308,
-    1e-308,
-    -1e-308,
-    Number.MIN_VALUE,
-    -Number.MIN_VALUE,
-    Number.MAX_VALUE,
-    2 ** 53,
-    -1,
-    0.5,
-  ),
-  fc.double(),
-);
-
-/** Anything a caller might pass by mistake: hostile numbers, wrong types, missing values. */
-const hostile = fc.oneof(
-  { weight: 3, arbitrary: hostileNumber },
-  fc.constantFrom(undefined, null, true, false, '', '1', 'NaN', [], {}, [1, 2, 3], 10n, Symbol('s')),
-  fc.string({ maxLength: 8 }),
-);
+const hostileNumber = hostileNumbers(2 ** 53, -1, 0.5);
+const hostile = hostileValue(hostileNumber, { values: ['1', 'NaN', [1, 2, 3]] });
 
 /** A field that is sometimes valid (`valid`), sometimes hostile, sometimes missing. */
 const field = <T>(valid: fc.Arbitrary<T>) =>
