@@ -2,16 +2,9 @@
 // (EXT_disjoint_timer_query_webgl2) of a sphere filling most of a 1280×720 canvas, ShadingMaterial variants
 // against three's MeshPhongMaterial, MeshLambertMaterial and MeshToonMaterial on the same geometry, and
 // MeshBasicMaterial (no lighting) as the floor.
-import {
-  flatShadingGeometry,
-  type Lighting,
-  PhongLight,
-  type Shading,
-  ShadingMaterial,
-} from '@shadelab/material';
+import { type Lighting, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
 import {
   AmbientLight,
-  type BufferGeometry,
   type Material,
   Mesh,
   MeshBasicMaterial,
@@ -23,7 +16,7 @@ import {
   Scene,
   WebGLRenderer,
 } from 'three';
-import { sphereGeometry } from './material-sphere';
+import { flatSphereGeometry, sphereGeometry } from './material-sphere';
 
 export interface BenchVariant {
   /** 'shadelab' or one of three's materials. */
@@ -90,16 +83,6 @@ function material(variant: BenchVariant, scene: Scene): Material {
   return new MeshToonMaterial({ color });
 }
 
-const flatSpheres = new Map<number, BufferGeometry>();
-function flatSphere(level: number): BufferGeometry {
-  let g = flatSpheres.get(level);
-  if (g === undefined) {
-    g = flatShadingGeometry(sphereGeometry(level, false, true));
-    flatSpheres.set(level, g);
-  }
-  return g;
-}
-
 async function gpuTimes(queries: WebGLQuery[]): Promise<number[]> {
   if (timer === null || queries.length === 0) return [];
   const times: number[] = [];
@@ -128,7 +111,7 @@ async function run(variant: BenchVariant, level: number, frames = 25, warmup = 5
       ? sphereGeometry(level, variant.kind !== 'shadelab', true)
       : variant.soup
         ? sphereGeometry(level, false)
-        : flatSphere(level);
+        : flatSphereGeometry(level);
   const mesh = new Mesh(geometry, mat);
   mesh.scale.setScalar(2);
   scene.add(mesh);
@@ -170,7 +153,7 @@ function memory(level: number): {
   indexed: { vertices: number; positionsBytes: number; indexBytes: number; normalsBytes: number };
 } {
   const soup = sphereGeometry(level, false).getAttribute('position').count;
-  const flat = flatSphere(level);
+  const flat = flatSphereGeometry(level);
   const flatVertices = flat.getAttribute('position').count;
   const shared = sphereGeometry(level, false, true);
   const vertices = shared.getAttribute('position').count;

@@ -5,7 +5,6 @@
 import {
   computeNormalMatrix,
   eyeOf,
-  flatShadingGeometry,
   type Lighting,
   linearToSrgb8,
   PhongLight,
@@ -17,7 +16,6 @@ import {
 } from '@shadelab/material';
 import { createOutline } from '@shadelab/material/outline';
 import {
-  type BufferGeometry,
   type Camera,
   Matrix3,
   Mesh,
@@ -31,7 +29,7 @@ import {
   Vector4,
   WebGLRenderer,
 } from 'three';
-import { sphereGeometry } from './material-sphere';
+import { flatSphereGeometry, sphereGeometry } from './material-sphere';
 
 export interface CompareConfig {
   shading: Shading;
@@ -170,17 +168,6 @@ function raycastPixels(world: Float64Array, camera: Camera, size: number, mirror
 
 const hitCache = new Map<string, Hits>();
 
-const cornerSpheres = new Map<number, BufferGeometry>();
-/** The indexed sphere prepared for flat shading (each face's last vertex carries the face). */
-function cornerSphere(level: number): BufferGeometry {
-  let g = cornerSpheres.get(level);
-  if (g === undefined) {
-    g = flatShadingGeometry(sphereGeometry(level, false, true));
-    cornerSpheres.set(level, g);
-  }
-  return g;
-}
-
 function render(config: CompareConfig): {
   pixels: Uint8Array;
   mesh: Mesh;
@@ -205,7 +192,7 @@ function render(config: CompareConfig): {
   });
   const analytic = config.analytic ?? config.shading !== 'gouraud';
   const level = config.level ?? 6;
-  const geometry = config.flatCorners ? cornerSphere(level) : sphereGeometry(level, !analytic);
+  const geometry = config.flatCorners ? flatSphereGeometry(level) : sphereGeometry(level, !analytic);
   const mesh = new Mesh(geometry, material);
   mesh.scale.set(...(config.scale ?? [2, 1, 2]));
   mesh.rotation.set(...(config.rotation ?? [0, 0, 0]));
