@@ -8,7 +8,7 @@ import { chooseSphereDetail, sphereError } from '@shadelab/sphere/detail';
 import { computeVertexNormals } from '@shadelab/sphere/normals';
 import fc from 'fast-check';
 import { afterAll, describe, expect, it } from 'vitest';
-import { hostileNumbers, hostileValue } from '../../../test-utils/fuzz.js';
+import { hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every public entry point, fed hostile values, either works with finite results or throws a
 // TypeError/RangeError naming the parameter. Nothing non-finite reaches an array.
@@ -41,26 +41,16 @@ afterAll(() => {
   );
 });
 
-/**
- * Call `fn`: it either returns (then `check` runs on the result) or throws a TypeError/RangeError whose
- * message names one of `names`.
- */
-function worksOrNamedError<T>(names: readonly string[], fn: () => T, check: (result: T) => void): void {
-  counts.calls++;
-  let result: T;
-  try {
-    result = fn();
-  } catch (error) {
-    counts.threw++;
-    expect(error).toSatisfy((e) => e instanceof TypeError || e instanceof RangeError);
-    const message = (error as Error).message;
-    expect(
-      names.some((name) => message.includes(name)),
-      message,
-    ).toBe(true);
-    return;
+/** Call `fn`: it either returns (then `check` runs on the result) or is refused by name (worksOrNamedError). */
+function worksThen<T>(names: readonly string[], fn: () => T, check: (result: T) => void): void {
+  let result!: T;
+  if (
+    worksOrNamedError(counts, names, () => {
+      result = fn();
+    })
+  ) {
+    check(result);
   }
-  check(result);
 }
 
 function expectFinite(array: ArrayLike<number> | undefined, what: string): void {
@@ -76,7 +66,7 @@ describe('sphere fuzz (hostile values everywhere)', () => {
   it('subdivideSphere: finite arrays or a named error', () => {
     fc.assert(
       fc.property(fc.oneof({ weight: 9, arbitrary: sphereOptions }, hostile), (options) => {
-        worksOrNamedError(
+        worksThen(
           OPTION_NAMES,
           () => subdivideSphere(options as never),
           (mesh) => {
@@ -93,7 +83,7 @@ describe('sphere fuzz (hostile values everywhere)', () => {
   it('SubdivisionSphereGeometry: finite attributes and bounds, or a named error', () => {
     fc.assert(
       fc.property(fc.oneof({ weight: 9, arbitrary: sphereOptions }, hostile), (options) => {
-        worksOrNamedError(
+        worksThen(
           OPTION_NAMES,
           () => new SubdivisionSphereGeometry(options as never),
           (geometry) => {
@@ -113,7 +103,7 @@ describe('sphere fuzz (hostile values everywhere)', () => {
   it('estimateSphereBytes, sphereCounts, sphereError: finite numbers or a named error', () => {
     fc.assert(
       fc.property(sphereOptions, base, fc.oneof(level, hostile), (options, b, l) => {
-        worksOrNamedError(
+        worksThen(
           OPTION_NAMES,
           () => estimateSphereBytes(options as never),
           (bytes) => {
@@ -123,14 +113,14 @@ describe('sphere fuzz (hostile values everywhere)', () => {
               expect((options as { level: number }).level).toBeGreaterThan(500);
           },
         );
-        worksOrNamedError(
+        worksThen(
           ['base', 'level'],
           () => sphereCounts(b as never, l as never),
           (c) => {
             expectFinite([c.triangles, c.vertices, c.edges], 'sphereCounts');
           },
         );
-        worksOrNamedError(
+        worksThen(
           ['base', 'level'],
           () => sphereError(b as never, l as never),
           (e) => {
@@ -170,7 +160,7 @@ describe('sphere fuzz (hostile values everywhere)', () => {
     );
     fc.assert(
       fc.property(fc.oneof({ weight: 9, arbitrary: options }, hostile), (o) => {
-        worksOrNamedError(
+        worksThen(
           ['options', 'radiusPx', 'maxErrorPx', 'bases', 'maxLevel'],
           () => chooseSphereDetail(o as never),
           (d) => {
@@ -192,7 +182,7 @@ describe('sphere fuzz (hostile values everywhere)', () => {
     const weighting = fc.oneof(fc.constantFrom('average', 'area', 'angle'), hostile);
     fc.assert(
       fc.property(positions, indices, weighting, (p, i, w) => {
-        worksOrNamedError(
+        worksThen(
           ['positions', 'indices', 'weighting'],
           () => computeVertexNormals(p as never, i as never, w as never),
           (normals) => {

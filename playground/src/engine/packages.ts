@@ -210,6 +210,15 @@ export function createMaterial(): Material {
 
 export function applyMaterial(material: Material, options: MaterialOptions, lights: Light[]): void {
   material.shading = options.shading;
+  applyLighting(material, options, lights);
+}
+
+/** Every option but `shading`: what the mesh's material and the impostor's have in common. */
+function applyLighting(
+  material: Material | SphereImpostorMaterial,
+  options: MaterialOptions,
+  lights: Light[],
+): void {
   material.lighting = options.lighting;
   material.celBands = options.celBands;
   material.ka = options.ka;
@@ -228,14 +237,7 @@ export function createImpostor(): THREE.Mesh {
 }
 
 export function applyImpostorMaterial(impostor: THREE.Mesh, options: MaterialOptions, lights: Light[]): void {
-  const material = (impostor as SphereImpostor).material;
-  material.lighting = options.lighting;
-  material.celBands = options.celBands;
-  material.ka = options.ka;
-  material.kd = options.kd;
-  material.ks = options.ks;
-  material.shininess = options.shininess;
-  material.phongLights = lights;
+  applyLighting((impostor as SphereImpostor).material, options, lights);
 }
 
 /** Light positions are read by the material itself every frame (onBeforeRender). */
