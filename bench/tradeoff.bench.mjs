@@ -3,13 +3,11 @@
 // at 1280×720 in headless Chromium (SwiftShader): interior RMSE and max error in 8-bit sRGB, silhouette error
 // in pixels, frame time (1×1 readPixels after each frame, warm-up, median of pooled round-robin rounds),
 // triangles and buffer bytes. Then the Pareto front and, for each error target, the cheapest option meeting
-// it. Last, the auto-detail zoom sweep: triangles of AutoDetailSphere's choice against a fixed level 6.
+// it. (The auto-detail zoom sweep is bench/autodetail.bench.mjs.)
 //
 //   node bench/tradeoff.bench.mjs [--json PATH] [--levels 0,1,...,7] [--frames 15] [--rounds 3]
 import { loadavg } from 'node:os';
-import { SPHERE_BASES, sphereCounts } from '@shadelab/sphere';
-import { AutoDetailSphere, sphereError } from '@shadelab/sphere/detail';
-import { MeshBasicMaterial, PerspectiveCamera } from 'three';
+import { SPHERE_BASES } from '@shadelab/sphere';
 import { arg, summarize, writeResults } from './lib/bench.mjs';
 import { openPlayground } from './lib/browser.mjs';
 
@@ -110,43 +108,6 @@ for (const rt of rmseTargets) {
 
 await playground.close();
 
-// 6. Auto detail over a zoom sweep of the lecture scene (perspective 90°, 720 px high, ellipsoid (2, 1, 2)):
-// the triangles AutoDetailSphere draws against a fixed tetrahedron level 6, (a) at the 0.5 px budget and
-// (b) at equal error: the budget is level 6's own worst error over the sweep (at the nearest distance), so
-// both keep the same error bound at every distance.
-const fixed = sphereCounts('tetrahedron', 6).triangles;
-const material = new MeshBasicMaterial();
-const distances = Array.from({ length: 25 }, (_, i) => 2.25 * 1.15 ** i); // 2.25 … ~63 units from the centre
-/** @param {number} d @param {number} budget */
-function autoAt(d, budget) {
-  const camera = new PerspectiveCamera(90, WIDTH / HEIGHT, 0.1, 1000);
-  camera.position.set(0, 0, d);
-  camera.updateMatrixWorld();
-  const sphere = new AutoDetailSphere(material, { maxErrorPx: budget, maxLevel: 10 });
-  sphere.scale.set(2, 1, 2);
-  sphere.update(camera, HEIGHT);
-  const { base, level, triangles, errorPx, radiusPx } = sphere.detail;
-  sphere.dispose();
-  return { base, level, triangles, errorPx, radiusPx };
-}
-const fixedError = distances.map((d) => autoAt(d, 0.5).radiusPx * sphereError('tetrahedron', 6));
-const equalBudget = Math.max(...fixedError);
-const sweep = distances.map((d, i) => {
-  const half = autoAt(d, 0.5);
-  const equal = autoAt(d, equalBudget);
-  return { distance: d, radiusPx: half.radiusPx, fixedErrorPx: fixedError[i], auto: half, autoEqual: equal };
-});
-const sum = (/** @type {number[]} */ a) => a.reduce((s, x) => s + x, 0);
-const zoomSweep = {
-  fixed: { base: 'tetrahedron', level: 6, triangles: fixed },
-  equalBudgetPx: equalBudget,
-  points: sweep,
-  trianglesFixed: fixed * sweep.length,
-  trianglesAutoHalfPx: sum(sweep.map((s) => s.auto.triangles)),
-  trianglesAutoEqualError: sum(sweep.map((s) => s.autoEqual.triangles)),
-  fixedMeetsHalfPx: sweep.filter((s) => s.fixedErrorPx <= 0.5).length,
-};
-
 const results = {
   width: WIDTH,
   height: HEIGHT,
@@ -160,10 +121,9 @@ const results = {
   paretoRmse,
   paretoSilhouette,
   cheapest,
-  zoomSweep,
 };
 
-// 7. Tables.
+// 6. Tables.
 console.log(
   `\nlecture scene ${WIDTH}×${HEIGHT}; frame ms = median of ${frames} (load ${loadBefore.map((x) => x.toFixed(1)).join(' ')})`,
 );
@@ -183,20 +143,4 @@ for (const rt of rmseTargets) {
     `| RMSE ≤ ${rt} | ${silhouetteTargets.map((s) => cheapest[`rmse≤${rt}`][`silhouette≤${s}px`] ?? '—').join(' | ')} |`,
   );
 }
-const pct = (/** @type {number} */ n) => `${((1 - n / zoomSweep.trianglesFixed) * 100).toFixed(1)} % saved`;
-console.log(
-  `\nzoom sweep, ${sweep.length} distances from ${distances[0]} to ${distances.at(-1)?.toFixed(1)}:`,
-);
-console.log('| distance | radius px | tetrahedron 6 error px | auto 0.5 px | auto at equal error |');
-console.log('| ---: | ---: | ---: | --- | --- |');
-for (const p of sweep) {
-  const show = (/** @type {{ base: string, level: number, triangles: number }} */ a) =>
-    `${a.base} ${a.level} (${a.triangles})`;
-  console.log(
-    `| ${p.distance.toFixed(2)} | ${p.radiusPx.toFixed(1)} | ${p.fixedErrorPx.toFixed(3)} | ${show(p.auto)} | ${show(p.autoEqual)} |`,
-  );
-}
-console.log(
-  `totals: fixed ${zoomSweep.trianglesFixed} (meets 0.5 px at ${zoomSweep.fixedMeetsHalfPx}/${sweep.length}); auto 0.5 px ${zoomSweep.trianglesAutoHalfPx} (${pct(zoomSweep.trianglesAutoHalfPx)}); auto at level 6's worst error ${equalBudget.toFixed(3)} px: ${zoomSweep.trianglesAutoEqualError} (${pct(zoomSweep.trianglesAutoEqualError)})`,
-);
 writeResults(results);
