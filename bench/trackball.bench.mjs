@@ -1,22 +1,22 @@
 // @shadelab/trackball: speed of the rotation core and of one pointer move through Trackball, and the accuracy
 // the design choices buy (atan2 against acos for tiny drags, renormalising the quaternion against not).
 //
-//   npx tsc -b packages/trackball && node bench/trackball.bench.mjs [--json bench/results/trackball.json]
+//   npx tsc -b packages/trackball && node bench/trackball.bench.mjs [--json bench/results/trackball.json] [--quick]
+//
+// --quick only checks that the script runs (few points, few runs, drift up to 10³ drags): its numbers mean nothing.
 //
 // Runs in Node against the built package (dist). The pointer-move timing drives the real handlers through a
 // minimal EventTarget stand-in for the canvas and its document (no browser, no layout): it is the cost of the
 // trackball's own work, not of the browser's event dispatch.
 import { Mesh, PerspectiveCamera, Quaternion } from 'three';
-import {
-  arcRotation,
-  multiplyQuaternions,
-  normalizeQuaternion,
-  projectToBall,
-  Trackball,
-} from '../packages/trackball/dist/index.js';
+import { arcRotation, projectToBall, Trackball } from '../packages/trackball/dist/index.js';
 import { measure, writeResults } from './lib/bench.mjs';
 
-const N = 200_000;
+const quick = process.argv.includes('--quick');
+const N = quick ? 2_000 : 200_000;
+const RUNS = quick ? { warmup: 1, runs: 3 } : { warmup: 5, runs: 21 };
+/** Compose and renormalise as Trackball does: three's Quaternion (premultiply, normalize). */
+const _dq = new Quaternion();
 
 /** Deterministic pointer positions in ball radii, spread over the ball and beyond its rim. */
 const points = new Float64Array(2 * N);
@@ -29,7 +29,7 @@ const points = new Float64Array(2 * N);
   for (let i = 0; i < 2 * N; i++) points[i] = (rand() - 0.5) * 3;
 }
 
-// ── speed: the pure core, one drag step = 2 × projectToBall + arcRotation + multiply + normalise ──
+// ── speed: the core, one drag step = 2 × projectToBall + arcRotation + three's multiply + normalise ──
 /** @typedef {import('../packages/trackball/dist/index.js').BallMapping} BallMapping */
 /** @typedef {import('../packages/trackball/dist/index.js').Vec3} Vec3 */
 /** @typedef {import('../packages/trackball/dist/index.js').Quat} Quat */
@@ -45,19 +45,15 @@ for (const mapping of MAPPINGS) {
   const b = [0, 0, 1];
   /** @type {Quat} */
   const dq = [0, 0, 0, 1];
-  /** @type {Quat} */
-  const q = [0, 0, 0, 1];
-  const t = measure(
-    () => {
-      for (let i = 0; i + 3 < 2 * N; i += 2) {
-        projectToBall(points[i], points[i + 1], mapping, a);
-        projectToBall(points[i + 2], points[i + 3], mapping, b);
-        arcRotation(a, b, 1, dq);
-        normalizeQuaternion(multiplyQuaternions(dq, q, q));
-      }
-    },
-    { warmup: 5, runs: 21 },
-  );
+  const q = new Quaternion();
+  const t = measure(() => {
+    for (let i = 0; i + 3 < 2 * N; i += 2) {
+      projectToBall(points[i], points[i + 1], mapping, a);
+      projectToBall(points[i + 2], points[i + 3], mapping, b);
+      arcRotation(a, b, 1, dq);
+      q.premultiply(_dq.set(dq[0], dq[1], dq[2], dq[3])).normalize();
+    }
+  }, RUNS);
   const per = (/** @type {number} */ ms) => (ms * 1e6) / (N - 1);
   core[mapping] = { medianNs: per(t.median), minNs: per(t.min), maxNs: per(t.max) };
 }
@@ -93,12 +89,9 @@ for (const mapping of MAPPINGS) {
   let changes = 0;
   tb.addEventListener('change', () => changes++);
   element.dispatchEvent(pointerEvent('pointerdown', 250, 250));
-  const t = measure(
-    () => {
-      for (const e of moves) doc.dispatchEvent(e);
-    },
-    { warmup: 5, runs: 21 },
-  );
+  const t = measure(() => {
+    for (const e of moves) doc.dispatchEvent(e);
+  }, RUNS);
   doc.dispatchEvent(pointerEvent('pointerup', 250, 250));
   tb.dispose();
   if (changes === 0) throw new Error('the trackball did not react to the synthetic moves');
@@ -141,10 +134,9 @@ for (const rPx of [0, 125, 176, 200, 240, 248, 249, 250, 300, 500]) {
 }
 
 // ── accuracy: drift of the accumulated rotation over many drags, renormalised or not ──
-/** @param {Quat} qa */
-function orthonormalError(qa) {
-  const m = new Quaternion(...qa);
-  const { x, y, z, w } = m;
+/** @param {Quaternion} q */
+function orthonormalError(q) {
+  const { x, y, z, w } = q;
   // Columns of the rotation matrix of a possibly non-unit quaternion, as three would build it.
   const c0 = [1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w)];
   const c1 = [2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w)];
@@ -161,11 +153,10 @@ function orthonormalError(qa) {
   );
 }
 const drift = [];
-for (const drags of [1e3, 1e5, 1e6]) {
+for (const drags of quick ? [1e3] : [1e3, 1e5, 1e6]) {
   const row = { drags, renormalised: 0, notRenormalised: 0 };
   for (const renormalise of [true, false]) {
-    /** @type {Quat} */
-    const q = [0, 0, 0, 1];
+    const q = new Quaternion();
     /** @type {Vec3} */
     const a = [0, 0, 1];
     /** @type {Vec3} */
@@ -177,8 +168,8 @@ for (const drags of [1e3, 1e5, 1e6]) {
       projectToBall(points[j], points[j + 1], 'bell', a);
       projectToBall(points[j + 2], points[j + 3], 'bell', b);
       arcRotation(a, b, 0.9, dq);
-      multiplyQuaternions(dq, q, q);
-      if (renormalise) normalizeQuaternion(q);
+      q.premultiply(_dq.set(dq[0], dq[1], dq[2], dq[3]));
+      if (renormalise) q.normalize();
     }
     row[renormalise ? 'renormalised' : 'notRenormalised'] = orthonormalError(q);
   }
@@ -187,6 +178,7 @@ for (const drags of [1e3, 1e5, 1e6]) {
 
 const results = {
   node: process.version,
+  quick,
   coreNsPerDragStep: core,
   pointerMoveUs: handler,
   tinyDragAngle: tiny,

@@ -1,6 +1,4 @@
 export { arcRotation } from './arcRotation.js';
-export { multiplyQuaternions } from './multiplyQuaternions.js';
-export { normalizeQuaternion } from './normalizeQuaternion.js';
 export { projectToBall } from './projectToBall.js';
 export type { TrackballCamera, TrackballEventMap, TrackballOptions } from './Trackball.js';
 export { Trackball } from './Trackball.js';
