@@ -1,5 +1,5 @@
 // @vitest-environment happy-dom
-import { Trackball, type TrackballOptions } from '@shadelab/trackball';
+import { Trackball, type TrackballOptions, trackballWorldMatrix } from '@shadelab/trackball';
 import fc from 'fast-check';
 import {
   Camera,
@@ -12,6 +12,7 @@ import {
   Quaternion,
   Vector3,
 } from 'three';
+import { TrackballControls } from 'three/examples/jsm/controls/TrackballControls.js';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 
 const SIZE = 200; // the element is a 200 × 200 px square at (10, 20): ball radius 100 px, centre (110, 120)
@@ -60,8 +61,15 @@ function expectMatrixClose(actual: Matrix4, expected: Matrix4, tol = 1e-12): voi
   });
 }
 
+/** The angle (radians) of the rotation a·b⁻¹ that separates two rotations: 2·atan2(|v|, |w|). */
+function angleBetween(a: Quaternion, b: Quaternion): number {
+  const r = a.clone().multiply(b.clone().invert());
+  return 2 * Math.atan2(Math.hypot(r.x, r.y, r.z), Math.abs(r.w));
+}
+
+/** Same rotation within `tol` radians (1 − |a·b| < tol would only bound the angle by about 2·√(2·tol)). */
 function expectSameRotation(a: Quaternion, b: Quaternion, tol = 1e-12): void {
-  expect(1 - Math.abs(a.dot(b))).toBeLessThan(tol);
+  expect(angleBetween(a, b)).toBeLessThan(tol);
 }
 
 const made: Trackball[] = [];
@@ -134,7 +142,10 @@ describe('Trackball: rotation by pointer drags', () => {
           drag(element, [...path, path[0]]);
           tb.dispose();
           element.remove();
-          return 1 - Math.abs(mesh.quaternion.dot(before)) < 1e-9 && 1 - Math.abs(tb.rotation.w) < 1e-9;
+          // Angles (radians), not 1 − |q·q₀|, which would let through ~1e-4 rad.
+          return (
+            angleBetween(mesh.quaternion, before) < 1e-9 && angleBetween(tb.rotation, new Quaternion()) < 1e-9
+          );
         },
       ),
       { numRuns: 200 },
@@ -196,6 +207,88 @@ describe('Trackball: rotation by pointer drags', () => {
     const m = tb.getWorldMatrix();
     expect(target.clone().applyMatrix4(m).distanceTo(target)).toBeLessThan(1e-12);
     expect(Math.abs(m.determinant() - 1)).toBeLessThan(1e-12);
+  });
+
+  it('keeps each drag about the camera axes of its time: the object and getWorldMatrix agree after the camera turns', () => {
+    const element = makeElement();
+    const camera = new PerspectiveCamera();
+    camera.position.set(0, 0, 5);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    const target = new Vector3(1, -2, 3);
+    const mesh = new Mesh();
+    mesh.position.copy(target);
+    mesh.updateMatrixWorld();
+    const homeMatrix = mesh.matrixWorld.clone();
+    const tb = trackball(mesh, element, { camera, mapping: 'arcball', enableDamping: true });
+    // Reference: three's rotateOnWorldAxis about the camera's axes as they are during each drag.
+    const expected = new Object3D();
+    drag(element, [
+      [CX, CY],
+      [CX + 50, CY],
+    ]); // 60° about the camera's up axis
+    expected.rotateOnWorldAxis(new Vector3(0, 1, 0).applyQuaternion(camera.quaternion), Math.PI / 3);
+    // Before the camera turns, getWorldMatrix is the lecture's trackballWorldMatrix(trackball, camera).
+    expectMatrixClose(tb.getWorldMatrix(), trackballWorldMatrix(tb, camera));
+    camera.position.set(4, 3, 2);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    drag(element, [
+      [CX, CY],
+      [CX, CY - 50],
+    ]); // −60° about the new camera's right axis
+    expected.rotateOnWorldAxis(new Vector3(1, 0, 0).applyQuaternion(camera.quaternion), -Math.PI / 3);
+    const worldRotation = () => new Quaternion().setFromRotationMatrix(tb.getWorldMatrix());
+    expectSameRotation(mesh.quaternion, expected.quaternion);
+    expectSameRotation(worldRotation(), mesh.quaternion);
+    // Exactly the object's motion about the target: getWorldMatrix · (matrix at the start) = matrix now.
+    mesh.updateMatrixWorld();
+    expectMatrixClose(tb.getWorldMatrix().multiply(homeMatrix), mesh.matrixWorld);
+    // The trackball matrix (camera coordinates) is R₂·R₁, and the lecture's formula turns all of it about
+    // the current camera: it no longer matches what the user dragged (by far more than rounding).
+    expectMatrixClose(
+      tb.getMatrix(),
+      new Matrix4().makeRotationX(-Math.PI / 3).multiply(new Matrix4().makeRotationY(Math.PI / 3)),
+    );
+    const lecture = new Quaternion().setFromRotationMatrix(trackballWorldMatrix(tb, camera));
+    expect(angleBetween(lecture, mesh.quaternion)).toBeGreaterThan(0.1);
+    // A damped spin keeps them together (the spin turns about the camera's current axes).
+    expect(tb.update()).toBe(true);
+    expectSameRotation(worldRotation(), mesh.quaternion);
+    // reset returns both to the start.
+    tb.reset();
+    expect(tb.getWorldMatrix().equals(new Matrix4())).toBe(true);
+  });
+
+  it("defaults to Bell's mapping, as documented", () => {
+    expect(trackball(null, null).mapping).toBe('bell');
+    expect(new Trackball(null, null, {}).mapping).toBe('bell');
+  });
+
+  it('multiplies the angle by rotateSpeed: speed 2 turns a known arcball drag twice as far', () => {
+    const turn = (rotateSpeed: number, mapping: 'arcball' | 'bell', to: [number, number]) => {
+      const element = makeElement();
+      const tb = trackball(null, element, { mapping, rotateSpeed });
+      drag(element, [[CX, CY], to]);
+      return tb.rotation.clone();
+    };
+    // 50 px right on the arcball: an arc of 30°, 60° at speed 1, exactly 120° about y at speed 2.
+    expectMatrixClose(
+      new Matrix4().makeRotationFromQuaternion(turn(2, 'arcball', [CX + 50, CY])),
+      new Matrix4().makeRotationY((2 * Math.PI) / 3),
+    );
+    expectMatrixClose(
+      new Matrix4().makeRotationFromQuaternion(turn(0.5, 'arcball', [CX + 50, CY])),
+      new Matrix4().makeRotationY(Math.PI / 6),
+    );
+    // Any drag, either mapping: the same axis, twice the angle (half-angle quaternions: w₂ = 2w₁² − 1).
+    for (const mapping of ['arcball', 'bell'] as const) {
+      const one = turn(1, mapping, [CX + 23, CY - 41]);
+      const two = turn(2, mapping, [CX + 23, CY - 41]);
+      expectSameRotation(two, one.clone().multiply(one));
+      expect(two.w).toBeCloseTo(2 * one.w * one.w - 1, 14);
+    }
+    expect(turn(0, 'bell', [CX + 60, CY + 10]).toArray()).toEqual([0, 0, 0, 1]);
   });
 
   it('sends start, change on every move, and end', () => {
@@ -426,6 +519,78 @@ describe('Trackball: zoom', () => {
     expect(tb.zoom).toBeCloseTo(Math.exp(1), 12);
   });
 
+  it('without a camera, zoom leaves getMatrix and getWorldMatrix pure rotations (unlike the lecture)', () => {
+    const element = makeElement();
+    const tb = trackball(null, element);
+    drag(element, [
+      [CX - 10, CY + 20],
+      [CX + 40, CY - 30],
+    ]);
+    const before = tb.getMatrix();
+    tb.zoomBy(3);
+    wheel(element, -300);
+    expect(tb.zoom).toBeCloseTo(3 * Math.exp(300 / 500), 12);
+    expect(tb.getMatrix().equals(before)).toBe(true);
+    expect(tb.getMatrix().equals(new Matrix4().makeRotationFromQuaternion(tb.rotation))).toBe(true);
+    expect(tb.getWorldMatrix().equals(before)).toBe(true); // no camera, target at the origin
+    expect(Math.abs(tb.getMatrix().determinant() - 1)).toBeLessThan(1e-15);
+  });
+
+  it('counts a page-mode wheel step as 800 px', () => {
+    const element = makeElement();
+    const tb = trackball(null, element);
+    wheel(element, 0.25, 2); // a quarter page = 200 px: zoom out by e^(−200/500)
+    expect(tb.zoom).toBeCloseTo(Math.exp(-0.4), 14);
+    wheel(element, -0.25, 2);
+    expect(tb.zoom).toBeCloseTo(1, 14);
+  });
+
+  it('sends start, change, end for a wheel step (no change at a limit)', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { maxZoom: 1 });
+    const seen: string[] = [];
+    for (const type of ['start', 'change', 'end'] as const) tb.addEventListener(type, () => seen.push(type));
+    wheel(element, 100);
+    expect(seen).toEqual(['start', 'change', 'end']);
+    seen.length = 0;
+    wheel(element, -1000); // back up to the limit: a change
+    wheel(element, -100); // already at maxZoom: no change
+    expect(seen).toEqual(['start', 'change', 'end', 'start', 'end']);
+  });
+
+  it('cannot move a perspective camera that sits exactly at the target (and stays finite)', () => {
+    const camera = new PerspectiveCamera();
+    camera.position.set(1, 2, 3);
+    const tb = trackball(null, makeElement(), { camera, target: new Vector3(1, 2, 3) });
+    tb.zoomBy(2);
+    tb.zoomBy(0.01);
+    expect(camera.position.toArray()).toEqual([1, 2, 3]);
+  });
+
+  it("agrees with three's TrackballControls (r187), which zooms an orthographic camera out as well as in", () => {
+    // three's wheel: zoom /= 1 + deltaY · 0.00025 · zoomSpeed (1.2) per pixel-mode step, applied in update().
+    const threeZoom = (deltaY: number) => {
+      const camera = new OrthographicCamera(-2, 2, 2, -2, 0.1, 10);
+      const element = makeElement();
+      const controls = new TrackballControls(camera, element);
+      wheel(element, deltaY);
+      controls.update();
+      controls.dispose();
+      return camera.zoom;
+    };
+    expect(threeZoom(100)).toBeCloseTo(1 / 1.03, 12); // out
+    expect(threeZoom(-100)).toBeCloseTo(1 / 0.97, 12); // in
+    const ours = (deltaY: number) => {
+      const camera = new OrthographicCamera(-2, 2, 2, -2, 0.1, 10);
+      const element = makeElement();
+      trackball(null, element, { camera });
+      wheel(element, deltaY);
+      return camera.zoom;
+    };
+    expect(ours(100)).toBeCloseTo(Math.exp(-0.2), 12);
+    expect(ours(-100)).toBeCloseTo(Math.exp(0.2), 12);
+  });
+
   it('pinch-zooms with two touch pointers, then rotates from the remaining finger without a jump', () => {
     const element = makeElement();
     const camera = new PerspectiveCamera();
@@ -477,6 +642,24 @@ describe('Trackball: damping', () => {
     expect(tb.update()).toBe(false);
     // The mesh follows the same rotation (no camera: camera frame = world).
     expectSameRotation(mesh.quaternion, tb.rotation);
+  });
+
+  it('stops the spin when pressed again, also after a press and release without a move', () => {
+    const element = makeElement();
+    const tb = trackball(null, element, { enableDamping: true });
+    drag(element, [
+      [CX, CY],
+      [CX + 5, CY],
+      [CX + 10, CY],
+    ]);
+    expect(tb.update()).toBe(true);
+    pointer(element, 'pointerdown', CX + 30, CY + 30);
+    expect(tb.update()).toBe(false); // held
+    // Released at once (well within 100 ms of the fling's last move), without moving: no spin left.
+    pointer(element, 'pointerup', CX + 30, CY + 30);
+    const held = tb.rotation.clone();
+    expect(tb.update()).toBe(false);
+    expect(tb.rotation.equals(held)).toBe(true);
   });
 
   it('turns as far in one update(3/60) as in three update(1/60) calls', () => {
@@ -628,6 +811,9 @@ describe('Trackball: option checks', () => {
     [{ dampingFactor: 0 }, /dampingFactor must be in \(0, 1\], got 0/],
     [{ dampingFactor: 1.5 }, /dampingFactor must be in \(0, 1\], got 1.5/],
     [{ radius: 0 }, /radius must be a number > 0 and finite, got 0/],
+    [{ target: new Vector3(Number.NaN, 0, 0) }, /target must have finite x, y and z, got \(NaN,0,0\)/],
+    [{ target: new Vector3(0, Number.POSITIVE_INFINITY, 0) }, /target .* got \(0,Infinity,0\)/],
+    [{ target: new Vector3(1, 2, Number.NEGATIVE_INFINITY) }, /target .* got \(1,2,-Infinity\)/],
   ])('refuses %o with a RangeError naming it', (options, message) => {
     expect(() => new Trackball(null, null, options)).toThrow(RangeError);
     expect(() => new Trackball(null, null, options)).toThrow(message);
@@ -644,6 +830,17 @@ describe('Trackball: option checks', () => {
     }).toThrow('minZoom (0.01) must be ≤ maxZoom (0.001)');
     expect(() => tb.zoomBy(0)).toThrow(/factor must be a number > 0/);
     expect(() => tb.update(-1)).toThrow(/delta must be a number ≥ 0/);
+  });
+
+  it('accepts any finite target, even one whose components sum to infinity', () => {
+    for (const v of [
+      [1e308, 1e308, 0],
+      [-Number.MAX_VALUE, Number.MAX_VALUE, Number.MIN_VALUE],
+    ]) {
+      const tb = new Trackball(null, null, { target: new Vector3(...v) });
+      expect(tb.target.toArray()).toEqual(v);
+      expect(tb.getWorldMatrix().equals(new Matrix4())).toBe(true);
+    }
   });
 
   it('uses a smaller ball with radius < 1: the rim moves in', () => {

@@ -49,7 +49,7 @@ export interface TrackballOptions {
   dampingFactor?: number;
   /** Ball radius as a fraction of half the element's shorter side. > 0, finite. @defaultValue 1 */
   radius?: number;
-  /** Pivot in world coordinates. @defaultValue the object's world position, or the origin */
+  /** Pivot in world coordinates; x, y and z finite. @defaultValue the object's world position, or the origin */
   target?: Vector3;
 }
 
@@ -67,7 +67,7 @@ const WHEEL_PIXELS_PER_EFOLD = 500;
 const WHEEL_MODE_PIXELS = [1, 16, 800];
 
 const _delta = /* @__PURE__ */ new Quaternion();
-const _world = /* @__PURE__ */ new Quaternion();
+const _turn = /* @__PURE__ */ new Quaternion();
 const _frame = /* @__PURE__ */ new Quaternion();
 const _parent = /* @__PURE__ */ new Quaternion();
 const _eye = /* @__PURE__ */ new Vector3();
@@ -91,16 +91,18 @@ function positive(name: string, value: number, allowZero: boolean): number {
  * the wheel and a two-finger pinch zoom.
  *
  * - `object` is the object being rotated (a mesh or group): it turns about its own origin, and keeps
- *   whatever orientation it had before. Without one, `object` is a detached `Object3D` that receives the
- *   same rotation (put meshes under it, or ignore it and use {@link Trackball.getMatrix}).
- * - `camera` gives the frame: a drag to the right turns the object about the camera's up axis, whatever
- *   the camera's orientation. Without a camera the frame is the world (x right, y up, z toward the viewer).
+ *   whatever orientation it had before. Without one, `object` is a detached `Object3D` that turns the same
+ *   way (put meshes under it, or ignore it and use {@link Trackball.getWorldMatrix}).
+ * - `camera` gives the frame: a drag to the right turns the object about the camera's up axis as the camera
+ *   is during that drag. Turning the camera later does not turn the object (it stays where the user left
+ *   it). Without a camera the frame is the world (x right, y up, z toward the viewer).
  * - The rotation of one drag depends only on where the drag started and where the pointer is now
  *   (`rotation = q(start → now) · rotationAtStart`), so a closed drag restores the start orientation exactly.
  * - Zoom is one factor, {@link Trackball.zoom}, clamped to [{@link Trackball.minZoom},
  *   {@link Trackball.maxZoom}] and applied to the camera relative to how it was when the trackball was made:
  *   a perspective camera moves along the line to {@link Trackball.target} (distance = initial / zoom); an
- *   orthographic one multiplies its `zoom` (or, without one, scales its projection's x and y).
+ *   orthographic one multiplies its `zoom` (or, without one, scales its projection's x and y). Without a
+ *   camera only {@link Trackball.zoom} changes: {@link Trackball.getMatrix} stays a pure rotation.
  *
  * Only {@link Trackball.connect} and {@link Trackball.disconnect} touch the DOM.
  */
@@ -124,6 +126,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
   private readonly _rotationAtStart = new Quaternion();
   private readonly _objectAtStart = new Quaternion();
   private readonly _objectHome = new Quaternion();
+  private readonly _world = new Quaternion();
+  private readonly _worldAtStart = new Quaternion();
   private readonly _ballStart: Vec3 = [0, 0, 1];
   private _hasBallStart = false;
   private _zoom = 1;
@@ -169,7 +173,9 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this.dampingFactor = dampingFactor;
     this.radius = radius;
     this.target = target ? target.clone() : object ? object.getWorldPosition(new Vector3()) : new Vector3();
-    positive('target', Math.abs(this.target.x + this.target.y + this.target.z), true);
+    if (!this.target.toArray().every(Number.isFinite)) {
+      throw new RangeError(`Trackball: target must have finite x, y and z, got (${this.target.toArray()})`);
+    }
     this._objectHome.copy(this.object.quaternion);
     if (domElement !== null) this.connect(domElement);
   }
@@ -240,7 +246,11 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this._radius = positive('radius', value, false);
   }
 
-  /** The accumulated zoom factor (1 = as the camera was when the trackball was made). @defaultValue 1 */
+  /**
+   * The accumulated zoom factor (1 = as the camera was when the trackball was made). Without a camera this
+   * is all that zoom changes: scale your view by it (the rotation matrices stay pure rotations).
+   * @defaultValue 1
+   */
   get zoom(): number {
     return this._zoom;
   }
@@ -257,7 +267,8 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
 
   /**
    * The trackball matrix, as the lecture's `getMatrix()`: the accumulated rotation in camera coordinates
-   * (a pure rotation; zoom is applied to the camera, see {@link Trackball.zoom}).
+   * (a pure rotation, with or without a camera: zoom is applied to the camera, or only kept in
+   * {@link Trackball.zoom}).
    *
    * @param out - Where to write it. @defaultValue a new Matrix4
    */
@@ -266,14 +277,19 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
   }
 
   /**
-   * The lecture's `trackballWorldMatrix(trackball, camera)`: the rotation as a world transform about
-   * {@link Trackball.target}, `T(target) · C · R · C⁻¹ · T(−target)` with C the camera's current world
-   * orientation. Use it when there is no object to rotate (for example as a shader uniform).
+   * The rotation the object received, as a world transform about {@link Trackball.target}:
+   * `T(target) · W · T(−target)`, W the product of every drag's `C · R_drag · C⁻¹` with C the camera's world
+   * orientation during that drag. Use it when there is no object to rotate (for example as a shader uniform).
+   *
+   * While the camera has not turned since the first drag this is the lecture's
+   * `trackballWorldMatrix(trackball, camera)` = `T(target) · C · R · C⁻¹ · T(−target)`. After it turns they
+   * differ: the lecture's formula turns every past drag about the new camera's axes (the object would turn in
+   * the world when only the camera moved); this keeps each drag about the axes the user saw while dragging.
    *
    * @param out - Where to write it. @defaultValue a new Matrix4
    */
   getWorldMatrix(out: Matrix4 = new Matrix4()): Matrix4 {
-    return trackballWorldMatrix(this, this.camera, out);
+    return trackballWorldMatrix({ rotation: this._world, target: this.target }, null, out);
   }
 
   /** Listen for pointer and wheel input on `element` (disconnecting from any previous element first). */
@@ -311,6 +327,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
    */
   reset(): void {
     this._rotation.identity();
+    this._world.identity();
     this.object.quaternion.copy(this._objectHome);
     this._spinAngle = 0;
     this._hasBallStart = false;
@@ -338,7 +355,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
       this._spinAngle * (keep === 0 ? Math.min(frames, 1) : (1 - keep ** frames) / this._dampingFactor);
     _delta.setFromAxisAngle(this._spinAxis, angle);
     this._rotation.premultiply(_delta).normalize();
-    this._rotateObject(_delta, this.object.quaternion);
+    this._rotateObject(_delta, this.object.quaternion, this._world);
     this._spinAngle *= keep ** frames;
     if (this._spinAngle <= SPIN_MIN) this._spinAngle = 0;
     this.dispatchEvent(_changeEvent);
@@ -406,18 +423,23 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     return true;
   }
 
-  /** Apply a camera-frame rotation `q` to the object: object = P⁻¹ · (C q C⁻¹) · P · from. */
-  private _rotateObject(q: Quaternion, from: Quaternion): void {
+  /**
+   * Apply a camera-frame rotation `q`: world rotation = (C q C⁻¹) · worldFrom, object = P⁻¹ · (C q C⁻¹) · P ·
+   * from (C the camera's, P the parent's world orientation).
+   */
+  private _rotateObject(q: Quaternion, from: Quaternion, worldFrom: Quaternion): void {
     if (this.camera) this.camera.getWorldQuaternion(_frame);
     else _frame.identity();
-    _world.copy(_frame).multiply(q).multiply(_frame.invert());
+    _turn.copy(_frame).multiply(q).multiply(_frame.invert());
+    // multiplyQuaternions reads both factors first, so worldFrom may be this._world itself.
+    this._world.multiplyQuaternions(_turn, worldFrom).normalize();
     const parent = this.object.parent;
     if (parent) {
       parent.getWorldQuaternion(_parent);
       _parentInverse.copy(_parent).invert();
-      _world.premultiply(_parentInverse).multiply(_parent);
+      _turn.premultiply(_parentInverse).multiply(_parent);
     }
-    this.object.quaternion.copy(_world.multiply(from)).normalize();
+    this.object.quaternion.copy(_turn.multiply(from)).normalize();
   }
 
   /** The pointer's position on the ball, or false while the element has no size. */
@@ -439,7 +461,9 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this._hasBallStart = this._toBall(clientX, clientY, this._ballStart);
     this._rotationAtStart.copy(this._rotation);
     this._objectAtStart.copy(this.object.quaternion);
+    this._worldAtStart.copy(this._world);
     this._spinAngle = 0;
+    this._spin.identity();
   }
 
   private _rotateTo(clientX: number, clientY: number): void {
@@ -454,7 +478,7 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this._spin.copy(this._rotation).invert();
     this._rotation.copy(_delta).multiply(this._rotationAtStart).normalize();
     this._spin.premultiply(this._rotation).normalize();
-    this._rotateObject(_delta, this._objectAtStart);
+    this._rotateObject(_delta, this._objectAtStart, this._worldAtStart);
     this._lastMove = performance.now();
     this.dispatchEvent(_changeEvent);
   }

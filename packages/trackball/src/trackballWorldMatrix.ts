@@ -18,6 +18,10 @@ export interface TrackballState {
  * `T(target) · C · R · C⁻¹ · T(−target)`, where C is the camera's current world orientation (only its
  * rotation: the pivot, not the eye, stays fixed). Without a camera C is the identity (camera frame = world).
  *
+ * The whole rotation is turned about the camera's axes as they are now, so after the camera turns this no
+ * longer matches a Trackball's object, whose every drag stays about the axes of its time: use
+ * `Trackball.getWorldMatrix` for that (the two agree while the camera has not turned since the first drag).
+ *
  * @param trackball - The rotation and the pivot (a {@link Trackball} will do).
  * @param camera - The camera whose frame the rotation is expressed in, or null.
  * @param out - Where to write the matrix. @defaultValue a new Matrix4
