@@ -27,6 +27,17 @@ function exactRadiusPx(camera: PerspectiveCamera, R: number, heightPx: number): 
   return (tangent.project(camera).y * heightPx) / 2;
 }
 
+/**
+ * The silhouette error scale of a sphere of radius R on the view axis of `camera` at distance d, from the exact
+ * formula: the derivative of the on-screen radius, R · d/dR [(H/2)·P₁₁·R/√(d² − R²)] = (H/2)·P₁₁·R·d²/(d² − R²)^{3/2}.
+ * silhouetteBound.test.ts checks the bound against the error measured in the image.
+ */
+function onAxisScalePx(camera: PerspectiveCamera, R: number, heightPx: number): number {
+  const d = camera.position.length();
+  const f = (heightPx / 2) * camera.projectionMatrix.elements[5];
+  return (f * R * d * d) / (d * d - R * R) ** 1.5;
+}
+
 /** The fewest triangles of any allowed (base, level ≤ maxLevel) whose error on screen meets the budget. */
 function cheapest(radiusPx: number, budget: number, maxLevel: number): number {
   let best = Number.POSITIVE_INFINITY;
@@ -94,7 +105,7 @@ describe('AutoDetailSphere', () => {
   const material = new MeshBasicMaterial();
   const H = 720;
 
-  it('meets the 0.5 px budget over a zoom sweep and never draws more triangles than needed', () => {
+  it('meets the 0.5 px budget (error bound) over a zoom sweep and never draws more triangles than needed', () => {
     const sphere = new AutoDetailSphere(material);
     sphere.scale.set(2, 1, 2);
     const seen = new Set<string>();
@@ -104,12 +115,14 @@ describe('AutoDetailSphere', () => {
       sphere.update(camera, H);
       const { detail } = sphere;
       seen.add(`${detail.base}/${detail.level}`);
-      const radiusPx = exactRadiusPx(camera, 2, H);
-      expect(detail.radiusPx).toBeCloseTo(radiusPx, 6);
-      const needed = cheapest(radiusPx, 0.5, 8);
+      expect(detail.radiusPx).toBeCloseTo(exactRadiusPx(camera, 2, H), 6);
+      // The ellipsoid (2, 1, 2) seen along z: its widest section (x, z) is the radius-2 sphere's.
+      const scalePx = onAxisScalePx(camera, 2, H);
+      expect(detail.errorScalePx / scalePx).toBeCloseTo(1, 9);
+      const needed = cheapest(scalePx, 0.5, 8);
       if (Number.isFinite(needed)) {
         expect(detail.meetsBudget).toBe(true);
-        expect(radiusPx * sphereError(detail.base, detail.level)).toBeLessThanOrEqual(0.5 + 1e-9);
+        expect(scalePx * sphereError(detail.base, detail.level)).toBeLessThanOrEqual(0.5 + 1e-9);
         expect(detail.triangles).toBe(needed);
       } else {
         expect(detail.meetsBudget).toBe(false);
@@ -142,8 +155,9 @@ describe('AutoDetailSphere', () => {
           sphere.scale.setScalar(s);
           const camera = perspective(d * s, fov);
           sphere.update(camera, height);
-          const radiusPx = exactRadiusPx(camera, s, height);
-          const needed = cheapest(radiusPx, budget, 10);
+          const scalePx = onAxisScalePx(camera, s, height);
+          expect(sphere.detail.errorScalePx / scalePx).toBeCloseTo(1, 9);
+          const needed = cheapest(scalePx, budget, 10);
           fc.pre(Number.isFinite(needed));
           expect(sphere.detail.triangles).toBe(needed);
           expect(sphere.detail.errorPx).toBeLessThanOrEqual(budget);
@@ -193,6 +207,7 @@ describe('AutoDetailSphere', () => {
       sphere.update(camera, H);
       expect(sphere.detail.base).toBe('icosahedron');
       expect(sphere.detail.radiusPx).toBeCloseTo((H * zoom) / 2, 6);
+      expect(sphere.detail.errorScalePx).toBeCloseTo((H * zoom) / 2, 6); // orthographic: exact, the radius
       if (sphere.detail.meetsBudget) expect(sphere.detail.errorPx).toBeLessThanOrEqual(0.5);
     }
   });

@@ -9,7 +9,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { chooseSphereDetail, type SphereDetail } from './chooseSphereDetail.js';
-import { projectedRadiusPx } from './projectedRadiusPx.js';
+import { projectedRadiusPx, silhouetteErrorScalePx } from './projectedRadiusPx.js';
 import { SPHERE_BASES, type SphereBase } from './SphereBase.js';
 import type { SphereNormals } from './SphereOptions.js';
 import { SubdivisionSphereGeometry } from './SubdivisionSphereGeometry.js';
@@ -19,7 +19,7 @@ import { fail } from './validate.js';
 
 /** Options of {@link AutoDetailSphere}. */
 export interface AutoDetailSphereOptions {
-  /** Largest radial error on screen, in pixels (the budget). Finite, > 0. @default 0.5 */
+  /** Largest silhouette error on screen, in pixels (the budget). Finite, > 0. @default 0.5 */
   maxErrorPx?: number;
   /** Base solids to choose from. @default ['tetrahedron', 'octahedron', 'icosahedron'] */
   bases?: readonly SphereBase[];
@@ -37,6 +37,12 @@ export interface AutoDetailSphereOptions {
 export interface AutoDetail extends SphereDetail {
   /** The sphere's radius on screen in pixels when the detail was chosen (see `projectedRadiusPx`). */
   readonly radiusPx: number;
+  /**
+   * Pixels of silhouette error per unit of relative radial error when the detail was chosen (see
+   * `silhouetteErrorScalePx`): `errorPx = errorScalePx · sphereError(base, level)`, an upper bound of the
+   * distance on screen between the mesh's outline and the exact ellipsoid's.
+   */
+  readonly errorScalePx: number;
   /** Whether `errorPx ≤ maxErrorPx` (false when even `maxLevel` misses the budget: the finest is drawn). */
   readonly meetsBudget: boolean;
 }
@@ -45,10 +51,11 @@ const _viewport = /* @__PURE__ */ new Vector4();
 
 /**
  * A sphere mesh whose subdivision follows its size on screen: the cheapest base and level (fewest triangles)
- * whose largest radial error on screen, `projectedRadiusPx · sphereError(base, level)`, stays within
- * `maxErrorPx` (see `chooseSphereDetail`). Geometries are cached per (base, level) and shared thereafter:
- * zooming back and forth never rebuilds, and nothing is recomputed while the camera, canvas and object stay
- * put (the projected radius is compared first).
+ * whose silhouette error on screen, bounded by `silhouetteErrorScalePx · sphereError(base, level)`, stays
+ * within `maxErrorPx` (see `chooseSphereDetail`). The bound holds for any camera, scale and place on screen,
+ * near the camera too (where the error grows faster than the radius). Geometries are cached per (base, level)
+ * and shared thereafter: zooming back and forth never rebuilds, and nothing is recomputed while the camera,
+ * canvas and object stay put (the bound is compared first).
  *
  * Call {@link AutoDetailSphere.update} before `renderer.render` to have the right detail in the same frame.
  * The mesh also updates itself in `onBeforeRender`, but three has already picked the geometry for that frame
@@ -72,7 +79,7 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
   /** Geometries built so far, by `'base/level'`. */
   readonly #cache = new Map<string, SubdivisionSphereGeometry>();
   #detail: AutoDetail;
-  #radiusPx = Number.NaN;
+  #scalePx = Number.NaN;
   #builds = 0;
 
   /**
@@ -107,11 +114,11 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
     // three ≥ 0.186 fires `dispose` from Object3D#dispose(); the event name is not in every @types/three.
     this.addEventListener('dispose' as never, () => this.disposeGeometries());
     // Until the first update: the coarsest sphere of the first base.
-    this.#detail = this.#choose(0);
+    this.#detail = this.#choose(0, 0);
     this.geometry = this.#geometry(this.#detail);
   }
 
-  /** The detail drawn now (base, level, triangles, error on screen, projected radius). */
+  /** The detail drawn now (base, level, triangles, error bound on screen, projected radius, error scale). */
   get detail(): AutoDetail {
     return this.#detail;
   }
@@ -129,15 +136,16 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
   update(camera: Camera, viewport: WebGLRenderer | number): boolean {
     const heightPx = typeof viewport === 'number' ? viewport : viewport.getCurrentViewport(_viewport).w;
     this.updateWorldMatrix(true, false);
-    const radiusPx = projectedRadiusPx({
+    const view = {
       camera,
       matrixWorld: this.matrixWorld,
       viewportHeightPx: heightPx,
       radius: this.parameters.radius,
-    });
-    if (radiusPx === this.#radiusPx) return false;
-    this.#radiusPx = radiusPx;
-    const detail = this.#choose(radiusPx);
+    };
+    const scalePx = silhouetteErrorScalePx(view);
+    if (scalePx === this.#scalePx) return false;
+    this.#scalePx = scalePx;
+    const detail = this.#choose(scalePx, projectedRadiusPx(view));
     const changed = detail.base !== this.#detail.base || detail.level !== this.#detail.level;
     this.#detail = detail;
     if (changed) this.geometry = this.#geometry(detail);
@@ -165,12 +173,13 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
     this.#cache.clear();
   }
 
-  #choose(radiusPx: number): AutoDetail {
+  #choose(errorScalePx: number, radiusPx: number): AutoDetail {
     const { maxErrorPx, bases, maxLevel } = this.parameters;
-    if (Number.isFinite(radiusPx)) {
+    if (Number.isFinite(errorScalePx)) {
       try {
-        const d = chooseSphereDetail({ radiusPx, maxErrorPx, bases, maxLevel });
-        return { ...d, radiusPx, meetsBudget: true };
+        // chooseSphereDetail's error is radiusPx · sphereError: pass the error scale in its place.
+        const d = chooseSphereDetail({ radiusPx: errorScalePx, maxErrorPx, bases, maxLevel });
+        return { ...d, radiusPx, errorScalePx, meetsBudget: true };
       } catch (e) {
         if (!(e instanceof RangeError)) throw e;
       }
@@ -182,8 +191,9 @@ export class AutoDetailSphere extends Mesh<BufferGeometry, Material> {
       base: best,
       level: maxLevel,
       triangles: sphereCounts(best, maxLevel).triangles,
-      errorPx: radiusPx * sphereError(best, maxLevel),
+      errorPx: errorScalePx * sphereError(best, maxLevel),
       radiusPx,
+      errorScalePx,
       meetsBudget: false,
     };
   }

@@ -10,5 +10,9 @@ export {
   chooseSphereDetail,
   type SphereDetail,
 } from './chooseSphereDetail.js';
-export { type ProjectedRadiusOptions, projectedRadiusPx } from './projectedRadiusPx.js';
+export {
+  type ProjectedRadiusOptions,
+  projectedRadiusPx,
+  silhouetteErrorScalePx,
+} from './projectedRadiusPx.js';
 export { MAX_SPHERE_ERROR_LEVEL, sphereError } from './sphereError.js';

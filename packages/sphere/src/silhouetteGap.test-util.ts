@@ -1,0 +1,135 @@
+// The true silhouette error of a sphere mesh in the image, measured the auditor's way: project the mesh's
+// vertices, take the convex hull of their images (the outline of a convex mesh), and compare it with the exact
+// outline of the ellipsoid found by ray casting (three's Raycaster and Ray.intersectsSphere, a bisection per
+// direction): the largest distance on screen between the two outlines, either way, counting only what is on
+// screen. Independent of the bound it checks (no contour formula, no projection algebra of ours).
+import { type BufferGeometry, type Camera, Matrix4, Ray, Raycaster, Sphere, Vector2, Vector3 } from 'three';
+
+export interface GapScene {
+  camera: Camera;
+  /** The mesh's world matrix (model scale and position). */
+  matrixWorld: Matrix4;
+  widthPx: number;
+  heightPx: number;
+  /** Model-space radius of the exact sphere. @default 1 */
+  radius?: number;
+}
+
+type P = [number, number];
+
+/** Pixel coordinates (x right, y down) of the world point `p`, or null when at or behind the eye. */
+function toPixel(p: Vector3, camera: Camera, w: number, h: number): P | null {
+  const view = p.clone().applyMatrix4(camera.matrixWorldInverse);
+  if ((camera as { isPerspectiveCamera?: boolean }).isPerspectiveCamera && view.z >= 0) return null;
+  const ndc = p.clone().project(camera);
+  return [((ndc.x + 1) / 2) * w, ((1 - ndc.y) / 2) * h];
+}
+
+/** Convex hull (Andrew's monotone chain), counter-clockwise in a y-down frame is irrelevant here. */
+function hull(points: P[]): P[] {
+  const pts = [...points].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  const cross = (o: P, a: P, b: P) => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const lower: P[] = [];
+  for (const p of pts) {
+    while (lower.length >= 2 && cross(lower[lower.length - 2], lower[lower.length - 1], p) <= 0) lower.pop();
+    lower.push(p);
+  }
+  const upper: P[] = [];
+  for (let i = pts.length - 1; i >= 0; i--) {
+    const p = pts[i];
+    while (upper.length >= 2 && cross(upper[upper.length - 2], upper[upper.length - 1], p) <= 0) upper.pop();
+    upper.push(p);
+  }
+  return lower.slice(0, -1).concat(upper.slice(0, -1));
+}
+
+function segmentDistance(p: P, a: P, b: P): number {
+  const dx = b[0] - a[0];
+  const dy = b[1] - a[1];
+  const len2 = dx * dx + dy * dy;
+  const t = len2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2)) : 0;
+  return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+}
+
+/** Distance from `p` to the closed polyline `loop`. */
+function loopDistance(p: P, loop: P[]): number {
+  let best = Number.POSITIVE_INFINITY;
+  for (let i = 0; i < loop.length; i++)
+    best = Math.min(best, segmentDistance(p, loop[i], loop[(i + 1) % loop.length]));
+  return best;
+}
+
+/**
+ * The exact outline of the ellipsoid (the sphere of `radius` under `matrixWorld`) in pixels: `samples` points,
+ * each the boundary, found by bisection, between pixels whose ray hits the ellipsoid and pixels whose ray
+ * misses it, along a ray in the image from the image of the centre.
+ */
+export function exactOutline(scene: GapScene, samples = 2048): P[] {
+  const { camera, matrixWorld, widthPx: w, heightPx: h, radius = 1 } = scene;
+  const toModel = new Matrix4().copy(matrixWorld).invert();
+  const sphere = new Sphere(new Vector3(), radius);
+  const caster = new Raycaster();
+  const ray = new Ray();
+  const ndc = new Vector2();
+  const hits = (x: number, y: number) => {
+    ndc.set((x / w) * 2 - 1, 1 - (y / h) * 2);
+    caster.setFromCamera(ndc, camera);
+    return ray.copy(caster.ray).applyMatrix4(toModel).intersectsSphere(sphere);
+  };
+  const centre = toPixel(new Vector3().setFromMatrixPosition(matrixWorld), camera, w, h);
+  if (centre === null || !hits(centre[0], centre[1])) throw new Error('exactOutline: the centre is not seen');
+  const out: P[] = [];
+  for (let i = 0; i < samples; i++) {
+    const a = (2 * Math.PI * i) / samples;
+    const dx = Math.cos(a);
+    const dy = Math.sin(a);
+    let lo = 0;
+    let hi = 1;
+    while (hits(centre[0] + hi * dx, centre[1] + hi * dy)) {
+      lo = hi;
+      hi *= 2;
+      if (hi > 1e7) throw new Error('exactOutline: the outline is unbounded');
+    }
+    for (let k = 0; k < 60 && hi - lo > 1e-7; k++) {
+      const mid = (lo + hi) / 2;
+      if (hits(centre[0] + mid * dx, centre[1] + mid * dy)) lo = mid;
+      else hi = mid;
+    }
+    out.push([centre[0] + lo * dx, centre[1] + lo * dy]);
+  }
+  return out;
+}
+
+/**
+ * The largest distance on screen, in pixels, between the outline of the mesh `geometry` (its vertices under
+ * `matrixWorld`, projected; their convex hull) and the exact outline of the ellipsoid, either way: every point
+ * of either outline that is on screen, to the other outline.
+ */
+export function silhouetteGapPx(geometry: BufferGeometry, scene: GapScene, samples = 2048): number {
+  const { camera, matrixWorld, widthPx: w, heightPx: h } = scene;
+  camera.updateMatrixWorld();
+  const position = geometry.getAttribute('position');
+  const v = new Vector3();
+  const projected: P[] = [];
+  for (let i = 0; i < position.count; i++) {
+    v.fromBufferAttribute(position, i).applyMatrix4(matrixWorld);
+    const p = toPixel(v, camera, w, h);
+    if (p === null) throw new Error('silhouetteGapPx: a vertex is at or behind the eye');
+    projected.push(p);
+  }
+  const mesh = hull(projected);
+  const exact = exactOutline(scene, samples);
+  const onScreen = (p: P) => p[0] >= 0 && p[0] <= w && p[1] >= 0 && p[1] <= h;
+  let gap = 0;
+  for (const p of exact) if (onScreen(p)) gap = Math.max(gap, loopDistance(p, mesh));
+  for (let i = 0; i < mesh.length; i++) {
+    const a = mesh[i];
+    const b = mesh[(i + 1) % mesh.length];
+    // Distance to a convex outline is concave along a chord inside it: check the ends and a few points between.
+    for (const t of [0, 0.25, 0.5, 0.75]) {
+      const p: P = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+      if (onScreen(p)) gap = Math.max(gap, loopDistance(p, exact));
+    }
+  }
+  return gap;
+}
