@@ -64,6 +64,7 @@ describe('Camera matches three.js', () => {
           const camera = new Camera().setOrthographic(r, l, t, b, n, n + depth);
           const three = new OrthographicCamera(l, r, t, b, n, n + depth);
           expectMatrixClose(camera.getProjectionMatrix(), three.projectionMatrix);
+          expectMatrixClose(camera.projectionMatrixInverse, three.projectionMatrixInverse);
         },
       ),
     );
@@ -300,6 +301,26 @@ describe('Camera matches three.js', () => {
     expect(other.right).toBe(2);
   });
 
+  it("copy/clone do not carry reversedDepth (as three's cameras): the target keeps its own, matrix to match", () => {
+    // reversedDepth belongs to the renderer a camera is drawn with (a reversed renderer switches it on).
+    const reversed = new Camera().setPerspective(50, 1.5, 0.1, 100);
+    reversed.reversedDepth = true;
+    const three = new PerspectiveCamera(50, 1.5, 0.1, 100);
+    (three as unknown as { _reversedDepth: boolean })._reversedDepth = true;
+    three.updateProjectionMatrix();
+    expect(three.clone().reversedDepth).toBe(false); // three does not carry it either
+    const clone = reversed.clone();
+    expect(clone.reversedDepth).toBe(false);
+    // …but unlike three's clone (which keeps the reversed matrix under reversedDepth = false) the matrix follows.
+    expectMatrixClose(clone.projectionMatrix, new PerspectiveCamera(50, 1.5, 0.1, 100).projectionMatrix, 0);
+    const target = new Camera();
+    target.reversedDepth = true;
+    target.copy(new Camera().setPerspective(50, 1.5, 0.1, 100));
+    expect(target.reversedDepth).toBe(true);
+    expectMatrixClose(target.projectionMatrix, three.projectionMatrix, 0);
+    expectMatrixClose(target.projectionMatrixInverse, three.projectionMatrixInverse, 0);
+  });
+
   it("dispatches 'change' from lookAt and the projection setters", () => {
     const camera = new Camera();
     let changes = 0;
@@ -311,6 +332,13 @@ describe('Camera matches three.js', () => {
     expect(changes).toBe(4);
   });
 });
+
+/** Assign `zoom` and update, as three's cameras are used (a refusal leaves the matrices unchanged). */
+function withZoom(c: Camera, zoom: number): Camera {
+  c.zoom = zoom;
+  c.updateProjectionMatrix();
+  return c;
+}
 
 describe('Camera refuses bad input (DESIGN.md extremes)', () => {
   const camera = new Camera();
@@ -335,6 +363,14 @@ describe('Camera refuses bad input (DESIGN.md extremes)', () => {
     ['top', () => camera.setOrthographic(1, -1, Number.NaN, -1, 0, 10)],
     ['near', () => camera.setOrthographic(1, -1, 1, -1, Number.NaN, 10)],
     ['far', () => camera.setOrthographic(1, -1, 1, -1, 5, 5)],
+    ['left', () => camera.setOrthographic(1, Number.NaN, 1, -1, 0, 10)],
+    ['bottom', () => camera.setOrthographic(1, -1, 1, Number.NaN, 0, 10)],
+    ['far', () => camera.setOrthographic(1, -1, 1, -1, 0, Number.NaN)],
+    ['fovy', () => camera.setPerspective(Number.POSITIVE_INFINITY, 1, 0.1, 10)],
+    ['fovy', () => camera.setPerspective(Number.NEGATIVE_INFINITY, 1, 0.1, 10)],
+    ['zoom', () => withZoom(new Camera(), Number.NaN)],
+    ['zoom', () => withZoom(new Camera().setOrthographic(1, -1, 1, -1, 0, 10), Number.NaN)],
+    ['zoom', () => withZoom(new Camera(), Number.POSITIVE_INFINITY)],
     ['aspect', () => camera.setAspect(Number.NaN)],
     ['fovy', () => new Camera({ fovy: 200 })],
     ['eye', () => camera.lookAt([Number.NaN, 0, 0], [0, 0, 0], [0, 1, 0])],

@@ -2,7 +2,7 @@ import { Matrix4, Quaternion, Camera as ThreeCamera, Vector3 } from 'three';
 import type { CameraFrame } from './CameraFrame.js';
 import { createPoleMemory, lookAtFrame, type PoleMemory } from './lookAtFrame.js';
 import { checkCoordinates, readVector3, type Vec3Input } from './readVector3.js';
-import { check, validateOrthographic, validatePerspective } from './validateProjection.js';
+import { check, finite, positive, validateOrthographic, validatePerspective } from './validateProjection.js';
 
 /** Which projection a {@link Camera} uses. */
 export type ProjectionType = 'perspective' | 'orthographic';
@@ -19,12 +19,13 @@ export interface CameraOptions {
   far?: number;
 }
 
-const _frame: CameraFrame = {
-  e: /* @__PURE__ */ new Vector3(),
-  u: /* @__PURE__ */ new Vector3(),
-  v: /* @__PURE__ */ new Vector3(),
-  w: /* @__PURE__ */ new Vector3(),
-};
+const newFrame = (): CameraFrame => ({
+  e: new Vector3(),
+  u: new Vector3(),
+  v: new Vector3(),
+  w: new Vector3(),
+});
+const _frame = /* @__PURE__ */ newFrame();
 const _m = /* @__PURE__ */ new Matrix4();
 const _p = /* @__PURE__ */ new Matrix4();
 const _pi = /* @__PURE__ */ new Matrix4();
@@ -77,14 +78,19 @@ export class Camera extends ThreeCamera {
   /** Orthographic bottom plane, camera-space y, world units. @defaultValue -1 */
   bottom: number;
 
-  private _projection: ProjectionType = 'perspective';
+  private _kind: ProjectionType = 'perspective';
   private readonly _pole: PoleMemory = createPoleMemory();
   /** Orientation written by the last lookAt: when another API has turned the camera since, the pole anchor resets. */
-  private readonly _poleQuaternion = new Quaternion(Number.NaN, 0, 0, 0);
+  private readonly _poleQ = new Quaternion(Number.NaN, 0, 0, 0);
 
-  /** Build a perspective camera at the origin looking down −z (frame e = 0, u = x, v = y, w = z). */
-  constructor({ fovy = 50, aspect = 1, near = 0.1, far = 2000 }: CameraOptions = {}) {
+  /**
+   * Build a perspective camera at the origin looking down −z (frame e = 0, u = x, v = y, w = z).
+   * @param options - Projection parameters (`null` or omitted: all defaults).
+   * @throws RangeError / TypeError naming the first bad option, as {@link Camera.setPerspective}.
+   */
+  constructor(options?: CameraOptions | null) {
     super();
+    const { fovy = 50, aspect = 1, near = 0.1, far = 2000 } = options ?? {};
     this.fovy = fovy;
     this.aspect = aspect;
     this.near = near;
@@ -99,17 +105,17 @@ export class Camera extends ThreeCamera {
 
   /** The current projection. Change it with {@link Camera.setPerspective} / {@link Camera.setOrthographic}. */
   get projection(): ProjectionType {
-    return this._projection;
+    return this._kind;
   }
 
   /** `true` while the projection is perspective (three's shaders and controls read this). */
   get isPerspectiveCamera(): boolean {
-    return this._projection === 'perspective';
+    return this._kind === 'perspective';
   }
 
   /** `true` while the projection is orthographic (three sets the `isOrthographic` uniform from this). */
   get isOrthographicCamera(): boolean {
-    return this._projection === 'orthographic';
+    return this._kind === 'orthographic';
   }
 
   /**
@@ -154,21 +160,16 @@ export class Camera extends ThreeCamera {
   override lookAt(x: number, y: number, z: number): this;
   override lookAt(eye: Vec3Input, at: Vec3Input, up?: Vec3Input): this;
   override lookAt(a: Vec3Input | number, b?: Vec3Input | number, c?: Vec3Input | number): this {
-    let eye: Vec3Input;
-    let at: Vec3Input;
+    // three's forms look from the current world position with this.up.
+    let eye: Vec3Input = this.getWorldPosition(_eye);
+    let at: Vec3Input = typeof a === 'number' ? _target.set(a, b as number, c as number) : a;
     let up: Vec3Input = this.up;
-    if (typeof a === 'number') {
-      at = _target.set(a, b as number, c as number);
-      eye = this.getWorldPosition(_eye);
-    } else if (b === undefined) {
-      at = a;
-      eye = this.getWorldPosition(_eye);
-    } else {
+    if (typeof a !== 'number' && b !== undefined) {
       eye = a;
       at = b as Vec3Input;
       if (c !== undefined) up = c as Vec3Input;
     }
-    if (!this._poleQuaternion.equals(this.quaternion)) {
+    if (!this._poleQ.equals(this.quaternion)) {
       // Someone else turned the camera since our last lookAt: the pole anchor is its current right vector.
       this.updateWorldMatrix(true, false);
       this._pole.anchor.setFromMatrixColumn(this.matrixWorld, 0).normalize();
@@ -188,7 +189,7 @@ export class Camera extends ThreeCamera {
       this.quaternion.premultiply(_q.invert());
     }
     this.updateMatrixWorld(true);
-    this._poleQuaternion.copy(this.quaternion);
+    this._poleQ.copy(this.quaternion);
     this.dispatchEvent(_change as never);
     return this;
   }
@@ -204,7 +205,7 @@ export class Camera extends ThreeCamera {
    * camera is then unchanged. TypeError for a non-number.
    */
   setPerspective(fovy: number, aspect: number, near: number, far: number): this {
-    return this._set({ _projection: 'perspective', fovy, aspect, near, far });
+    return this._set({ _kind: 'perspective', fovy, aspect, near, far });
   }
 
   /**
@@ -224,7 +225,7 @@ export class Camera extends ThreeCamera {
     validateOrthographic(r, l, t, b, n, f, this.zoom);
     const aspect = Math.abs(r - l) / Math.abs(t - b);
     return this._set({
-      _projection: 'orthographic',
+      _kind: 'orthographic',
       right: r,
       left: l,
       top: t,
@@ -243,8 +244,8 @@ export class Camera extends ThreeCamera {
    * @throws RangeError when aspect is not finite and > 0.
    */
   setAspect(aspect: number): this {
-    check(aspect, (v) => v > 0 && Number.isFinite(v), 'aspect', 'finite and > 0');
-    if (this._projection !== 'orthographic') return this._set({ aspect });
+    check(aspect, positive, 'aspect', 'finite and > 0');
+    if (this._kind !== 'orthographic') return this._set({ aspect });
     const cx = (this.left + this.right) / 2;
     const half = (Math.sign(this.right - this.left) * aspect * Math.abs(this.top - this.bottom)) / 2;
     return this._set({ aspect, left: cx - half, right: cx + half });
@@ -256,10 +257,7 @@ export class Camera extends ThreeCamera {
    */
   private _set(
     fields: Partial<
-      Record<
-        '_projection' | 'fovy' | 'aspect' | 'near' | 'far' | 'left' | 'right' | 'top' | 'bottom',
-        unknown
-      >
+      Record<'_kind' | 'fovy' | 'aspect' | 'near' | 'far' | 'left' | 'right' | 'top' | 'bottom', unknown>
     >,
   ): this {
     this.updateProjectionMatrix.call(Object.assign(Object.create(this) as this, fields));
@@ -278,22 +276,12 @@ export class Camera extends ThreeCamera {
    */
   updateProjectionMatrix(): void {
     const { near, far, zoom } = this;
-    if (this._projection === 'perspective') {
+    if (this._kind === 'perspective') {
       validatePerspective(this.fovy, this.aspect, near, far, zoom);
+      // three's top, left = −0.5 · aspect · 2 · top, right = left + width, bottom = top − height: the same doubles.
       const top = (near * Math.tan((Math.PI / 360) * this.fovy)) / zoom;
-      const height = 2 * top;
-      const width = this.aspect * height;
-      const left = -0.5 * width;
-      _p.makePerspective(
-        left,
-        left + width,
-        top,
-        top - height,
-        near,
-        far,
-        this.coordinateSystem,
-        this.reversedDepth,
-      );
+      const right = this.aspect * top;
+      _p.makePerspective(-right, right, top, -top, near, far, this.coordinateSystem, this.reversedDepth);
     } else {
       validateOrthographic(this.right, this.left, this.top, this.bottom, near, far, zoom);
       const dx = (this.right - this.left) / (2 * zoom);
@@ -312,7 +300,7 @@ export class Camera extends ThreeCamera {
       );
     }
     _pi.copy(_p).invert();
-    if (![..._p.elements, ..._pi.elements].every((x) => Number.isFinite(Math.fround(x)))) {
+    if (![..._p.elements, ..._pi.elements].every((x) => finite(Math.fround(x)))) {
       throw new RangeError(
         `near, far, zoom (${near}, ${far}, ${zoom}), aspect, fovy or extent give a non-finite float32 matrix`,
       );
@@ -326,9 +314,7 @@ export class Camera extends ThreeCamera {
    * what is rendered.
    * @param target - Frame to write; a new one when omitted.
    */
-  getFrame(
-    target: CameraFrame = { e: new Vector3(), u: new Vector3(), v: new Vector3(), w: new Vector3() },
-  ): CameraFrame {
+  getFrame(target: CameraFrame = newFrame()): CameraFrame {
     this.updateWorldMatrix(true, false);
     target.e.setFromMatrixPosition(this.matrixWorld);
     this.matrixWorld.extractBasis(target.u, target.v, target.w);
@@ -363,7 +349,7 @@ export class Camera extends ThreeCamera {
   /** Copy projection, frame (Object3D state) and pole memory from `source`. */
   override copy(source: Camera, recursive?: boolean): this {
     super.copy(source, recursive);
-    this._projection = source._projection;
+    this._kind = source._kind;
     this.fovy = source.fovy;
     this.aspect = source.aspect;
     this.near = source.near;
@@ -375,7 +361,7 @@ export class Camera extends ThreeCamera {
     this.bottom = source.bottom;
     this._pole.anchor.copy(source._pole.anchor);
     this._pole.turn = source._pole.turn;
-    this._poleQuaternion.copy(source._poleQuaternion);
+    this._poleQ.copy(source._poleQ);
     this.updateProjectionMatrix();
     return this;
   }

@@ -187,6 +187,59 @@ describe('CameraMovement DOM hygiene', () => {
     expect(total(b.live)).toBe(0);
   });
 
+  it("disconnect() during a drag releases the pointer capture and dispatches 'end'; later moves turn nothing", () => {
+    const camera = new Camera().lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+    const { el, live } = countedElement();
+    const captured = new Set<number>();
+    el.setPointerCapture = (id: number) => void captured.add(id);
+    el.releasePointerCapture = (id: number) => void captured.delete(id);
+    el.hasPointerCapture = (id: number) => captured.has(id);
+    const movement = new CameraMovement(camera, el);
+    const events: string[] = [];
+    for (const type of ['start', 'change', 'end'] as const)
+      movement.addEventListener(type, () => events.push(type));
+    pointer(el, 'pointerdown', 10, 10, { pointerId: 7 });
+    pointer(el, 'pointermove', 20, 10, { pointerId: 7 });
+    expect(captured.has(7)).toBe(true);
+    movement.disconnect();
+    expect(captured.size).toBe(0);
+    expect(events).toEqual(['start', 'change', 'end']);
+    expect(total(live)).toBe(0);
+    const turned = camera.quaternion.clone();
+    pointer(el, 'pointermove', 80, 40, { pointerId: 7 });
+    pointer(el, 'pointerup', 80, 40, { pointerId: 7 });
+    expect(camera.quaternion.equals(turned)).toBe(true);
+    expect(events).toEqual(['start', 'change', 'end']); // no second 'end'
+    // Reconnected, a new drag works again (the drag state was cleared), and disconnecting idle sends no 'end'.
+    movement.connect(el);
+    pointer(el, 'pointerdown', 0, 0, { pointerId: 8 });
+    pointer(el, 'pointerup', 0, 0, { pointerId: 8 });
+    movement.dispose();
+    expect(events).toEqual(['start', 'change', 'end', 'start', 'end']);
+  });
+
+  it('a bad speed assigned after construction moves and turns nothing (negative, NaN, infinite)', () => {
+    for (const bad of [-0.5, Number.NaN, Number.POSITIVE_INFINITY]) {
+      const camera = new Camera().lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+      const { el } = countedElement();
+      const movement = new CameraMovement(camera, el);
+      movement.moveSpeed = bad;
+      movement.turnSpeed = bad;
+      const before = camera.matrixWorld.clone();
+      key(el, 'KeyW');
+      pointer(el, 'pointerdown', 0, 0);
+      pointer(el, 'pointermove', 30, 10);
+      pointer(el, 'pointerup', 30, 10);
+      expect(camera.matrixWorld.equals(before)).toBe(true);
+      movement.dispose();
+    }
+  });
+
+  it('null options are the defaults, like no options', () => {
+    const movement = new CameraMovement(new Camera(), null, null);
+    expect([movement.moveSpeed, movement.turnSpeed]).toEqual([0.1, 0.005]);
+  });
+
   it('keeps an existing tabindex and refuses negative or NaN speeds', () => {
     const { el } = countedElement();
     el.setAttribute('tabindex', '3');

@@ -1,6 +1,6 @@
 import { Controls, type Object3D, Vector3 } from 'three';
 import { checkCoordinates } from './readVector3.js';
-import { check } from './validateProjection.js';
+import { check, finite } from './validateProjection.js';
 
 /** Events of {@link CameraMovement}: `change` after every move or turn, `start`/`end` around a pointer drag. */
 export interface CameraMovementEventMap {
@@ -73,23 +73,20 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
    */
   turnSpeed: number;
 
-  private _dragging = -1;
+  private _drag = -1;
   private _x = 0;
   private _y = 0;
-  private _savedTabIndex: string | null = null;
-  private _savedTouchAction = '';
+  private _tab: string | null = null;
+  private _touch = '';
 
   /**
    * @param camera - The camera (or any Object3D) to move.
    * @param element - Element to listen on; connects right away when given.
    * @param options - Speeds.
    */
-  constructor(
-    camera: Object3D,
-    element: HTMLElement | null = null,
-    { moveSpeed = 0.1, turnSpeed = 0.005 }: CameraMovementOptions = {},
-  ) {
+  constructor(camera: Object3D, element: HTMLElement | null = null, options?: CameraMovementOptions | null) {
     super(camera, null);
+    const { moveSpeed = 0.1, turnSpeed = 0.005 } = options ?? {};
     check(moveSpeed, speed, 'moveSpeed', 'finite and ≥ 0');
     check(turnSpeed, speed, 'turnSpeed', 'finite and ≥ 0');
     this.moveSpeed = moveSpeed;
@@ -101,29 +98,24 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
   override connect(element: HTMLElement | SVGElement): void {
     super.connect(element);
     const el = element as HTMLElement;
-    this._savedTabIndex = el.getAttribute('tabindex');
-    if (this._savedTabIndex === null) el.tabIndex = 0;
-    this._savedTouchAction = el.style.touchAction;
+    this._tab = el.getAttribute('tabindex');
+    if (this._tab === null) el.tabIndex = 0;
+    this._touch = el.style.touchAction;
     el.style.touchAction = 'none';
-    el.addEventListener('keydown', this._onKeyDown);
-    el.addEventListener('pointerdown', this._onPointerDown);
-    el.addEventListener('pointermove', this._onPointerMove);
-    el.addEventListener('pointerup', this._onPointerUp);
-    el.addEventListener('pointercancel', this._onPointerUp);
+    for (const [type, listener] of this._on) el.addEventListener(type, listener as EventListener);
   }
 
-  /** Remove every listener and restore the element's `tabindex` and `touch-action`. */
+  /**
+   * Remove every listener and restore the element's `tabindex` and `touch-action`. A drag in progress ends
+   * (pointer capture released, `end` dispatched).
+   */
   override disconnect(): void {
     const el = this.domElement as HTMLElement | null;
     if (el === null) return;
-    el.removeEventListener('keydown', this._onKeyDown);
-    el.removeEventListener('pointerdown', this._onPointerDown);
-    el.removeEventListener('pointermove', this._onPointerMove);
-    el.removeEventListener('pointerup', this._onPointerUp);
-    el.removeEventListener('pointercancel', this._onPointerUp);
-    if (this._savedTabIndex === null) el.removeAttribute('tabindex');
-    el.style.touchAction = this._savedTouchAction;
-    this._dragging = -1;
+    if (this._drag !== -1) this._end({ pointerId: this._drag } as PointerEvent);
+    for (const [type, listener] of this._on) el.removeEventListener(type, listener as EventListener);
+    if (this._tab === null) el.removeAttribute('tabindex');
+    el.style.touchAction = this._touch;
     this.domElement = null;
   }
 
@@ -139,14 +131,17 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
    * a coordinate beyond ±1e30 world units, where float32 view matrices overflow (the object then stays put).
    */
   move(du: number, dv: number, dw: number): void {
-    for (const d of [du, dv, dw]) check(d, Number.isFinite, 'du, dv, dw', 'finite');
+    for (const d of [du, dv, dw]) check(d, finite, 'du, dv, dw', 'finite');
     if (du === 0 && dv === 0 && dw === 0) return;
     // Along the object's own axes (as translateX/Y/Z), checked before anything moves.
-    const { position, quaternion } = this.object;
-    position.copy(
-      checkCoordinates(_next.set(du, dv, dw).applyQuaternion(quaternion).add(position), 'du, dv, dw'),
+    const object = this.object;
+    object.position.copy(
+      checkCoordinates(
+        _next.set(du, dv, dw).applyQuaternion(object.quaternion).add(object.position),
+        'du, dv, dw',
+      ),
     );
-    this.object.updateMatrixWorld();
+    object.updateMatrixWorld();
     this.dispatchEvent({ type: 'change' });
   }
 
@@ -156,21 +151,23 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
    * @throws RangeError naming yaw, pitch when one is not a finite number.
    */
   turn(yaw: number, pitch: number): void {
-    for (const a of [yaw, pitch]) check(a, Number.isFinite, 'yaw, pitch', 'finite');
+    for (const a of [yaw, pitch]) check(a, finite, 'yaw, pitch', 'finite');
     if (yaw === 0 && pitch === 0) return;
-    this.object.rotateY(yaw);
-    this.object.rotateX(pitch);
-    this.object.quaternion.normalize();
-    this.object.updateMatrixWorld();
+    const object = this.object;
+    object.rotateY(yaw);
+    object.rotateX(pitch);
+    object.quaternion.normalize();
+    object.updateMatrixWorld();
     this.dispatchEvent({ type: 'change' });
   }
 
-  private readonly _onKeyDown = (event: KeyboardEvent): void => {
+  private readonly _key = (event: KeyboardEvent): void => {
     if (!this.enabled || event.ctrlKey || event.metaKey || event.altKey) return;
     const step = MOVEMENT_KEYS[event.code];
     if (step === undefined) return;
     event.preventDefault();
     try {
+      check(this.moveSpeed, speed, 'moveSpeed', 'finite and ≥ 0');
       const d = step[1] * this.moveSpeed;
       this.move(step[0] === 'u' ? d : 0, step[0] === 'v' ? d : 0, step[0] === 'w' ? d : 0);
     } catch {
@@ -178,35 +175,45 @@ export class CameraMovement extends Controls<CameraMovementEventMap, Object3D> {
     }
   };
 
-  private readonly _onPointerDown = (event: PointerEvent): void => {
-    if (!this.enabled || event.button !== 0 || this._dragging !== -1) return;
+  private readonly _down = (event: PointerEvent): void => {
+    if (!this.enabled || event.button !== 0 || this._drag !== -1) return;
     const el = this.domElement as HTMLElement;
     el.focus?.();
     el.setPointerCapture?.(event.pointerId);
-    this._dragging = event.pointerId;
+    this._drag = event.pointerId;
     this._x = event.clientX;
     this._y = event.clientY;
     this.dispatchEvent({ type: 'start' });
   };
 
-  private readonly _onPointerMove = (event: PointerEvent): void => {
-    if (event.pointerId !== this._dragging) return;
+  private readonly _move = (event: PointerEvent): void => {
+    if (event.pointerId !== this._drag) return;
     const dx = event.clientX - this._x;
     const dy = event.clientY - this._y;
     this._x = event.clientX;
     this._y = event.clientY;
     try {
+      check(this.turnSpeed, speed, 'turnSpeed', 'finite and ≥ 0');
       if (this.enabled) this.turn(-dx * this.turnSpeed, -dy * this.turnSpeed);
     } catch {
       // A bad or huge turnSpeed (the angle overflowed): this move turns nothing.
     }
   };
 
-  private readonly _onPointerUp = (event: PointerEvent): void => {
-    if (event.pointerId !== this._dragging) return;
-    this._dragging = -1;
+  private readonly _end = (event: PointerEvent): void => {
+    if (event.pointerId !== this._drag) return;
+    this._drag = -1;
     const el = this.domElement as HTMLElement;
     if (el.hasPointerCapture?.(event.pointerId)) el.releasePointerCapture(event.pointerId);
     this.dispatchEvent({ type: 'end' });
   };
+
+  /** Every DOM listener, added by `connect` and removed by `disconnect`. */
+  private readonly _on = [
+    ['keydown', this._key],
+    ['pointerdown', this._down],
+    ['pointermove', this._move],
+    ['pointerup', this._end],
+    ['pointercancel', this._end],
+  ] as const;
 }

@@ -15,6 +15,14 @@ describe('depth modes', () => {
       logarithmicDepthBuffer: false,
       reversedDepthBuffer: true,
     });
+    // Both of three's switches: three keeps reversed-Z when EXT_clip_control exists, logarithmic otherwise.
+    expect(depthBufferParameters('reversed-or-logarithmic')).toEqual({
+      logarithmicDepthBuffer: true,
+      reversedDepthBuffer: true,
+    });
+    expect(() => depthBufferParameters('linear' as never)).toThrow(
+      'mode must be one of standard, logarithmic, reversed, reversed-or-logarithmic, got linear',
+    );
     expect(() => depthBufferParameters('linear' as never)).toThrow(RangeError);
   });
 

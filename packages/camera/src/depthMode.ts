@@ -14,6 +14,17 @@ import type { WebGLRenderer } from 'three';
  */
 export type DepthMode = 'standard' | 'logarithmic' | 'reversed';
 
+/**
+ * What to ask a renderer for: a {@link DepthMode}, or `'reversed-or-logarithmic'`: reversed-Z where
+ * `EXT_clip_control` exists, logarithmic depth where it does not (both of three's switches on; three keeps
+ * reversed-Z when it can, with a console warning that the logarithmic switch is ignored, and falls back to
+ * logarithmic otherwise). Plain `'reversed'` is three's `reversedDepthBuffer` alone, which falls back to
+ * `'standard'`, the least precise mode.
+ */
+export type DepthModeRequest = DepthMode | 'reversed-or-logarithmic';
+
+const MODES: readonly string[] = ['standard', 'logarithmic', 'reversed', 'reversed-or-logarithmic'];
+
 /** The `WebGLRenderer` constructor parameters that select a {@link DepthMode}. */
 export interface DepthBufferParameters {
   /** three's logarithmic depth buffer switch. */
@@ -23,20 +34,23 @@ export interface DepthBufferParameters {
 }
 
 /**
- * Renderer parameters for a depth mode: `new WebGLRenderer({ canvas, ...depthBufferParameters('reversed') })`.
- * @param mode - The depth mode.
+ * Renderer parameters for a depth mode:
+ * `new WebGLRenderer({ canvas, ...depthBufferParameters('reversed-or-logarithmic') })`.
+ * @param mode - The depth mode to ask for; {@link depthModeOf} tells what the renderer then runs.
  * @throws RangeError for an unknown mode.
  */
-export function depthBufferParameters(mode: DepthMode): DepthBufferParameters {
-  if (mode !== 'standard' && mode !== 'logarithmic' && mode !== 'reversed') {
-    throw new RangeError(`mode must be 'standard', 'logarithmic' or 'reversed', got ${String(mode)}`);
-  }
-  return { logarithmicDepthBuffer: mode === 'logarithmic', reversedDepthBuffer: mode === 'reversed' };
+export function depthBufferParameters(mode: DepthModeRequest): DepthBufferParameters {
+  if (!MODES.includes(mode))
+    throw new RangeError(`mode must be one of ${MODES.join(', ')}, got ${String(mode)}`);
+  return {
+    logarithmicDepthBuffer: mode.endsWith('logarithmic'),
+    reversedDepthBuffer: mode.startsWith('reversed'),
+  };
 }
 
 /**
- * The depth mode a renderer actually uses (a reversed-Z request falls back to `'standard'` without
- * `EXT_clip_control`).
+ * The depth mode a renderer actually uses: without `EXT_clip_control` a `'reversed'` request falls back to
+ * `'standard'` and a `'reversed-or-logarithmic'` one to `'logarithmic'`.
  */
 export function depthModeOf(renderer: Pick<WebGLRenderer, 'capabilities'>): DepthMode {
   const { capabilities } = renderer;

@@ -3,7 +3,7 @@ export { Camera } from './Camera.js';
 export type { CameraFrame } from './CameraFrame.js';
 export type { CameraMovementEventMap, CameraMovementOptions } from './CameraMovement.js';
 export { CameraMovement, MOVEMENT_KEYS } from './CameraMovement.js';
-export type { DepthBufferParameters, DepthMode } from './depthMode.js';
+export type { DepthBufferParameters, DepthMode, DepthModeRequest } from './depthMode.js';
 export { depthBufferParameters, depthModeOf } from './depthMode.js';
 export type { PoleMemory } from './lookAtFrame.js';
 export { createPoleMemory, lookAtFrame, POLE_CAP_RAD } from './lookAtFrame.js';

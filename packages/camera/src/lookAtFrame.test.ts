@@ -168,3 +168,92 @@ describe('lookAt with up parallel to the gaze (DESIGN.md extremes)', () => {
     );
   });
 });
+
+describe('Camera.lookAt near the pole (DESIGN.md extremes, through the Camera and its pole memory)', () => {
+  const gazes: [number, number, number][] = [
+    [0, -1, 0],
+    [0, 1, 0],
+    [0, 0, -1],
+    [0.6, -0.8, 0],
+    [1, 2, -3],
+  ];
+
+  it('up within 1e-9 rad of +gaze or of −gaze, in any direction around it: finite orthonormal frame, right gaze', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: -Math.PI, max: Math.PI, noNaN: true }),
+        fc.double({ min: 0, max: 1e-9, noNaN: true }),
+        fc.constantFrom(...gazes),
+        fc.constantFrom(1, -1),
+        fc.boolean(),
+        (around, off, g, sign, fromElsewhere) => {
+          const gaze = new Vector3(...g).normalize();
+          const p = new Vector3(gaze.z, gaze.x, gaze.y).cross(gaze).normalize();
+          const q = new Vector3().crossVectors(gaze, p);
+          // sign · gaze tilted by `off` towards the direction `around` in the plane ⊥ gaze.
+          const up = gaze
+            .clone()
+            .multiplyScalar(sign * Math.cos(off))
+            .addScaledVector(
+              p.multiplyScalar(Math.cos(around)).addScaledVector(q, Math.sin(around)),
+              Math.sin(off),
+            );
+          const camera = new Camera();
+          // Either a fresh camera, or one whose pole memory was set by an ordinary lookAt first.
+          if (fromElsewhere) camera.lookAt([3, 1, 2], [0, 0, 0], [0, 1, 0]);
+          camera.lookAt([1, 2, 3], new Vector3(1, 2, 3).add(new Vector3(...g)), up);
+          const frame = camera.getFrame();
+          expectOrthonormal(frame);
+          expect(frame.w.distanceTo(gaze.clone().negate())).toBeLessThan(1e-12);
+          expect(frame.e.distanceTo(new Vector3(1, 2, 3))).toBeLessThan(1e-12);
+          for (const x of camera.getMatrix().elements) expect(Number.isFinite(x)).toBe(true);
+          for (const x of camera.matrixWorldInverse.elements) expect(Number.isFinite(x)).toBe(true);
+        },
+      ),
+    );
+  });
+
+  it('turns continuously while the eye passes under the pole (eye below at, up = +y: up ≈ +gaze)', () => {
+    const camera = new Camera();
+    const steps = 12000;
+    const span = 3 * POLE_CAP_RAD;
+    let previous: CameraFrame | undefined;
+    let first: CameraFrame | undefined;
+    let maxStep = 0;
+    for (let i = 0; i <= steps; i++) {
+      const phi = -span + (2 * span * i) / steps;
+      // The eye on a circle below `at`: the gaze is ≈ +y, along up.
+      camera.lookAt([0, -10 * Math.cos(phi), 10 * Math.sin(phi)], [0, 0, 0], [0, 1, 0]);
+      const frame = camera.getFrame();
+      expectOrthonormal(frame);
+      expect(frame.w.y).toBeLessThan(-0.99); // looking up
+      if (previous) maxStep = Math.max(maxStep, frameStep(previous, frame));
+      previous = copyFrame(frame);
+      first ??= previous;
+      if (Math.abs(phi) > POLE_CAP_RAD * 1.01) {
+        const m = new Matrix4().lookAt(frame.e, new Vector3(), new Vector3(0, 1, 0));
+        expect(frame.u.distanceTo(new Vector3().setFromMatrixColumn(m, 0))).toBeLessThan(1e-9);
+      }
+    }
+    const delta = (2 * span) / steps; // 5e-8 rad per step
+    expect(maxStep).toBeLessThan(1.05 * Math.PI * (delta / POLE_CAP_RAD));
+    expect(first?.u.dot(previous?.u ?? new Vector3())).toBeCloseTo(-1, 9);
+  });
+
+  it('turns continuously while up sweeps through +gaze (fixed gaze −y, up from −y side)', () => {
+    const camera = new Camera();
+    const steps = 12000;
+    const span = 3 * POLE_CAP_RAD;
+    let previous: CameraFrame | undefined;
+    let maxStep = 0;
+    for (let i = 0; i <= steps; i++) {
+      const angle = -span + (2 * span * i) / steps;
+      camera.lookAt([0, 5, 0], [0, 0, 0], [0, -Math.cos(angle), Math.sin(angle)]); // up ≈ −y = +gaze
+      const frame = camera.getFrame();
+      expectOrthonormal(frame);
+      if (previous) maxStep = Math.max(maxStep, frameStep(previous, frame));
+      previous = copyFrame(frame);
+    }
+    expect(maxStep).toBeLessThan(1.05 * Math.PI * ((2 * span) / steps / POLE_CAP_RAD));
+  });
+});

@@ -1,6 +1,7 @@
 import { Vector3 } from 'three';
 import type { CameraFrame } from './CameraFrame.js';
 import { readVector3, safeNormalize, type Vec3Input } from './readVector3.js';
+import { finite } from './validateProjection.js';
 
 /**
  * Half-angle of the cap around the gaze line (radians) inside which `up` no longer decides the frame on its own.
@@ -80,7 +81,7 @@ export function lookAtFrame(
   if (!safeNormalize(w)) {
     throw new RangeError(`eye and at must differ, both are (${e.x}, ${e.y}, ${e.z}); allowed: eye ≠ at`);
   }
-  if (!Number.isFinite(w.x + w.y + w.z)) {
+  if (!finite(w.x + w.y + w.z)) {
     throw new RangeError(`eye − at overflows: eye (${e.x}, ${e.y}, ${e.z}); allowed: |eye − at| finite`);
   }
   if (!safeNormalize(_up)) throw new RangeError('up must be a non-zero vector, got (0, 0, 0)');

@@ -1,4 +1,5 @@
 import type { Vector3, Vector3Like } from 'three';
+import { finite } from './validateProjection.js';
 
 /**
  * A point or direction: a three.js `Vector3`, any `{ x, y, z }`, an `[x, y, z]` tuple (the lecture's vec3) or a
@@ -24,13 +25,13 @@ export function readVector3(input: unknown, name: string, target: Vector3): Vect
     ({ x, y, z } = input as Vector3Like);
   } else {
     throw new TypeError(
-      `${name} must be a Vector3, {x, y, z}, [x, y, z] or a 3-element Float32Array/Float64Array, got ${String(input)}`,
+      `${name} must be a Vector3, {x, y, z}, [x, y, z] or 3-element typed array, got ${String(input)}`,
     );
   }
   if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') {
     throw new TypeError(`${name} must have numeric x, y, z, got (${typeof x}, ${typeof y}, ${typeof z})`);
   }
-  if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
+  if (!finite(x) || !finite(y) || !finite(z)) {
     throw new RangeError(`${name} must be finite, got (${x}, ${y}, ${z}); allowed: finite numbers`);
   }
   return target.set(x, y, z);

@@ -8,7 +8,11 @@ export function check(value: unknown, ok: (v: number) => boolean, name: string, 
   if (!ok(value)) throw new RangeError(`${name} must be ${allowed}, got ${value}`);
 }
 
-const finite = Number.isFinite;
+/** @internal `Number.isFinite`. */
+export const finite = Number.isFinite;
+
+/** @internal `v` is finite and > 0 (aspect, perspective near, zoom). */
+export const positive = (v: number): boolean => v > 0 && finite(v);
 
 /**
  * Validate perspective parameters.
@@ -18,10 +22,10 @@ const finite = Number.isFinite;
  */
 export function validatePerspective(fovy: number, aspect: number, near: number, far: number, zoom = 1): void {
   check(fovy, (v) => v > 0 && v < 180, 'fovy', 'in (0, 180) degrees');
-  check(aspect, (v) => v > 0 && finite(v), 'aspect', 'finite and > 0');
-  check(near, (v) => v > 0 && finite(v), 'near', 'finite and > 0');
+  check(aspect, positive, 'aspect', 'finite and > 0');
+  check(near, positive, 'near', 'finite and > 0');
   check(far, (v) => v > near && finite(v), 'far', `finite and > near (${near})`);
-  check(zoom, (v) => v > 0 && finite(v), 'zoom', 'finite and > 0');
+  check(zoom, positive, 'zoom', 'finite and > 0');
 }
 
 /**
@@ -45,5 +49,5 @@ export function validateOrthographic(
   check(bottom, (v) => finite(v) && v !== top, 'bottom', `finite and ≠ top (${top})`);
   check(near, finite, 'near', 'finite');
   check(far, (v) => v > near && finite(v), 'far', `finite and > near (${near})`);
-  check(zoom, (v) => v > 0 && finite(v), 'zoom', 'finite and > 0');
+  check(zoom, positive, 'zoom', 'finite and > 0');
 }
