@@ -1,7 +1,7 @@
 import { linearToSrgb8, type ShadeLight, type ShadeMaterial } from '@shadelab/material';
 import { compareToReference, intersectSphere, renderReference } from '@shadelab/reference';
 import fc from 'fast-check';
-import { Matrix4, OrthographicCamera, PerspectiveCamera, Ray, Sphere, Vector3 } from 'three';
+import { Euler, Matrix4, OrthographicCamera, PerspectiveCamera, Ray, Sphere, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 
 const white: [number, number, number] = [1, 1, 1];
@@ -244,6 +244,133 @@ describe('renderReference: the lecture scene (ellipsoid 2, 1, 2 under a 90° per
   });
 });
 
+/**
+ * Exact area of the disc of radius r centred at the origin inside the rectangle [x0, x1] × [y0, y1]:
+ * ∫ overlap([y0, y1], [−s(x), s(x)]) dx with s(x) = √(r² − x²), split where the overlap's form changes
+ * (x = ±√(r² − y²) for y = y0, y1), each piece integrated in closed form with
+ * ∫ s(x) dx = (x·s(x) + r²·asin(x/r)) / 2.
+ */
+function discAreaInRect(r: number, x0: number, x1: number, y0: number, y1: number): number {
+  const s = (x: number) => Math.sqrt(Math.max(r * r - x * x, 0));
+  const S = (x: number) => {
+    const c = Math.min(Math.max(x, -r), r);
+    return (c * s(c) + r * r * Math.asin(c / r)) / 2;
+  };
+  const a = Math.max(x0, -r);
+  const b = Math.min(x1, r);
+  if (!(a < b)) return 0;
+  const cuts = [a, b];
+  for (const y of [y0, y1]) {
+    if (Math.abs(y) < r) {
+      const x = Math.sqrt(r * r - y * y);
+      for (const c of [-x, x]) if (c > a && c < b) cuts.push(c);
+    }
+  }
+  cuts.sort((p, q) => p - q);
+  let area = 0;
+  for (let k = 0; k + 1 < cuts.length; k++) {
+    const [u, v] = [cuts[k], cuts[k + 1]];
+    const m = (u + v) / 2;
+    const sm = s(m);
+    const top = Math.min(y1, sm);
+    const bottom = Math.max(y0, -sm);
+    if (!(top > bottom)) continue;
+    // On this piece the top is y1 or s(x), the bottom y0 or −s(x): integrate each in closed form.
+    area += (top === y1 ? y1 * (v - u) : S(v) - S(u)) - (bottom === y0 ? y0 * (v - u) : -(S(v) - S(u)));
+  }
+  return area;
+}
+
+describe('renderReference: silhouette supersampling against the exact pixel coverage of a disc', () => {
+  // An orthographic camera with 1 world unit = 1 pixel looks at a sphere of radius R off the pixel grid: its
+  // image is the disc of radius R, and a pixel's exact coverage is the disc's area inside the pixel square.
+  const W = 40;
+  const H = 36;
+  const R = 13.37;
+  const [cx, cy] = [0.37, -0.21];
+  const camera = new OrthographicCamera(-W / 2, W / 2, H / 2, -H / 2, 1, 100);
+  camera.position.set(0, 0, 50);
+  camera.updateMatrixWorld();
+  const colour: [number, number, number] = [0.8, 0.5, 0.3];
+  const background: [number, number, number] = [0, 0, 1];
+  const render = (samples: number) =>
+    renderReference({
+      width: W,
+      height: H,
+      projectionMatrix: camera.projectionMatrix.elements,
+      viewMatrix: camera.matrixWorldInverse.elements,
+      modelMatrix: new Matrix4().makeTranslation(cx, cy, 0).elements,
+      radius: R,
+      // Ambient only: every hit has the same colour, so a pixel is exactly coverage·colour + (1 − coverage)·bg.
+      material: { ka: colour, kd: black, ks: black, shininess: 1 },
+      lights: [{ position: [0, 0, 100], ambient: white, diffuse: black, specular: black }],
+      background,
+      samples,
+    });
+  const exact = new Float64Array(W * H);
+  for (let j = 0; j < H; j++) {
+    for (let i = 0; i < W; i++) {
+      const x0 = i - W / 2 - cx;
+      const y0 = j - H / 2 - cy;
+      exact[j * W + i] = discAreaInRect(R, x0, x0 + 1, y0, y0 + 1);
+    }
+  }
+
+  it('the exact areas themselves: the pixel coverages sum to πR²', () => {
+    expect(exact.reduce((a, b) => a + b, 0)).toBeCloseTo(Math.PI * R * R, 9);
+    expect(discAreaInRect(1, -2, 2, -2, 2)).toBeCloseTo(Math.PI, 12);
+    expect(discAreaInRect(1, 0, 2, 0, 2)).toBeCloseTo(Math.PI / 4, 12);
+    expect(discAreaInRect(1, -1, 1, 0.5, 2)).toBeCloseTo(Math.PI / 3 - Math.sqrt(3) / 4, 12);
+  });
+
+  for (const samples of [4, 8, 16]) {
+    it(`${samples}×${samples} samples: every pixel within 1/(2·${samples}) of its exact coverage, the total within 0.1 %`, () => {
+      const image = render(samples);
+      let partial = 0;
+      let sumError = 0;
+      let total = 0;
+      for (let k = 0; k < W * H; k++) {
+        // A regular grid of s×s samples across a nearly straight edge miscounts at most half a sample per
+        // column: |coverage − exact| ≤ 1/(2s) (+ a margin for the edge's curvature inside one pixel).
+        expect(Math.abs(image.coverage[k] - exact[k])).toBeLessThanOrEqual(1 / (2 * samples) + 0.01);
+        if (exact[k] > 0 && exact[k] < 1) {
+          partial++;
+          sumError += Math.abs(image.coverage[k] - exact[k]);
+        }
+        total += image.coverage[k];
+      }
+      expect(partial).toBeGreaterThan(2 * Math.PI * R); // about the perimeter in pixels
+      expect(sumError / partial).toBeLessThan(1 / (4 * samples));
+      expect(Math.abs(total - Math.PI * R * R) / (Math.PI * R * R)).toBeLessThan(1e-3);
+    });
+  }
+
+  it('rgba blends the sphere and the background by coverage in linear light, then encodes sRGB', () => {
+    const image = render(4);
+    let blended = 0;
+    for (let k = 0; k < W * H; k++) {
+      const c = image.coverage[k];
+      const expected = linearToSrgb8([0, 1, 2].map((i) => c * colour[i] + (1 - c) * background[i]));
+      expect([
+        image.rgba[4 * k],
+        image.rgba[4 * k + 1],
+        image.rgba[4 * k + 2],
+        image.rgba[4 * k + 3],
+      ]).toEqual([...expected, 255]);
+      if (c > 0 && c < 1) blended++;
+      if (Math.abs(image.edgeDistance[k]) >= 1) {
+        // Away from the silhouette: the centre sample alone, the colour or the background.
+        expect(c).toBe(image.hit[k]);
+      }
+    }
+    expect(blended).toBeGreaterThan(Math.PI * R); // most of the ~8R pixels the edge crosses
+    // Not the centre sample's colour: a blended pixel lies strictly between the two.
+    const k = image.coverage.findIndex((c) => c > 0.3 && c < 0.7);
+    expect(image.rgba[4 * k + 2]).toBeGreaterThan(linearToSrgb8(colour)[2]);
+    expect(image.rgba[4 * k + 2]).toBeLessThan(255);
+  });
+});
+
 describe('renderReference against three (property)', () => {
   it('hit points and depths match three.Ray.intersectSphere for random cameras and spheres', () => {
     fc.assert(
@@ -321,7 +448,27 @@ describe('renderReference extremes', () => {
       { modelMatrix: [Number.NaN, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1] },
       RangeError,
     ],
-    ['invertible', { modelMatrix: new Matrix4().makeScale(0, 1, 1).elements }, RangeError],
+    [
+      'modelMatrix must be invertible',
+      { modelMatrix: new Matrix4().makeScale(0, 1, 1).elements },
+      RangeError,
+    ],
+    [
+      'modelMatrix must be invertible',
+      { modelMatrix: new Matrix4().makeScale(2, 1, 0).elements },
+      RangeError,
+    ],
+    [
+      'modelMatrix must be invertible',
+      { modelMatrix: new Matrix4().makeScale(0, 0, 0).elements },
+      RangeError,
+    ],
+    [
+      'modelMatrix must be invertible',
+      // Rank 2 without a zero on the diagonal: columns (1, 1, 0), (1, 1, 0), (0, 0, 1).
+      { modelMatrix: [1, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1] },
+      RangeError,
+    ],
   ])('%s is refused', (name, bad, E) => {
     expect(() => renderReference({ ...ok, ...(bad as object) })).toThrow(E);
     expect(() => renderReference({ ...ok, ...(bad as object) })).toThrow(new RegExp(name));
@@ -343,6 +490,94 @@ describe('renderReference extremes', () => {
       });
       expect(image.hit[4 * 9 + 4]).toBe(1);
       expect(image.linear.every(Number.isFinite)).toBe(true);
+    }
+  });
+});
+
+describe('renderReference: model matrices scaled by 1e-20 and 1e20', () => {
+  // The lecture scene with everything (model, camera, light) scaled by s is the same picture: the normals
+  // sign(det)·cof(M)·p are unit after normalising whatever |det| (1e-60 … 1e60), and the colours equal s = 1's.
+  const W = 64;
+  const H = 48;
+  const { material, lights } = lecture(W, H);
+  const render = (s: number, rotation = new Matrix4()) => {
+    const camera = new PerspectiveCamera(90, W / H, 0.1 * s, 10 * s);
+    camera.position.set(0, 0, 3 * s);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    return renderReference({
+      width: W,
+      height: H,
+      projectionMatrix: camera.projectionMatrix.elements,
+      viewMatrix: camera.matrixWorldInverse.elements,
+      modelMatrix: new Matrix4().makeScale(2 * s, s, 2 * s).premultiply(rotation).elements,
+      material,
+      lights: lights.map((l) => ({
+        ...l,
+        position: [l.position[0] * s, l.position[1] * s, l.position[2] * s],
+      })),
+      background: [0, 0, 1],
+    });
+  };
+  const unit = render(1);
+  for (const s of [1e-20, 1e20]) {
+    it(`scale ${s}: the same hits, colours and depths as scale 1`, () => {
+      const image = render(s);
+      expect(Array.from(image.hit)).toEqual(Array.from(unit.hit));
+      expect(unit.hit.reduce((a, b) => a + b, 0)).toBeGreaterThan(W * H * 0.2);
+      for (let k = 0; k < 3 * W * H; k++) expect(image.linear[k]).toBeCloseTo(unit.linear[k], 6);
+      for (let k = 0; k < W * H; k++) {
+        if (unit.hit[k]) expect(image.depth[k]).toBeCloseTo(unit.depth[k], 5);
+        expect(Math.abs(image.rgba[4 * k] - unit.rgba[4 * k])).toBeLessThanOrEqual(1);
+        expect(Math.abs(image.rgba[4 * k + 1] - unit.rgba[4 * k + 1])).toBeLessThanOrEqual(1);
+        expect(Math.abs(image.rgba[4 * k + 2] - unit.rgba[4 * k + 2])).toBeLessThanOrEqual(1);
+      }
+    });
+  }
+  it('rotated, and mixed scales (1e20 along one axis, 1e-20 along another): finite, and lit like the analytic ellipsoid', () => {
+    const rotation = new Matrix4().makeRotationFromEuler(new Euler(0.4, -0.7, 0.2));
+    const rotated = render(1e-20, rotation);
+    const reference = render(1, rotation);
+    expect(Array.from(rotated.hit)).toEqual(Array.from(reference.hit));
+    for (let k = 0; k < 3 * W * H; k++) expect(rotated.linear[k]).toBeCloseTo(reference.linear[k], 5);
+    // A needle: 1e20 along x, 1e-20 along y. Its normals are cof(M)·p = (1e-20·px, 1e20·py, pz) normalised.
+    const camera = ortho(2);
+    const needle = renderReference({
+      width: 16,
+      height: 16,
+      projectionMatrix: camera.projectionMatrix.elements,
+      viewMatrix: camera.matrixWorldInverse.elements,
+      modelMatrix: new Matrix4().makeScale(1e20, 1e-20, 1).elements,
+      material: { ka: black, kd: white, ks: black, shininess: 1 },
+      lights: [{ position: [0, 0, 100], ambient: black, diffuse: white, specular: black }],
+    });
+    expect(needle.linear.every(Number.isFinite)).toBe(true);
+    expect(needle.hit.some((h) => h === 1)).toBe(false); // 1e-20 high: no pixel centre hits it
+    const slab = renderReference({
+      width: 16,
+      height: 16,
+      projectionMatrix: camera.projectionMatrix.elements,
+      viewMatrix: camera.matrixWorldInverse.elements,
+      modelMatrix: new Matrix4().makeScale(1e20, 1, 1e-20).elements,
+      material: { ka: black, kd: white, ks: black, shininess: 1 },
+      lights: [{ position: [0, 0, 100], ambient: black, diffuse: white, specular: black }],
+    });
+    // A slab 1e-20 deep seen face on: every hit's normal is +z (to 1e-40), so the diffuse term is l·n = 1.
+    expect(slab.linear.every(Number.isFinite)).toBe(true);
+    for (let k = 0; k < 256; k++) {
+      if (slab.hit[k] && Math.abs(slab.edgeDistance[k]) > 1) {
+        // l from the hit (x, y, 0) to (0, 0, 100): l·n = 100 / |l|.
+        const x = (((k % 16) + 0.5) / 16) * 4 - 2;
+        const y = ((Math.floor(k / 16) + 0.5) / 16) * 4 - 2;
+        const lz = 100 / Math.hypot(x, y, 100);
+        expect(slab.linear[3 * k]).toBeCloseTo(lz, 5);
+      }
+    }
+    // 1e20 wide, 2 high: the band |y| < 1 across the whole image (it was a unit disc when the model-space ray
+    // came from (P·V·M)⁻¹, whose rounding swamped the 1e-20 components).
+    for (let k = 0; k < 256; k++) {
+      const y = ((Math.floor(k / 16) + 0.5) / 16) * 4 - 2;
+      expect(slab.hit[k]).toBe(Math.abs(y) < 1 ? 1 : 0);
     }
   });
 });

@@ -90,15 +90,16 @@ const IDENTITY: readonly number[] = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0
  * (P·V·M)⁻¹ (so perspective and orthographic cameras alike, and near/far clipping, are exact). It meets the
  * sphere by the numerically stable intersection of Ray Tracing Gems ch. 7 (see `intersectSphere`); only the
  * front surface counts (the entry point between the planes, like a mesh drawn with three's `FrontSide`). The
- * world position is M·p and the world normal sign(det)·cof(M)·p (the exact normal, also for mirrored and
- * singular M). The eye is the camera's centre of projection (a point, or a direction for orthographic).
+ * world position is M·p and the world normal sign(det)·cof(M)·p (the exact normal, also for mirrored M and
+ * for scales from 1e-20 to 1e20; a singular M, a zero scale, is refused). The eye is the camera's centre of projection (a point, or a direction for orthographic).
  *
  * Pixels are sampled at their centres, like the GPU rasteriser; the silhouette pixels are supersampled
  * (`samples`²) for the blended `rgba` and `coverage`. Cost: about one `shade` per pixel, plus samples² per
  * silhouette pixel (1280×720: about 0.4–0.7 s in Node or Chromium).
  *
- * @throws TypeError / RangeError naming the option for a bad size, sample count, radius or matrix, and a
- * RangeError when P·V·M is singular.
+ * @throws TypeError / RangeError naming the option for a bad size, sample count, radius or matrix, a
+ * RangeError naming `modelMatrix` when its 3×3 part is singular (a zero scale), and a RangeError when P·V·M
+ * is singular.
  */
 export function renderReference(options: RenderReferenceOptions): ReferenceImage {
   const {
@@ -122,16 +123,27 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
   const P = checkMatrix('projectionMatrix', projectionMatrix);
   const V = checkMatrix('viewMatrix', viewMatrix);
   const M = checkMatrix('modelMatrix', modelMatrix);
+  const nm = normalMatrix(M);
+  // det A = a0·(a1 × a2): the first column of M against the first column of its cofactor matrix.
+  const det3 = Math.abs(M[0] * nm[0] + M[1] * nm[1] + M[2] * nm[2]);
+  if (det3 === 0) {
+    throw new RangeError(
+      'renderReference: modelMatrix must be invertible (|det| of its 3×3 > 0), got determinant 0: a zero scale flattens the sphere to a disc, segment or point, which the reference does not render',
+    );
+  }
   const pv = multiply(P, V);
   const mvp = multiply(pv, M);
-  const inv = invert(mvp);
-  if (inv === null) {
+  // The ray is built in world space by (P·V)⁻¹ and taken to model space by M⁻¹ on its own, not by (P·V·M)⁻¹:
+  // an anisotropic scale (1e20 along one axis, 1e-20 along another) keeps the tiny components of the model-
+  // space direction exact instead of burying them in the rounding of the far − near difference.
+  const invPV = invert(pv);
+  const invM = invert(M);
+  if (invPV === null || invM === null) {
     throw new RangeError(
       'renderReference: projectionMatrix · viewMatrix · modelMatrix must be invertible, got a singular matrix',
     );
   }
-  const nm = normalMatrix(M);
-  const eye = eyeOfProjection(pv);
+  const eye = eyeOfCamera(P, V);
 
   const n = width * height;
   const rgba = new Uint8ClampedArray(4 * n);
@@ -145,6 +157,8 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
   const near = new Float64Array(4);
   const far = new Float64Array(4);
   const clip = new Float64Array(4);
+  const origin = new Float64Array(4);
+  const direction = new Float64Array(4);
   const position: [number, number, number] = [0, 0, 0];
   const normal: [number, number, number] = [0, 0, 0];
   const color: [number, number, number] = [0, 0, 0];
@@ -159,14 +173,19 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
   const cast = (x: number, y: number): boolean => {
     const nx = (2 * x) / width - 1;
     const ny = (2 * y) / height - 1;
-    transform4(inv, nx, ny, -1, 1, near);
-    transform4(inv, nx, ny, 1, 1, far);
-    const ox = near[0] / near[3];
-    const oy = near[1] / near[3];
-    const oz = near[2] / near[3];
-    let dx = far[0] / far[3] - ox;
-    let dy = far[1] / far[3] - oy;
-    let dz = far[2] / far[3] - oz;
+    transform4(invPV, nx, ny, -1, 1, near);
+    transform4(invPV, nx, ny, 1, 1, far);
+    const wx = near[0] / near[3];
+    const wy = near[1] / near[3];
+    const wz = near[2] / near[3];
+    transform4(invM, wx, wy, wz, 1, origin);
+    transform4(invM, far[0] / far[3] - wx, far[1] / far[3] - wy, far[2] / far[3] - wz, 0, direction);
+    const ox = origin[0];
+    const oy = origin[1];
+    const oz = origin[2];
+    let dx = direction[0];
+    let dy = direction[1];
+    let dz = direction[2];
     const len = Math.hypot(dx, dy, dz);
     dx /= len;
     dy /= len;
@@ -184,9 +203,13 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
     const q = -b - (b >= 0 ? 1 : -1) * Math.sqrt(delta);
     const t0 = q === 0 ? 0 : Math.min(c / q, q);
     if (!(t0 >= 0 && t0 <= len)) return false;
-    px = ox + t0 * dx;
-    py = oy + t0 * dy;
-    pz = oz + t0 * dz;
+    // The entry point from the ray's closest point to the centre, q − √Δ·d̂, not o + t0·d̂: with the origin far
+    // from a small sphere (the eye 1e20 model units away under a 1e-20 scale), o + t0·d̂ cancels to the
+    // rounding of |o| and can land behind the surface.
+    const s = Math.sqrt(delta);
+    px = qx - s * dx;
+    py = qy - s * dy;
+    pz = qz - s * dz;
     return true;
   };
   // Shade the last hit into `color` (linear).
@@ -272,17 +295,24 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
 }
 
 /**
- * The eye of the projection·view matrix pv as a homogeneous world point: (pv)⁻¹·(0, 0, 1, 0) is the centre of
- * projection ((position, 1) for perspective); for orthographic it is a direction, oriented towards the viewer
- * ((backward axis, 0)), as `eyeOf` in @shadelab/material gives it.
+ * The eye of the camera as a homogeneous world point: the centre of projection P⁻¹·(0, 0, 1, 0) in camera space
+ * (the origin, w ≠ 0, for perspective; a direction, w = 0, for orthographic, oriented towards the viewer as
+ * `eyeOf` in @shadelab/material gives it), then mapped to world space by V⁻¹. Deciding point or direction on
+ * P alone keeps a perspective eye a point at any distance (on P·V, an eye 1e20 from the origin has
+ * |w| < 1e-12·|xyz| and passed for a direction).
  */
-export function eyeOfProjection(pv: Mat4Like): [number, number, number, number] {
-  const inv = invert(pv);
-  if (inv === null) return [0, 0, 0, 1];
-  const e = transform4(inv, 0, 0, 1, 0);
+function eyeOfCamera(P: Mat4Like, V: Mat4Like): [number, number, number, number] {
+  const invP = invert(P);
+  const invV = invert(V);
+  if (invP === null || invV === null) return [0, 0, 0, 1];
+  const e = transform4(invP, 0, 0, 1, 0);
   const size = Math.hypot(e[0], e[1], e[2], e[3]);
-  if (Math.abs(e[3]) > 1e-12 * size) return [e[0] / e[3], e[1] / e[3], e[2] / e[3], 1];
-  // A direction: (pv)⁻¹(0,0,1,0) points away from the viewer (clip z grows with distance).
-  const len = Math.hypot(e[0], e[1], e[2]);
-  return [-e[0] / len, -e[1] / len, -e[2] / len, 0];
+  if (Math.abs(e[3]) > 1e-12 * size) {
+    const w = transform4(invV, e[0] / e[3], e[1] / e[3], e[2] / e[3], 1);
+    return [w[0] / w[3], w[1] / w[3], w[2] / w[3], 1];
+  }
+  // A direction: P⁻¹(0, 0, 1, 0) points away from the viewer (clip z grows with distance).
+  const d = transform4(invV, -e[0], -e[1], -e[2], 0);
+  const len = Math.hypot(d[0], d[1], d[2]);
+  return [d[0] / len, d[1] / len, d[2] / len, 0];
 }
