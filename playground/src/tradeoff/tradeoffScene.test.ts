@@ -1,24 +1,47 @@
+import { flatShadingGeometry } from '@shadelab/material';
 import { createImpostorQuad } from '@shadelab/material/impostor';
 import { SPHERE_BASES, SubdivisionSphereGeometry } from '@shadelab/sphere';
+import type { BufferGeometry } from 'three';
 import { describe, expect, it } from 'vitest';
 import { cheapestMeeting, paretoFront, TRADE_POINTS } from './benchData';
 import { optionCost } from './tradeoffScene';
 
 describe('optionCost', () => {
-  it("matches the geometries' real arrays (and the flat texture's 2048-texel rows)", () => {
+  /** Every buffer byte a geometry uploads: its attributes and its index. */
+  const bufferBytes = (g: BufferGeometry): number =>
+    Object.values(g.attributes).reduce((sum, a) => sum + a.array.byteLength, 0) +
+    (g.index?.array.byteLength ?? 0);
+
+  it('matches the real arrays of what setOption draws: flatShadingGeometry (V′ = T, 36 B/vertex) for flat, the indexed sphere (12 B/vertex) for gouraud and phong', () => {
     for (const base of SPHERE_BASES) {
-      for (let level = 0; level <= 5; level++) {
+      // Level 6 of the icosahedron has 81,920 flat vertices: the Uint32 index.
+      for (let level = 0; level <= (base === 'icosahedron' ? 6 : 5); level++) {
         const indexed = new SubdivisionSphereGeometry({ base, level, normals: 'none', indexed: true });
-        const smooth = optionCost({ shading: 'phong', base, level });
         const index = indexed.index?.array as Uint16Array | Uint32Array;
-        expect(smooth.bytes).toBe(indexed.getAttribute('position').array.byteLength + index.byteLength);
-        expect(smooth.triangles).toBe(index.length / 3);
-        expect(smooth.vertices).toBe(indexed.getAttribute('position').count);
-        const soup = new SubdivisionSphereGeometry({ base, level, normals: 'none', indexed: false });
+        for (const shading of ['gouraud', 'phong'] as const) {
+          const smooth = optionCost({ shading, base, level });
+          expect(Object.keys(indexed.attributes)).toEqual(['position']);
+          expect(smooth.bytes).toBe(bufferBytes(indexed));
+          expect(smooth.triangles).toBe(index.length / 3);
+          expect(smooth.vertices).toBe(indexed.getAttribute('position').count);
+          expect(smooth.bytesPerVertex).toBe(12);
+        }
+        const faces = flatShadingGeometry(indexed);
         const flat = optionCost({ shading: 'flat', base, level });
-        const count = soup.getAttribute('position').count;
+        const count = faces.getAttribute('position').count;
+        // V′ = T on a subdivision sphere, but for one duplicate on the bare octahedron and icosahedron.
+        expect(count).toBe(flat.triangles + (level === 0 && base !== 'tetrahedron' ? 1 : 0));
         expect(flat.vertices).toBe(count);
-        expect(flat.bytes).toBe(count * 12 + 2048 * Math.ceil(count / 2048) * 12);
+        expect(flat.bytes).toBe(bufferBytes(faces));
+        expect(flat.bytesPerVertex).toBe(
+          Object.values(faces.attributes).reduce((sum, a) => sum + a.array.BYTES_PER_ELEMENT * a.itemSize, 0),
+        );
+        expect(flat.bytesPerVertex).toBe(36);
+        expect(faces.index?.array.BYTES_PER_ELEMENT).toBe(count <= 65536 ? 2 : 4);
+        if (level > 0) expect(flat.bytesPerTriangle).toBe(count <= 65536 ? 42 : 48);
+        expect(flat.bytesPerTriangle).toBe(flat.bytes / flat.triangles);
+        faces.dispose();
+        indexed.dispose();
       }
     }
     const quad = createImpostorQuad();

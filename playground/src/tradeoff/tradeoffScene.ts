@@ -2,6 +2,8 @@
 // sphere (ellipsoid) drawn by one option (a subdivision mesh with flat, Gouraud or Phong shading, or the
 // ray-cast impostor), and the exact reference image of the same view.
 import {
+  type Attenuation,
+  flatShadingGeometry,
   type Lighting,
   PhongLight,
   type ShadeLight,
@@ -26,6 +28,20 @@ export type TradeOption =
   | { readonly shading: 'flat' | 'gouraud' | 'phong'; readonly base: SphereBase; readonly level: number }
   | { readonly shading: 'impostor' };
 
+/** One Phong light of a {@link TradeView} (linear RGB; `PhongLight`'s defaults, the lecture's). */
+export interface TradeLight {
+  /** World position. */
+  position: [number, number, number];
+  /** @default [0.2, 0.2, 0.2] */
+  ambient?: [number, number, number];
+  /** @default [1, 1, 1] */
+  diffuse?: [number, number, number];
+  /** @default [0.8, 0.8, 0.8] */
+  specular?: [number, number, number];
+  /** @default { a: 1, b: 0, c: 0 } (none) */
+  attenuation?: Partial<Attenuation>;
+}
+
 /** The view and lighting (the lecture's scene by default). */
 export interface TradeView {
   width: number;
@@ -40,8 +56,14 @@ export interface TradeView {
   scale?: [number, number, number];
   /** Euler angles, radians. @default [0, 0, 0] */
   rotation?: [number, number, number];
-  /** @default [-5, 10, 20] */
+  /** The position of the one default light. @default [-5, 10, 20] */
   light?: [number, number, number];
+  /** Every light, with its intensities and attenuation; replaces `light` when given. */
+  lights?: TradeLight[];
+  /** Near plane distance. @default 0.1 */
+  near?: number;
+  /** Far plane distance. @default max(10, 2·|eye| + 4) */
+  far?: number;
   /** @default 'phong' */
   lighting?: Lighting;
   /** @default 0 */
@@ -61,6 +83,8 @@ export interface OptionCost {
   bytes: number;
   /** Bytes per vertex of the attributes the shading reads. */
   bytesPerVertex: number;
+  /** Buffer bytes per triangle (index included). */
+  bytesPerTriangle: number;
 }
 
 /** The background: pure blue, a colour the shading never produces (so coverage is exact). */
@@ -70,30 +94,31 @@ export function optionKey(option: TradeOption): string {
   return option.shading === 'impostor' ? 'impostor' : `${option.shading} ${option.base} ${option.level}`;
 }
 
-const FACE_TEXTURE_WIDTH = 2048;
-
 /** Triangles, vertices and bytes of an option, from the sphere counts (no geometry built). */
 export function optionCost(option: TradeOption): OptionCost {
-  if (option.shading === 'impostor')
-    return { triangles: 2, vertices: 4, bytes: 4 * 12 + 6 * 2, bytesPerVertex: 12 };
-  const { triangles } = sphereCounts(option.base, option.level);
-  if (option.shading === 'flat') {
-    // Non-indexed positions, plus the same positions in an RGB32F texture rows of 2048 texels.
-    const vertices = 3 * triangles;
-    const texture = FACE_TEXTURE_WIDTH * Math.ceil(vertices / FACE_TEXTURE_WIDTH) * 12;
-    return { triangles, vertices, bytes: vertices * 12 + texture, bytesPerVertex: 24 };
+  if (option.shading === 'impostor') {
+    return { triangles: 2, vertices: 4, bytes: 4 * 12 + 6 * 2, bytesPerVertex: 12, bytesPerTriangle: 30 };
   }
-  // Indexed positions only (exact sphere normals from the position), Uint16 or Uint32 indices.
-  const vertices = 2 + triangles / 2;
+  const { triangles } = sphereCounts(option.base, option.level);
+  // flatShadingGeometry gives every face a provoking vertex of its own: on a subdivision sphere V′ = T (its
+  // greedy pass duplicates one corner of the bare octahedron and icosahedron, level 0: V′ = T + 1), each with
+  // its position and the face's two other corners (36 B). Gouraud and Phong read the position only (exact
+  // sphere normals from it): V = 2 + T/2 shared vertices of 12 B. Uint16 indices while they fit.
+  const flat = option.shading === 'flat';
+  const duplicated = option.level === 0 && option.base !== 'tetrahedron' ? 1 : 0;
+  const vertices = flat ? triangles + duplicated : 2 + triangles / 2;
+  const bytesPerVertex = flat ? 36 : 12;
   const indexBytes = vertices <= 65536 ? 2 : 4;
-  return { triangles, vertices, bytes: vertices * 12 + 3 * triangles * indexBytes, bytesPerVertex: 12 };
+  const bytes = vertices * bytesPerVertex + 3 * triangles * indexBytes;
+  return { triangles, vertices, bytes, bytesPerVertex, bytesPerTriangle: bytes / triangles };
 }
 
 /** Renderer, scene and the objects of the trade, on one canvas. */
 export class TradeoffScene {
   readonly renderer: WebGLRenderer;
   readonly scene = new Scene();
-  readonly light = new PhongLight();
+  /** The lights of the current view (`setView` adds or removes them). */
+  lights: PhongLight[] = [new PhongLight()];
   camera: Camera = new PerspectiveCamera();
   readonly meshMaterial = new ShadingMaterial();
   readonly impostorMaterial = new SphereImpostorMaterial();
@@ -112,9 +137,9 @@ export class TradeoffScene {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true, ...depth });
     this.renderer.setPixelRatio(1);
     this.renderer.setClearColor(BACKGROUND, 1);
-    this.meshMaterial.phongLights = [this.light];
-    this.impostorMaterial.phongLights = [this.light];
-    this.scene.add(this.light, this.mesh, this.impostor);
+    this.meshMaterial.phongLights = this.lights;
+    this.impostorMaterial.phongLights = this.lights;
+    this.scene.add(...this.lights, this.mesh, this.impostor);
   }
 
   /** Set the view (camera, model transform, light and material options). */
@@ -126,12 +151,12 @@ export class TradeoffScene {
     }
     const aspect = v.width / v.height;
     // The lecture's near 0.1 and far 10, pushed out when the eye is farther (zoomed out).
-    const far = Math.max(10, 2 * Math.hypot(...v.eye) + 4);
+    const { near, far } = v;
     if (v.projection === 'orthographic') {
       const h = 1.5;
-      this.camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, 0.1, far);
+      this.camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, near, far);
     } else {
-      this.camera = new PerspectiveCamera(v.fovy, aspect, 0.1, far);
+      this.camera = new PerspectiveCamera(v.fovy, aspect, near, far);
     }
     this.camera.position.set(...v.eye);
     this.camera.lookAt(0, 0, 0);
@@ -140,7 +165,21 @@ export class TradeoffScene {
       object.scale.set(...v.scale);
       object.rotation.set(...v.rotation);
     }
-    this.light.position.set(...v.light);
+    if (this.lights.length !== v.lights.length) {
+      this.scene.remove(...this.lights);
+      this.lights = v.lights.map(() => new PhongLight());
+      this.scene.add(...this.lights);
+      this.meshMaterial.phongLights = this.lights;
+      this.impostorMaterial.phongLights = this.lights;
+    }
+    v.lights.forEach((l, i) => {
+      const light = this.lights[i];
+      light.position.set(...l.position);
+      light.ambient = l.ambient ?? [0.2, 0.2, 0.2];
+      light.diffuse = l.diffuse ?? [1, 1, 1];
+      light.specular = l.specular ?? [0.8, 0.8, 0.8];
+      light.attenuation = { a: 1, b: 0, c: 0, ...l.attenuation };
+    });
     this.scene.updateMatrixWorld();
     for (const m of [this.meshMaterial, this.impostorMaterial]) {
       m.lighting = v.lighting;
@@ -160,16 +199,20 @@ export class TradeoffScene {
     this.mesh.visible = !impostor;
     if (option.shading === 'impostor') return;
     this.meshMaterial.shading = option.shading;
+    // Flat shading draws flatShadingGeometry of the indexed sphere (each face lit once, on a provoking
+    // vertex of its own), as the library recommends; Gouraud and Phong the indexed sphere itself.
     const flat = option.shading === 'flat';
     const key = `${option.base}/${option.level}/${flat}`;
     let g = this.#geometries.get(key);
     if (g === undefined) {
-      g = new SubdivisionSphereGeometry({
+      const sphere = new SubdivisionSphereGeometry({
         base: option.base,
         level: option.level,
         normals: 'none',
-        indexed: !flat,
+        indexed: true,
       });
+      g = flat ? flatShadingGeometry(sphere) : sphere;
+      if (flat) sphere.dispose();
       this.#geometries.set(key, g);
     }
     this.mesh.geometry = g;
@@ -209,17 +252,16 @@ export class TradeoffScene {
       lighting: m.lighting,
       celBands: m.celBands,
     };
-    const l = this.light;
-    const e = l.matrixWorld.elements;
-    const lights: ShadeLight[] = [
-      {
+    const lights: ShadeLight[] = this.lights.map((l) => {
+      const e = l.matrixWorld.elements;
+      return {
         position: [e[12], e[13], e[14]],
         ambient: [l.ambient.r, l.ambient.g, l.ambient.b],
         diffuse: [l.diffuse.r, l.diffuse.g, l.diffuse.b],
         specular: [l.specular.r, l.specular.g, l.specular.b],
         attenuation: l.attenuation,
-      },
-    ];
+      };
+    });
     const image = renderReference({
       width: this.view.width,
       height: this.view.height,
@@ -253,6 +295,9 @@ function resolveView({
   scale = [2, 1, 2],
   rotation = [0, 0, 0],
   light = [-5, 10, 20],
+  lights = [{ position: light }],
+  near = 0.1,
+  far = Math.max(10, 2 * Math.hypot(...eye) + 4),
   lighting = 'phong',
   celBands = 0,
   shininess = 32,
@@ -269,6 +314,9 @@ function resolveView({
     scale,
     rotation,
     light,
+    lights,
+    near,
+    far,
     lighting,
     celBands,
     shininess,
