@@ -63,15 +63,80 @@ test('two surfaces 1 unit apart at z = 1e4 (near 0.01, far 1e6): which depth mod
   await open(page);
   const result = await page.evaluate(() => {
     const d = window.cameraDepth;
-    const modes = ['standard', 'logarithmic', 'reversed', 'reversed-float'] as const;
+    const modes = [
+      'standard',
+      'logarithmic',
+      'reversed',
+      'reversed-or-logarithmic',
+      'reversed-float',
+    ] as const;
     return Object.fromEntries(modes.map((m) => [m, [d.activeMode(m), d.kept(m, 0.01, 1e6, 1e4, 1e-4)]]));
   });
   expect(result).toEqual({
     standard: ['standard', 'far'], // standard depth loses Δz/z = 1e-4 at z/near = 1e6 (it needs ≈ 6e-8 · z/near)
     logarithmic: ['logarithmic', 'near'],
     reversed: ['reversed', 'near'], // EXT_clip_control is available under SwiftShader
+    'reversed-or-logarithmic': ['reversed', 'near'], // …so three takes reversed-Z and ignores the logarithmic switch
     'reversed-float': ['reversed', 'near'],
   });
+});
+
+test('without EXT_clip_control: reversed-or-logarithmic runs logarithmic and keeps the 1e4 order; plain reversed falls back to standard', async ({
+  page,
+}) => {
+  // Hide the extension from every WebGL2 context of the page before any script runs.
+  await page.addInitScript(() => {
+    const proto = WebGL2RenderingContext.prototype;
+    const getExtension = proto.getExtension;
+    const getSupportedExtensions = proto.getSupportedExtensions;
+    proto.getExtension = function (this: WebGL2RenderingContext, name: string) {
+      return name === 'EXT_clip_control' ? null : getExtension.call(this, name as never);
+    } as typeof getExtension;
+    proto.getSupportedExtensions = function (this: WebGL2RenderingContext) {
+      return getSupportedExtensions.call(this)?.filter((n) => n !== 'EXT_clip_control') ?? null;
+    };
+  });
+  await open(page);
+  const result = await page.evaluate(() => {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const d = window.cameraDepth;
+    const modes = ['standard', 'reversed', 'reversed-or-logarithmic', 'reversed-float'] as const;
+    return {
+      hidden:
+        gl !== null &&
+        gl.getExtension('EXT_clip_control') === null &&
+        !gl.getSupportedExtensions()?.includes('EXT_clip_control'),
+      ...Object.fromEntries(modes.map((m) => [m, [d.activeMode(m), d.kept(m, 0.01, 1e6, 1e4, 1e-4)]])),
+    };
+  });
+  expect(result).toEqual({
+    hidden: true,
+    standard: ['standard', 'far'],
+    reversed: ['standard', 'far'], // three's fallback: the least precise mode, the order is lost
+    'reversed-or-logarithmic': ['logarithmic', 'near'],
+    'reversed-float': ['standard', 'far'], // a float depth buffer alone does not help standard depth here
+  });
+});
+
+test("Camera through three's shaders: a Phong sphere's pixels equal OrthographicCamera's and PerspectiveCamera's", async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => ({
+    orthographic: window.cameraCompare('orthographic'),
+    perspective: window.cameraCompare('perspective'),
+  }));
+  for (const kind of ['orthographic', 'perspective'] as const) {
+    const r = result[kind];
+    expect(r.differing, kind).toBe(0); // every byte of the 96 × 96 picture
+    expect(r.brightest, `${kind}: a white specular highlight is in the picture`).toBeGreaterThan(200);
+    expect(r.lit, `${kind}: the sphere covers a good part of it`).toBeGreaterThan(1000);
+  }
+  expect(result.orthographic.isOrthographicCamera).toBe(true);
+  expect(result.perspective.isOrthographicCamera).toBe(false);
+  // The comparison can see the flag: the same orthographic matrices through a camera that is not flagged
+  // orthographic are shaded differently (three's isOrthographic uniform sets the specular view direction).
+  expect(result.orthographic.flaglessDiffering).toBeGreaterThan(0);
 });
 
 test('ShadingMaterial keeps the same depth modes, alone and next to three materials (it writes logarithmic depth like them)', async ({

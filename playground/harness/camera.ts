@@ -4,21 +4,36 @@
 // 2. `window.cameraDepth`: renders two overlapping quads (red near, green farther, drawn last) in each depth mode
 //    and reads the centre pixel, to measure which separations stay in the right order; the quads are drawn with
 //    three's MeshBasicMaterial, @shadelab/material's ShadingMaterial, or one of each.
-import { Camera, CameraMovement, type DepthMode, depthBufferParameters, depthModeOf } from '@shadelab/camera';
+// 3. `window.cameraCompare`: a MeshPhongMaterial sphere with a specular highlight rendered through Camera and
+//    through three's own OrthographicCamera / PerspectiveCamera with the same parameters, pixels compared.
+import {
+  Camera,
+  CameraMovement,
+  type DepthMode,
+  type DepthModeRequest,
+  depthBufferParameters,
+  depthModeOf,
+} from '@shadelab/camera';
 import { PhongLight, ShadingMaterial } from '@shadelab/material';
 import {
+  AmbientLight,
   BoxGeometry,
   Color,
   DepthTexture,
+  DirectionalLight,
   FloatType,
   GridHelper,
   type Material,
   Mesh,
   MeshBasicMaterial,
   MeshNormalMaterial,
+  MeshPhongMaterial,
+  OrthographicCamera,
+  PerspectiveCamera,
   PlaneGeometry,
   Scene,
-  UnsignedIntType,
+  SphereGeometry,
+  Camera as ThreeCamera,
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
@@ -58,10 +73,12 @@ render();
 
 // ── 2. depth-order probe ─────────────────────────────────────────────────────────────────────────────────────
 /**
- * Depth modes probed: the three DepthModes into the canvas's default depth buffer, and standard/reversed into a
- * render target with an explicit 32-bit float (`-float`) or 24-bit fixed-point (`-fixed24`) depth texture.
+ * Depth modes probed: every DepthModeRequest into the canvas's default depth buffer, and standard/reversed into a
+ * render target with an explicit 32-bit float depth texture (`-float`). (Headless Chromium's SwiftShader stores
+ * every depth format, the canvas's 24-bit one included, as 32-bit float; a 24-bit fixed-point depth texture
+ * measured the same as the float one, so it is not probed.)
  */
-type ProbeMode = DepthMode | `${'standard' | 'reversed'}-${'float' | 'fixed24'}`;
+type ProbeMode = DepthModeRequest | `${'standard' | 'reversed'}-float`;
 
 interface Probe {
   renderer: WebGLRenderer;
@@ -101,7 +118,8 @@ const pixel = new Uint8Array(4);
 function probe(mode: ProbeMode): Probe {
   let p = probes.get(mode);
   if (p) return p;
-  const [base, buffer] = mode.split('-') as [DepthMode, 'float' | 'fixed24' | undefined];
+  const float = mode.endsWith('-float');
+  const base = (float ? mode.slice(0, -'-float'.length) : mode) as DepthModeRequest;
   const c = document.createElement('canvas');
   c.width = SIZE;
   c.height = SIZE;
@@ -110,10 +128,10 @@ function probe(mode: ProbeMode): Probe {
   r.setSize(SIZE, SIZE, false);
   r.sortObjects = false;
   let target: WebGLRenderTarget | null = null;
-  if (buffer !== undefined) {
+  if (float) {
     target = new WebGLRenderTarget(SIZE, SIZE, {
       depthBuffer: true,
-      depthTexture: new DepthTexture(SIZE, SIZE, buffer === 'float' ? FloatType : UnsignedIntType),
+      depthTexture: new DepthTexture(SIZE, SIZE, FloatType),
     });
   }
   p = { renderer: r, target, active: depthModeOf(r) };
@@ -207,21 +225,103 @@ export interface CameraDepthProbe {
 }
 export type { ProbeMode, QuadMaterials };
 
+// ── 3. Camera vs three's cameras through three's shaders ──────────────────────────────────────────────────────
+const COMPARE = 96;
+const compareCanvas = document.createElement('canvas');
+const compareRenderer = new WebGLRenderer({ canvas: compareCanvas, antialias: false });
+compareRenderer.setPixelRatio(1);
+compareRenderer.setSize(COMPARE, COMPARE, false);
+const sphereScene = new Scene();
+sphereScene.background = new Color(0x000000);
+sphereScene.add(
+  new Mesh(
+    new SphereGeometry(1, 64, 32),
+    new MeshPhongMaterial({ color: 0x3060c0, specular: 0xffffff, shininess: 40 }),
+  ),
+);
+const sun = new DirectionalLight(0xffffff, 2);
+sun.position.set(-2, 3, 4);
+sphereScene.add(sun, new AmbientLight(0xffffff, 0.1));
+const EYE = [2.5, 1.5, 3] as const;
+
+/** Render the sphere scene through `camera` and read every pixel back. */
+function pixels(camera: ThreeCamera): Uint8Array {
+  const out = new Uint8Array(COMPARE * COMPARE * 4);
+  compareRenderer.render(sphereScene, camera);
+  const gl = compareRenderer.getContext();
+  gl.readPixels(0, 0, COMPARE, COMPARE, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  return out;
+}
+
+const differing = (a: Uint8Array, b: Uint8Array) => a.reduce((n, x, i) => n + (x === b[i] ? 0 : 1), 0);
+
+/**
+ * The sphere through Camera and through three's camera of the same kind and parameters (the lecture's
+ * `setOrthographic(r, l, t, b, n, f)` = three's `OrthographicCamera(l, r, t, b, n, f)`), both placed with
+ * lookAt(eye, origin, +y). `flagless` renders three's camera's matrices through a bare THREE.Camera (neither
+ * isPerspectiveCamera nor isOrthographicCamera), to show that the flag changes the shading (three's `isOrthographic`
+ * uniform: the view direction of the specular term).
+ */
+function compare(kind: 'orthographic' | 'perspective'): {
+  differing: number;
+  flaglessDiffering: number;
+  brightest: number;
+  lit: number;
+  isOrthographicCamera: boolean;
+} {
+  const ours = new Camera();
+  let three: OrthographicCamera | PerspectiveCamera;
+  if (kind === 'orthographic') {
+    ours.setOrthographic(1.6, -1.4, 1.3, -1.5, 0.5, 10);
+    three = new OrthographicCamera(-1.4, 1.6, 1.3, -1.5, 0.5, 10);
+  } else {
+    ours.setPerspective(35, 1, 0.5, 10);
+    three = new PerspectiveCamera(35, 1, 0.5, 10);
+  }
+  ours.lookAt(EYE, [0, 0, 0], [0, 1, 0]);
+  three.position.set(...EYE);
+  three.lookAt(0, 0, 0);
+  three.updateMatrixWorld();
+  const flagless = new ThreeCamera();
+  flagless.matrixAutoUpdate = false;
+  flagless.matrixWorld.copy(three.matrixWorld);
+  flagless.matrixWorldInverse.copy(three.matrixWorldInverse);
+  flagless.projectionMatrix.copy(three.projectionMatrix);
+  flagless.projectionMatrixInverse.copy(three.projectionMatrixInverse);
+  const a = pixels(ours);
+  const b = pixels(three);
+  const c = pixels(flagless);
+  let brightest = 0;
+  let lit = 0;
+  for (let i = 0; i < a.length; i += 4) {
+    brightest = Math.max(brightest, Math.min(a[i], a[i + 1], a[i + 2])); // white highlight: all channels high
+    if (a[i] + a[i + 1] + a[i + 2] > 0) lit++;
+  }
+  return {
+    differing: differing(a, b),
+    flaglessDiffering: differing(b, c),
+    brightest,
+    lit,
+    isOrthographicCamera: ours.isOrthographicCamera,
+  };
+}
+
 declare global {
   interface Window {
     cameraDepth: CameraDepthProbe;
+    cameraCompare: typeof compare;
   }
 }
+window.cameraCompare = compare;
 
 window.cameraDepth = {
   modes: [
     'standard',
     'logarithmic',
     'reversed',
+    'reversed-or-logarithmic',
     'standard-float',
     'reversed-float',
-    'standard-fixed24',
-    'reversed-fixed24',
   ],
   activeMode: (mode) => probe(mode).active,
   kept,
