@@ -2,7 +2,14 @@ import { Leva } from 'leva';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
-import { COMPARE_COLUMNS, compareLayout, type Layout, type SectionErrors, Viewer } from './engine/Viewer';
+import {
+  COMPARE_COLUMNS,
+  compareLayout,
+  type Layout,
+  type SectionErrors,
+  TURN_KEYS_TEXT,
+  Viewer,
+} from './engine/Viewer';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
   DEPTH_MODES,
@@ -210,7 +217,7 @@ export function App() {
           data-testid="viewport"
           tabIndex={0}
           role="img"
-          aria-label={`Lit sphere. Drag to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
+          aria-label={`Lit sphere. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
           onPointerDown={(e) => e.currentTarget.focus()}
         />
         {state.view === 'compare' && (
@@ -254,7 +261,7 @@ export function App() {
         </div>
         <Stats feed={feed} />
         <p className="hint">
-          Drag: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
+          Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>

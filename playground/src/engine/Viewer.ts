@@ -30,8 +30,10 @@ import {
   setCameraOrthographic,
   setCameraPerspective,
   setCameraView,
+  setOutlineColor,
   setOutlineWidth,
   setTrackballMapping,
+  setTrackballRadius,
   setTrackballRotation,
   setTrackballZoomLimits,
   sphereErrorPx,
@@ -51,9 +53,14 @@ export interface FrameStats {
   cpuMs: number;
   /** GPU time of a recent frame (EXT_disjoint_timer_query_webgl2), ms; null without the extension. */
   gpuMs: number | null;
+  /** Triangles drawn in the frame (every cell of the compare view, outlines included; three's count). */
   triangles: number;
+  /** Vertices drawn in the frame, summed like `triangles` over every draw of the sphere and its outline. */
   vertices: number;
+  /** Bytes of the sphere's vertex and index buffers on the GPU (a buffer shared by several cells counts once). */
   bufferBytes: number;
+  /** Cells drawn (4 in the compare view). */
+  cells: number;
   programs: number;
   /** The depth mode the renderer runs. */
   depth: DepthMode;
@@ -107,7 +114,26 @@ export function compareLayout(width: number, height: number): Layout {
   return width / height >= 2 ? { cols: COMPARE_COLUMNS.length, rows: 1 } : { cols: 2, rows: 2 };
 }
 
+/**
+ * Keys that turn the sphere (the keyboard's trackball), by `KeyboardEvent.code`: an axis of the camera's frame
+ * and a sign. None is one of @shadelab/camera's MOVEMENT_KEYS (WASD, arrows, E/Q, PageUp/PageDown).
+ */
+export const TURN_KEYS: Readonly<Record<string, readonly [axis: 'u' | 'v', sign: 1 | -1]>> = {
+  KeyJ: ['v', -1],
+  KeyL: ['v', 1],
+  KeyI: ['u', -1],
+  KeyK: ['u', 1],
+};
+
+/** The turn keys as the page documents them. */
+export const TURN_KEYS_TEXT = 'J/L, I/K';
+
+/** One turn key press, radians (times the trackball's rotate speed). */
+export const TURN_STEP = Math.PI / 36;
+
 const _size = /* @__PURE__ */ new THREE.Vector2();
+const _axis = /* @__PURE__ */ new THREE.Vector3();
+const _turn = /* @__PURE__ */ new THREE.Quaternion();
 const _pixel = /* @__PURE__ */ new Uint8Array(4);
 
 export class Viewer {
@@ -134,7 +160,7 @@ export class Viewer {
   private readonly markerMaterial = new THREE.MeshBasicMaterial({ color: 0xffee88 });
   /** Sphere geometries of the current base and level, by {@link sphereKey}. */
   private geometries = new Map<string, THREE.BufferGeometry>();
-  private sphere: { base: PlaygroundState['sphere']['base']; level: number } | null = null;
+  private sphere: { base: PlaygroundState['sphere']['base']; level: number; radius: number } | null = null;
   private reportedVariant = '';
   private state: PlaygroundState | null = null;
   private errors: SectionErrors = {};
@@ -203,7 +229,25 @@ export class Viewer {
     this.probe = new ShaderProbe(this.renderer);
     canvas.addEventListener('webglcontextlost', this.onContextLost);
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
+    canvas.addEventListener('keydown', this.onKeyDown);
   }
+
+  /**
+   * J/L turn the sphere about the camera's up axis v, I/K about its right axis u (as a drag right or down
+   * would), {@link TURN_STEP} · rotate speed per press.
+   */
+  private readonly onKeyDown = (event: KeyboardEvent) => {
+    const key = TURN_KEYS[event.code];
+    if (!key || event.ctrlKey || event.metaKey || event.altKey || !this.state) return;
+    event.preventDefault();
+    this.camera.updateMatrixWorld();
+    _axis.setFromMatrixColumn(this.camera.matrixWorld, key[0] === 'u' ? 0 : 1).normalize();
+    _turn.setFromAxisAngle(_axis, key[1] * TURN_STEP * this.state.trackball.rotateSpeed);
+    this.pivot.quaternion.premultiply(_turn).normalize();
+    this.pivot.updateMatrixWorld(true);
+    this.requestRender();
+    this.onViewEnd();
+  };
 
   private readonly onGizmoDragging = (event: { value: unknown }) => {
     this.trackball.enabled = !event.value && !this.state?.camera.dragTurns;
@@ -338,14 +382,17 @@ export class Viewer {
         });
         applyImpostorMaterial(this.impostor, state.material, this.lights);
         setOutlineWidth(this.outline, state.material.outlineWidth);
+        setOutlineColor(this.outline, state.material.outlineColor);
         this.captureGenerated();
       });
     }
     this.state = state;
     attempt('model', () => {
       const [x, y, z] = state.model.scale;
+      const r = state.sphere.radius;
       this.mesh.scale.set(x, y, z);
-      this.impostor.scale.set(x, y, z);
+      // The impostor is a unit sphere: the radius is part of its scale (the mesh's is in its geometry).
+      this.impostor.scale.set(x * r, y * r, z * r);
     });
     attempt('camera', () => this.applyCamera(state));
     attempt('sphere', () => this.applySphere(state));
@@ -356,9 +403,10 @@ export class Viewer {
       setTrackballZoomLimits(this.trackball, state.trackball.minZoom, state.trackball.maxZoom);
       this.trackball.dampingFactor = state.trackball.dampingFactor;
       this.trackball.enableDamping = state.trackball.damping;
+      setTrackballRadius(this.trackball, state.trackball.radius);
       const current = getTrackballRotation(this.pivot);
       if (current.some((c, i) => Math.abs(c - state.trackball.rotation[i]!) > 1e-12)) {
-        setTrackballRotation(this.pivot, state.trackball.rotation);
+        setTrackballRotation(this.trackball, this.pivot, state.trackball.rotation);
       }
     });
     attempt('camera movement', () => {
@@ -436,11 +484,12 @@ export class Viewer {
     const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
     const { rows } = this.layout();
     this.pivot.updateMatrixWorld(true);
-    return sphereRadiusPx(this.camera, this.mesh.matrixWorld, h / rows);
+    return sphereRadiusPx(this.camera, this.mesh.matrixWorld, h / rows, this.state!.sphere.radius);
   }
 
   private applySphere(state: PlaygroundState) {
     let { base, level } = state.sphere;
+    const { radius } = state.sphere;
     this.lastDetail = null;
     if (state.sphere.auto) {
       this.lastDetail = chooseDetail(this.radiusPx(), state.sphere.maxErrorPx);
@@ -451,20 +500,21 @@ export class Viewer {
     // Build first (a refused level throws here and the previous sphere stays), then swap.
     const wanted = new Map<string, THREE.BufferGeometry>();
     for (const shading of shadings) {
-      const key = sphereKey(base, level, shading);
+      const key = sphereKey(base, level, shading, radius);
       if (wanted.has(key)) continue;
-      wanted.set(key, this.geometries.get(key) ?? createSphere(base, level, shading));
+      wanted.set(key, this.geometries.get(key) ?? createSphere(base, level, shading, radius));
     }
     for (const [key, geometry] of this.geometries) if (!wanted.has(key)) geometry.dispose();
     this.geometries = wanted;
-    this.sphere = { base, level };
+    this.sphere = { base, level, radius };
     this.applyGeometry(state.material.shading);
   }
 
   /** Puts the sphere geometry for `shading` on the mesh (and its outline). */
   private applyGeometry(shading: PlaygroundState['material']['shading']) {
     if (!this.sphere) return;
-    const geometry = this.geometries.get(sphereKey(this.sphere.base, this.sphere.level, shading));
+    const { base, level, radius } = this.sphere;
+    const geometry = this.geometries.get(sphereKey(base, level, shading, radius));
     if (!geometry) return;
     this.mesh.geometry = geometry;
     this.outline.geometry = geometry;
@@ -595,9 +645,15 @@ export class Viewer {
     const impostor = state.sphere.render === 'impostor';
     this.mesh.visible = !impostor || cols * rows > 1;
     this.impostor.visible = impostor && cols * rows === 1;
+    this.drawn = [];
     if (cols * rows === 1) {
       this.mesh.material = this.material;
       this.applyGeometry(state.material.shading);
+      this.drawn.push(
+        impostor
+          ? { geometry: this.impostor.geometry, outline: false }
+          : { geometry: this.mesh.geometry, outline: this.outline.visible },
+      );
       updateMaterialLights(this.material);
       renderer.setScissorTest(false);
       renderer.setViewport(0, 0, w, h);
@@ -611,6 +667,7 @@ export class Viewer {
         this.mesh.material = material;
         this.applyGeometry(COMPARE_COLUMNS[i]!.shading);
         this.outline.visible = COMPARE_COLUMNS[i]!.cel && state.material.outline;
+        this.drawn.push({ geometry: this.mesh.geometry, outline: this.outline.visible });
         updateMaterialLights(material);
         const col = i % cols;
         const row = Math.floor(i / cols);
@@ -639,21 +696,33 @@ export class Viewer {
     for (const material of this.compareMaterials) material.dispose();
   }
 
+  /** The geometries of the last frame's sphere draws (one per cell), and whether each cell drew an outline. */
+  private drawn: { geometry: THREE.BufferGeometry; outline: boolean }[] = [];
+
   private stats(cpuMs: number): FrameStats {
-    const geometry = this.mesh.geometry;
+    const buffers = new Set<ArrayBufferLike | THREE.TypedArray>();
     let bufferBytes = 0;
-    for (const attribute of Object.values(geometry.attributes)) {
-      bufferBytes += (attribute as THREE.BufferAttribute).array.byteLength;
+    let vertices = 0;
+    for (const { geometry, outline } of this.drawn) {
+      const arrays = Object.values(geometry.attributes).map((a) => (a as THREE.BufferAttribute).array);
+      if (geometry.index) arrays.push(geometry.index.array);
+      for (const array of arrays) {
+        if (buffers.has(array)) continue;
+        buffers.add(array);
+        bufferBytes += array.byteLength;
+      }
+      // The outline draws the same geometry again.
+      vertices += (geometry.attributes['position']?.count ?? 0) * (outline ? 2 : 1);
     }
-    if (geometry.index) bufferBytes += geometry.index.array.byteLength;
     const info = this.renderer.info;
     return {
       frames: this.frames,
       cpuMs,
       gpuMs: this.gpuMs,
       triangles: info.render.triangles,
-      vertices: geometry.attributes['position']?.count ?? 0,
+      vertices,
       bufferBytes,
+      cells: this.drawn.length,
       programs: info.programs?.length ?? 0,
       depth: this.depth,
       detail: this.lastDetail,
@@ -711,6 +780,7 @@ export class Viewer {
     if (this.scheduled) cancelAnimationFrame(this.scheduled);
     this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
+    this.canvas.removeEventListener('keydown', this.onKeyDown);
     this.trackball.removeEventListener('change', this.onTrackballChange);
     this.trackball.removeEventListener('end', this.onTrackballEnd);
     cancelAnimationFrame(this.spinFrame);

@@ -32,8 +32,13 @@ import type {
  * The unit sphere for `shading`, indexed with no normal attribute (analytic normals); for flat shading
  * prepared by `flatShadingGeometry` (each face lit once, on a last vertex of its own).
  */
-export function createSphere(base: SphereBase, level: number, shading: Shading): THREE.BufferGeometry {
-  const sphere = new SubdivisionSphereGeometry({ base, level, normals: 'none' });
+export function createSphere(
+  base: SphereBase,
+  level: number,
+  shading: Shading,
+  radius = 1,
+): THREE.BufferGeometry {
+  const sphere = new SubdivisionSphereGeometry({ base, level, radius, normals: 'none' });
   if (shading !== 'flat') return sphere;
   const flat = flatShadingGeometry(sphere);
   sphere.dispose();
@@ -41,8 +46,8 @@ export function createSphere(base: SphereBase, level: number, shading: Shading):
 }
 
 /** The geometry a shading needs differs only between flat and the others. */
-export function sphereKey(base: SphereBase, level: number, shading: Shading): string {
-  return `${base}:${level}:${shading === 'flat' ? 'faces' : 'shared'}`;
+export function sphereKey(base: SphereBase, level: number, shading: Shading, radius = 1): string {
+  return `${base}:${level}:${radius}:${shading === 'flat' ? 'faces' : 'shared'}`;
 }
 
 export type Detail = SphereDetail;
@@ -55,8 +60,9 @@ export function sphereRadiusPx(
   camera: ViewCamera,
   matrixWorld: THREE.Matrix4,
   viewportHeightPx: number,
+  radius = 1,
 ): number {
-  const px = projectedRadiusPx({ camera, matrixWorld, viewportHeightPx });
+  const px = projectedRadiusPx({ camera, matrixWorld, viewportHeightPx, radius });
   return Math.min(px, 4 * viewportHeightPx);
 }
 
@@ -155,8 +161,14 @@ export function getCameraFrame(camera: ViewCamera): { eye: Vec3; w: Vec3; v: Vec
 
 export type TrackballHandle = Trackball;
 
+/** The trackball with the package's own defaults (Bell's mapping, speeds, limits, radius). */
 export function createTrackball(object: THREE.Object3D, camera: ViewCamera): TrackballHandle {
-  return new Trackball(object, null, { camera, mapping: 'arcball' });
+  return new Trackball(object, null, { camera });
+}
+
+/** Ball radius, a fraction of half the canvas's shorter side (the trackball refuses ≤ 0 or non-finite). */
+export function setTrackballRadius(trackball: TrackballHandle, radius: number): void {
+  trackball.radius = radius;
 }
 
 export function setTrackballMapping(trackball: TrackballHandle, mapping: TrackballMapping): void {
@@ -179,8 +191,25 @@ export function getTrackballRotation(object: THREE.Object3D): [number, number, n
   return object.quaternion.toArray() as [number, number, number, number];
 }
 
-export function setTrackballRotation(object: THREE.Object3D, q: [number, number, number, number]): void {
-  object.quaternion.fromArray(q).normalize();
+/**
+ * Puts the object at rotation `q` (a restored URL, a keyboard turn). The identity goes through the
+ * trackball's own `reset()`, so its `rotation` and `getMatrix()` agree with the picture again; its zoom is kept
+ * (reset() sets it to 1: the same factor is applied back). Any other rotation is written to the object: the
+ * trackball has no rotation setter yet, so until a drag its `getMatrix()` lags behind (a drag starts from the
+ * object's orientation, so the picture is always right).
+ */
+export function setTrackballRotation(
+  trackball: TrackballHandle,
+  object: THREE.Object3D,
+  q: [number, number, number, number],
+): void {
+  if (q[0] === 0 && q[1] === 0 && q[2] === 0 && trackball.object === object) {
+    const zoom = trackball.zoom;
+    trackball.reset();
+    if (zoom !== trackball.zoom) trackball.zoomBy(zoom / trackball.zoom);
+  } else {
+    object.quaternion.fromArray(q).normalize();
+  }
   object.updateMatrixWorld(true);
 }
 
@@ -261,6 +290,14 @@ export const OUTLINE_THICKNESS = 0.03;
  */
 export function createOutlineMesh(mesh: THREE.Mesh): THREE.Mesh<THREE.BufferGeometry, OutlineMaterial> {
   return createOutline(mesh, { thickness: OUTLINE_THICKNESS, color: 0xf2f2f2 });
+}
+
+/** Sets the outline's colour (a CSS colour such as `#rrggbb`, sRGB; the material names a bad one). */
+export function setOutlineColor(
+  outline: THREE.Mesh<THREE.BufferGeometry, OutlineMaterial>,
+  color: string,
+): void {
+  outline.material.color = color;
 }
 
 /** Sets the outline's thickness (model units; the material refuses negative or non-finite values). */

@@ -1,3 +1,5 @@
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
+import { Trackball } from '@shadelab/trackball';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
@@ -47,7 +49,45 @@ describe('parseState', () => {
         attenuation: { a: 1, b: 0, c: 0 },
       },
     ]);
-    expect(state.material.shading).toBe('phong');
+    // The lecture's shader: per-fragment (Phong) shading, and the half vector (Blinn-Phong) in its specular.
+    expect(state.material).toMatchObject({ shading: 'phong', lighting: 'blinn-phong' });
+    expect(state.trackball.rotation).toEqual([0, 0, 0, 1]);
+  });
+
+  it("keeps the packages' own defaults where the lecture sets nothing", () => {
+    const state = defaultState();
+    const trackball = new Trackball();
+    expect(state.trackball).toMatchObject({
+      mapping: trackball.mapping,
+      rotateSpeed: trackball.rotateSpeed,
+      zoomSpeed: trackball.zoomSpeed,
+      minZoom: trackball.minZoom,
+      maxZoom: trackball.maxZoom,
+      damping: trackball.enableDamping,
+      dampingFactor: trackball.dampingFactor,
+      radius: trackball.radius,
+    });
+    expect(state.trackball.mapping).toBe('bell');
+    expect(state.sphere.radius).toBe(new SubdivisionSphereGeometry().parameters.radius);
+  });
+
+  it('reads an outline colour #rrggbb (lower-cased) and refuses anything else, naming it', () => {
+    const result = parseState('{"material":{"outlineColor":"#FF8000"}}');
+    expect(result.ok && result.state.material.outlineColor).toBe('#ff8000');
+    for (const bad of ['"red"', '"#fff"', '"#ff800g"', '16711680', 'null']) {
+      expect(refused(`{"material":{"outlineColor":${bad}}}`)).toMatch(
+        /^state\.material\.outlineColor: .* is not a colour #rrggbb$/,
+      );
+    }
+  });
+
+  it('refuses a sphere or trackball radius ≤ 0, naming it and the range', () => {
+    expect(refused('{"sphere":{"radius":0}}')).toBe('state.sphere.radius: 0 is outside (0, 1000]');
+    expect(refused('{"sphere":{"radius":-2}}')).toBe('state.sphere.radius: -2 is outside (0, 1000]');
+    expect(refused('{"trackball":{"radius":0}}')).toBe('state.trackball.radius: 0 is outside (0, 100]');
+    expect(refused('{"trackball":{"radius":"1"}}')).toBe(
+      'state.trackball.radius: "1" is not a finite number',
+    );
   });
 
   it('fills missing keys with defaults', () => {

@@ -51,13 +51,23 @@ export interface PlaygroundState {
     outline: boolean;
     /** Outline thickness along the normal, model units. */
     outlineWidth: number;
+    /** Outline colour, CSS hex `#rrggbb` (sRGB, as a colour picker gives it). */
+    outlineColor: string;
     ka: Rgb;
     kd: Rgb;
     ks: Rgb;
     shininess: number;
   };
   lights: LightState[];
-  sphere: { render: SphereRender; base: SphereBase; level: number; auto: boolean; maxErrorPx: number };
+  sphere: {
+    render: SphereRender;
+    base: SphereBase;
+    level: number;
+    auto: boolean;
+    maxErrorPx: number;
+    /** The sphere's radius before the model scale (@shadelab/sphere's `radius`), model units. */
+    radius: number;
+  };
   model: { scale: Vec3 };
   camera: {
     projection: Projection;
@@ -96,6 +106,8 @@ export interface PlaygroundState {
     damping: boolean;
     /** Fraction of the spin lost per 1/60 s when damping, in (0, 1]. */
     dampingFactor: number;
+    /** Ball radius as a fraction of half the canvas's shorter side (the trackball's `radius`). */
+    radius: number;
     /** Accumulated rotation as a unit quaternion `[x, y, z, w]`. */
     rotation: [number, number, number, number];
   };
@@ -117,23 +129,28 @@ export function defaultLight(): LightState {
   };
 }
 
-/** The lecture's demo scene: tetrahedron level 6, scale (2, 1, 2), eye (0, 0, 3), fovy 90, Phong. */
+/**
+ * The lecture's demo scene: tetrahedron level 6, scale (2, 1, 2), eye (0, 0, 3), fovy 90, Phong shading with
+ * Blinn-Phong lighting (the lecture's shader uses the half vector). The lecture never sets ka, kd, ks or the
+ * shininess: those values are the playground's own. The trackball keeps its package defaults (Bell's mapping).
+ */
 export function defaultState(): PlaygroundState {
   return {
     view: 'single',
     material: {
       shading: 'phong',
-      lighting: 'phong',
+      lighting: 'blinn-phong',
       celBands: 0,
       outline: false,
       outlineWidth: 0.03,
+      outlineColor: '#f2f2f2',
       ka: [0.8, 0.35, 0.15],
       kd: [0.8, 0.35, 0.15],
       ks: [1, 1, 1],
       shininess: 50,
     },
     lights: [defaultLight()],
-    sphere: { render: 'mesh', base: 'tetrahedron', level: 6, auto: false, maxErrorPx: 0.5 },
+    sphere: { render: 'mesh', base: 'tetrahedron', level: 6, auto: false, maxErrorPx: 0.5, radius: 1 },
     model: { scale: [2, 1, 2] },
     camera: {
       projection: 'perspective',
@@ -155,13 +172,14 @@ export function defaultState(): PlaygroundState {
       turnSpeed: 0.005,
     },
     trackball: {
-      mapping: 'arcball',
+      mapping: 'bell',
       rotateSpeed: 1,
       zoomSpeed: 1,
       minZoom: 0.01,
       maxZoom: 100,
       damping: false,
       dampingFactor: 0.05,
+      radius: 1,
       rotation: [0, 0, 0, 1],
     },
   };
@@ -264,6 +282,13 @@ function list<T>(item: Parser<T>, max: number, makeDefault: () => T): Parser<T[]
   };
 }
 
+const hexColor: Parser<string> = (input, path) => {
+  if (typeof input !== 'string' || !/^#[0-9a-f]{6}$/i.test(input)) {
+    throw new StateError(`${path}: ${show(input)} is not a colour #rrggbb`);
+  }
+  return input.toLowerCase();
+};
+
 const celBands: Parser<number> = (input, path, fallback) => {
   const n = num(0, 16, { integer: true })(input, path, fallback);
   if (n === 1) throw new StateError(`${path}: 1 is not allowed (0 = off, or 2 … 16 bands)`);
@@ -294,6 +319,7 @@ const stateParser = object<PlaygroundState>({
     celBands,
     outline: bool,
     outlineWidth: num(0, 1),
+    outlineColor: hexColor,
     ka: rgb,
     kd: rgb,
     ks: rgb,
@@ -306,6 +332,7 @@ const stateParser = object<PlaygroundState>({
     level: num(0, 16, { integer: true }),
     auto: bool,
     maxErrorPx: num(0.01, 100),
+    radius: num(0, 1e3, { openMin: true }),
   }),
   model: object({ scale: vec3(1e3) }),
   camera: object({
@@ -335,6 +362,7 @@ const stateParser = object<PlaygroundState>({
     maxZoom: num(1e-3, 1e3, { openMin: true }),
     damping: bool,
     dampingFactor: num(0, 1, { openMin: true }),
+    radius: num(0, 100, { openMin: true }),
     rotation: quaternion,
   }),
 });

@@ -78,6 +78,13 @@ export function SceneControls({
           d.material.outlineWidth = v;
         },
       },
+      outlineColor: {
+        input: { label: 'outline colour' },
+        read: (s) => s.material.outlineColor,
+        write: (d, v: string) => {
+          d.material.outlineColor = v;
+        },
+      },
       ka: {
         input: rgb('ka'),
         read: (s) => s.material.ka,
@@ -160,6 +167,13 @@ export function SceneControls({
         read: (s) => s.sphere.maxErrorPx,
         write: (d, v: number) => {
           d.sphere.maxErrorPx = v;
+        },
+      },
+      radius: {
+        input: { label: 'radius', step: 0.1 },
+        read: (s) => s.sphere.radius,
+        write: (d, v: number) => {
+          d.sphere.radius = v;
         },
       },
       scale: {
@@ -296,7 +310,7 @@ export function SceneControls({
     'Trackball',
     {
       mapping: {
-        input: { label: 'mapping', options: ['arcball', 'bell'] },
+        input: { label: 'mapping', options: ['bell', 'arcball'] },
         read: (s) => s.trackball.mapping,
         write: (d, v: PlaygroundState['trackball']['mapping']) => {
           d.trackball.mapping = v;
@@ -328,6 +342,13 @@ export function SceneControls({
         read: (s) => s.trackball.maxZoom,
         write: (d, v: number) => {
           d.trackball.maxZoom = v;
+        },
+      },
+      radius: {
+        input: { label: 'ball radius', step: 0.1 },
+        read: (s) => s.trackball.radius,
+        write: (d, v: number) => {
+          d.trackball.radius = v;
         },
       },
       damping: {

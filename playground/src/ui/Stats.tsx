@@ -25,18 +25,23 @@ export function Stats({ feed }: { feed: StatsFeed }) {
   const [stats, setStats] = useState<FrameStats | null>(feed.last);
   useEffect(() => feed.subscribe(setStats), [feed]);
   if (!stats) return null;
+  const cells = stats.cells > 1 ? ` (${stats.cells} cells)` : '';
   return (
     <dl className="stats" data-testid="stats" aria-label="render statistics">
       <dt>frame (CPU)</dt>
       <dd>{stats.cpuMs.toFixed(2)} ms</dd>
       <dt>frame (GPU)</dt>
-      <dd>{stats.gpuMs === null ? 'n/a (no timer query)' : `${stats.gpuMs.toFixed(2)} ms`}</dd>
-      <dt>triangles</dt>
+      <dd data-testid="stats-gpu">
+        {stats.gpuMs === null ? 'n/a (no timer query)' : `${stats.gpuMs.toFixed(2)} ms`}
+      </dd>
+      <dt>triangles{cells}</dt>
       <dd data-testid="stats-triangles">{stats.triangles.toLocaleString('en-US')}</dd>
-      <dt>vertices</dt>
-      <dd>{stats.vertices.toLocaleString('en-US')}</dd>
-      <dt>buffers</dt>
-      <dd>{bytes(stats.bufferBytes)}</dd>
+      <dt>vertices{cells}</dt>
+      <dd data-testid="stats-vertices">{stats.vertices.toLocaleString('en-US')}</dd>
+      <dt>buffers{stats.cells > 1 ? ' (shared once)' : ''}</dt>
+      <dd data-testid="stats-bytes" title={`${stats.bufferBytes.toLocaleString('en-US')} bytes`}>
+        {bytes(stats.bufferBytes)} ({stats.bufferBytes.toLocaleString('en-US')} B)
+      </dd>
       <dt>programs</dt>
       <dd data-testid="stats-programs">{stats.programs}</dd>
       <dt>depth</dt>
