@@ -122,3 +122,45 @@ export async function drag(
   await page.mouse.up();
   await settle(page);
 }
+
+/** How many canvas pixels are not background (any channel above 8): the sphere's area on screen. */
+export async function litArea(page: Page): Promise<number> {
+  return page.getByTestId('viewport').evaluate((canvas: HTMLCanvasElement) => {
+    const gl = canvas.getContext('webgl2')!;
+    const out = new Uint8Array(canvas.width * canvas.height * 4);
+    gl.readPixels(0, 0, canvas.width, canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    let n = 0;
+    for (let i = 0; i < out.length; i += 4) if (out[i]! > 8 || out[i + 1]! > 8 || out[i + 2]! > 8) n++;
+    return n;
+  });
+}
+
+/** The canvas split into `cols` × `rows` cells, each cell's pixels as one string (equal = same picture). */
+export async function cellPictures(page: Page, cols: number, rows: number): Promise<string[]> {
+  return page.getByTestId('viewport').evaluate(
+    (canvas: HTMLCanvasElement, [c, r]) => {
+      const gl = canvas.getContext('webgl2')!;
+      const cells: string[] = [];
+      for (let row = 0; row < r; row++) {
+        for (let col = 0; col < c; col++) {
+          const x = Math.round((col * canvas.width) / c);
+          const w = Math.round(((col + 1) * canvas.width) / c) - x;
+          const y = Math.round(canvas.height - ((row + 1) * canvas.height) / r);
+          const h = Math.round(canvas.height - (row * canvas.height) / r) - y;
+          const out = new Uint8Array(w * h * 4);
+          gl.readPixels(x, y, w, h, gl.RGBA, gl.UNSIGNED_BYTE, out);
+          let hash = 0;
+          for (let i = 0; i < out.length; i++) hash = (Math.imul(hash, 31) + out[i]!) | 0;
+          cells.push(`${hash}:${out.reduce((a, b) => a + b, 0)}`);
+        }
+      }
+      return cells;
+    },
+    [cols, rows] as const,
+  );
+}
+
+/** The trackball rotation the page last wrote to its URL. */
+export async function urlRotation(page: Page): Promise<number[]> {
+  return ((await urlState(page))['trackball'] as { rotation: number[] }).rotation;
+}

@@ -1,8 +1,10 @@
 import { expect, type Page, test } from '@playwright/test';
 import {
+  cellPictures,
   choose,
   drag,
   frames,
+  litArea,
   open,
   picture,
   pixel,
@@ -11,6 +13,7 @@ import {
   stateUrl,
   toggle,
   typeInto,
+  urlRotation,
   urlState,
 } from './playground-helpers';
 
@@ -31,6 +34,18 @@ test.describe('the playground', () => {
     page.on('console', (m) => logs.push(m.text()));
     await open(page);
     await expect(page.getByTestId('stats-triangles')).toHaveText('16,384');
+    // Tetrahedron level 6, indexed: V = 2 + T/2 vertices; positions 3 float32 each, Uint16 indices 3 per triangle.
+    await expect(page.getByTestId('stats-vertices')).toHaveText('8,194');
+    const bytes = 8194 * 3 * 4 + 16384 * 3 * 2;
+    await expect(page.getByTestId('stats-bytes')).toHaveText(
+      `${(bytes / 1024).toFixed(1)} KiB (${bytes.toLocaleString('en-US')} B)`,
+    );
+    await expect(page.getByTestId('stats-gpu')).toHaveText(/^(n\/a \(no timer query\)|\d+\.\d\d ms)$/);
+    // The lecture's shader: Phong shading with the half vector (Blinn-Phong lighting).
+    await expect(page.locator('[id="Material.shading"]')).toHaveValue('2'); // flat, gouraud, phong
+    await expect(page.locator('[id="Material.lighting"]')).toHaveValue('1'); // phong, blinn-phong
+    // The trackball's package default mapping.
+    await expect(page.locator('[id="Trackball.mapping"]')).toHaveValue('0'); // bell, arcball
     await expect(page.locator('[id="Sphere.base"]')).toHaveValue('0');
     await expect(page.locator('[id="Camera.eye.z"]')).toHaveValue('3.0');
     await expect(page.locator('[id="Camera.fovy"]')).toHaveValue('90');
@@ -49,10 +64,12 @@ test.describe('the playground', () => {
       ['shading flat', () => choose(page, 'Material.shading', 'flat')],
       ['shading gouraud', () => choose(page, 'Material.shading', 'gouraud')],
       ['shading phong', () => choose(page, 'Material.shading', 'phong')],
+      ['lighting phong', () => choose(page, 'Material.lighting', 'phong')],
       ['lighting blinn-phong', () => choose(page, 'Material.lighting', 'blinn-phong')],
       ['cel bands', () => typeInto(page, 'Material.celBands', '3')],
       ['outline', () => toggle(page, 'Material.outline')],
       ['outline width', () => typeInto(page, 'Material.outlineWidth', '0.1')],
+      ['outline colour', () => typeInto(page, 'Material.outlineColor', '#ff0000')],
       ['ka', () => typeInto(page, 'Material.ka', '0.1')],
       ['kd', () => typeInto(page, 'Material.kd.y', '0.9')],
       ['ks', () => typeInto(page, 'Material.ks.z', '0.2')],
@@ -89,6 +106,7 @@ test.describe('the playground', () => {
       ['level', () => typeInto(page, 'Sphere.level', '1')],
       ['auto detail', () => toggle(page, 'Sphere.auto')],
       ['max error', () => typeInto(page, 'Sphere.maxErrorPx', '40')],
+      ['radius', () => typeInto(page, 'Sphere.radius', '0.6')],
       ['model scale', () => typeInto(page, 'Sphere.scale.y', '1.8')],
       ['compare view', () => choose(page, 'View.view', 'flat | Gouraud | Phong | cel')],
     ]);
@@ -130,16 +148,30 @@ test.describe('the playground', () => {
     await drag(page, [0.5, 0.5], [0.7, 0.5]);
     expect(await picture(page)).not.toBe(turned);
 
-    // A drag past the rim maps differently on Bell's sheet than on the arcball.
+    // A drag past the rim maps differently on Bell's sheet (the default) than on the arcball.
     await typeInto(page, 'Trackball.rotateSpeed', '1');
     const rim = async () => {
       await press(page, 'reset rotation');
       await drag(page, [0.5, 0.5], [0.98, 0.9]);
       return picture(page);
     };
-    const arcball = await rim();
-    await choose(page, 'Trackball.mapping', 'bell');
-    expect(await rim()).not.toBe(arcball);
+    const bell = await rim();
+    await choose(page, 'Trackball.mapping', 'arcball');
+    expect(await rim()).not.toBe(bell);
+  });
+
+  test('the trackball ball radius changes how far a drag turns', async ({ page }) => {
+    await open(page);
+    const angle = async () => 2 * Math.acos(Math.min(1, Math.abs((await urlRotation(page))[3]!)));
+    await drag(page, [0.5, 0.5], [0.6, 0.5]);
+    const big = await angle();
+    const turned = await picture(page);
+    await press(page, 'reset rotation');
+    await typeInto(page, 'Trackball.radius', '0.5');
+    await drag(page, [0.5, 0.5], [0.6, 0.5]);
+    // A smaller ball: the same pixels are a larger arc of it.
+    expect(await angle()).toBeGreaterThan(big * 1.5);
+    expect(await picture(page)).not.toBe(turned);
   });
 
   test('with damping on, a fling keeps the sphere turning after release until it rests; off, it stops at once', async ({
@@ -211,24 +243,61 @@ test.describe('the playground', () => {
   });
 
   test('the wheel zooms, by zoomSpeed', async ({ page }) => {
-    await open(page);
+    // A unit sphere, so that the eye stays outside it at the zoom limit (eye z = 3 / maxZoom = 2).
+    await open(page, { model: { scale: [1, 1, 1] } });
     const canvas = page.getByTestId('viewport');
     const box = (await canvas.boundingBox())!;
     const wheel = async () => {
       await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-      await page.mouse.wheel(0, -200);
+      await page.mouse.wheel(0, -50);
       await settle(page);
       return ((await urlState(page))['camera'] as { eye: number[] }).eye[2]!;
     };
+    const area0 = await litArea(page);
     const z1 = await wheel();
     expect(z1).toBeLessThan(3);
+    const area1 = await litArea(page);
+    expect(area1).toBeGreaterThan(area0); // closer: the sphere covers more of the screen
     await typeInto(page, 'Trackball.zoomSpeed', '3');
     const z2 = await wheel();
     expect(3 - z2).toBeGreaterThan((3 - z1) * 1.5);
-    // The zoom limit holds: the eye never comes closer than 3 / maxZoom.
+    const area2 = await litArea(page);
+    // The same wheel step grows the sphere more at three times the speed.
+    expect(area2 / area1).toBeGreaterThan(area1 / area0);
+    // The zoom limit holds: the eye never comes closer than 3 / maxZoom, and the picture stops changing.
     await typeInto(page, 'Trackball.maxZoom', '1.5');
-    for (let i = 0; i < 3; i++) await wheel();
-    expect(await wheel()).toBeCloseTo(2, 6);
+    let z = z2;
+    for (let i = 0; i < 20 && z > 2 + 1e-9; i++) z = await wheel();
+    expect(z).toBeCloseTo(2, 6);
+    const atLimit = await picture(page);
+    await wheel();
+    expect(await picture(page)).toBe(atLimit);
+  });
+
+  test('the wheel zooms out no further than minZoom', async ({ page }) => {
+    await open(page);
+    const box = (await page.getByTestId('viewport').boundingBox())!;
+    const wheelOut = async () => {
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      await page.mouse.wheel(0, 400);
+      await settle(page);
+      return ((await urlState(page))['camera'] as { eye: number[] }).eye[2]!;
+    };
+    const area0 = await litArea(page);
+    await typeInto(page, 'Trackball.minZoom', '0.5');
+    let z = 3;
+    for (let i = 0; i < 20 && z < 6 - 1e-9; i++) z = await wheelOut();
+    // The eye never goes further than 3 / minZoom = 6 from the target.
+    expect(z).toBeCloseTo(6, 6);
+    expect(await wheelOut()).toBeCloseTo(6, 6);
+    const atLimit = await picture(page);
+    expect(await litArea(page)).toBeLessThan(area0 / 2);
+    await wheelOut();
+    expect(await picture(page)).toBe(atLimit);
+    // A lower limit lets it go further.
+    await typeInto(page, 'Trackball.minZoom', '0.4');
+    expect(await wheelOut()).toBeGreaterThan(6.1);
+    expect(await picture(page)).not.toBe(atLimit);
   });
 
   test('camera keys move the camera along its frame, by moveSpeed', async ({ page }) => {
@@ -248,12 +317,20 @@ test.describe('the playground', () => {
     camera = (await urlState(page))['camera'] as { eye: number[]; at: number[] };
     expect(camera.eye[0]).toBeCloseTo(0.1, 9);
     expect(camera.eye[1]).toBeCloseTo(0.1, 9);
+    // Back by the default speed, then by 0.5: the sphere shrinks on screen, much more for the larger step.
+    const area0 = await litArea(page);
+    await page.keyboard.press('KeyS');
+    await settle(page);
+    const area1 = await litArea(page);
+    expect(area1).toBeLessThan(area0);
     await typeInto(page, 'Camera.moveSpeed', '0.5');
     await canvas.focus();
     await page.keyboard.press('KeyS');
     await settle(page);
     camera = (await urlState(page))['camera'] as { eye: number[]; at: number[] };
-    expect(camera.eye[2]).toBeCloseTo(3.4, 9);
+    expect(camera.eye[2]).toBeCloseTo(3.5, 9);
+    const area2 = await litArea(page);
+    expect(area1 - area2).toBeGreaterThan((area0 - area1) * 3);
   });
 
   test('a shared URL reproduces the same pixels', async ({ page, browser }) => {
@@ -451,4 +528,163 @@ test('with "drag turns camera", a drag turns the gaze instead of the sphere', as
   expect(camera.at[1]).toBeLessThan(0);
   expect(Math.hypot(...camera.at.map((x, i) => x - camera.eye[i]!))).toBeCloseTo(3, 9);
   expect(Math.hypot(...camera.up)).toBeCloseTo(1, 9);
+});
+
+test('turn speed scales how far a drag turns the gaze', async ({ page }) => {
+  await open(page);
+  await toggle(page, 'Camera.dragTurns');
+  const gaze = async () => {
+    const camera = (await urlState(page))['camera'] as { eye: number[]; at: number[] };
+    return Math.atan2(camera.at[0]! - camera.eye[0]!, camera.eye[2]! - camera.at[2]!);
+  };
+  await drag(page, [0.5, 0.5], [0.6, 0.5]);
+  const slow = await gaze();
+  const slowPicture = await picture(page);
+  expect(slow).toBeGreaterThan(0);
+  await press(page, 'reset scene');
+  await toggle(page, 'Camera.dragTurns');
+  await typeInto(page, 'Camera.turnSpeed', '0.01'); // twice the default 0.005 rad/px
+  await drag(page, [0.5, 0.5], [0.6, 0.5]);
+  expect(await gaze()).toBeCloseTo(slow * 2, 6);
+  expect(await picture(page)).not.toBe(slowPicture);
+});
+
+test('the damping factor sets how long a fling spins: a smaller factor turns further', async ({ page }) => {
+  test.setTimeout(120_000);
+  await open(page);
+  await toggle(page, 'Trackball.damping');
+  const box = (await page.getByTestId('viewport').boundingBox())!;
+  const angle = async () => 2 * Math.acos(Math.min(1, Math.abs((await urlRotation(page))[3]!)));
+  /** A fling (released at once); retried when a loaded machine delivers the release too late to spin. */
+  const spin = async () => {
+    for (let attempt = 0; attempt < 6; attempt++) {
+      if ((await urlRotation(page))[3] !== 1) await press(page, 'reset rotation');
+      await page.mouse.move(box.x + box.width * 0.45, box.y + box.height * 0.5);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.5, { steps: 3 });
+      await page.mouse.up();
+      const atRelease = await frames(page);
+      await page.waitForTimeout(200);
+      const spun = (await frames(page)) > atRelease + 2;
+      await settle(page);
+      if (spun) return { angle: await angle(), picture: await picture(page) };
+    }
+    throw new Error('no fling spun in 6 attempts');
+  };
+  await typeInto(page, 'Trackball.dampingFactor', '0.5');
+  const short = await spin();
+  await typeInto(page, 'Trackball.dampingFactor', '0.05');
+  const long = await spin();
+  // The spin after release sums to about (last step) / factor: ten times longer at 0.05 than at 0.5.
+  expect(long.angle).toBeGreaterThan(short.angle * 1.5);
+  expect(long.picture).not.toBe(short.picture);
+});
+
+test('"reset scene" goes back to the lecture scene', async ({ page }) => {
+  await open(page);
+  const start = await picture(page);
+  const startState = await urlState(page);
+  await typeInto(page, 'Material.shininess', '5');
+  await choose(page, 'Material.shading', 'flat');
+  await drag(page, [0.5, 0.5], [0.6, 0.6]);
+  expect(await picture(page)).not.toBe(start);
+  await press(page, 'reset scene');
+  expect(await picture(page)).toBe(start);
+  expect(await urlState(page)).toEqual(startState);
+  await expect(page.locator('[id="Material.shininess"]')).toHaveValue('50');
+});
+
+test('"copy link" puts a URL on the clipboard that reproduces the picture', async ({
+  page,
+  context,
+  browser,
+}) => {
+  await context.grantPermissions(['clipboard-read', 'clipboard-write']);
+  await open(page);
+  await choose(page, 'Material.shading', 'gouraud');
+  await drag(page, [0.4, 0.5], [0.6, 0.4]);
+  const original = await picture(page);
+  await page.getByRole('button', { name: 'copy link', exact: true }).click();
+  await expect(page.getByTestId('notice')).toContainText('Link copied to the clipboard.');
+  const link = await page.evaluate(() => navigator.clipboard.readText());
+  expect(new URL(link).hash).toBe(new URL(page.url()).hash);
+  const other = await browser.newPage(); // a fresh context: only the link carries the state
+  await other.goto(link);
+  await settle(other);
+  expect(await picture(other)).toBe(original);
+  await other.close();
+});
+
+test('compare view: one drag turns all four cells, and the rotation goes to the URL', async ({ page }) => {
+  await open(page, { view: 'compare' });
+  await expect(page.getByTestId('stats-triangles')).toHaveText(/\d/);
+  const before = await cellPictures(page, 2, 2); // 460 × 600 canvas: 2 × 2
+  expect(new Set(before).size).toBe(4); // four different shadings
+  await drag(page, [0.4, 0.4], [0.6, 0.45]);
+  const after = await cellPictures(page, 2, 2);
+  after.forEach((cell, i) => {
+    expect(cell, `cell ${i} changes`).not.toBe(before[i]);
+  });
+  const rotation = await urlRotation(page);
+  expect(rotation[3]).toBeLessThan(1 - 1e-6);
+  expect(Math.hypot(...rotation)).toBeCloseTo(1, 9);
+});
+
+test('compare view stats sum the vertices over the cells and count shared buffers once', async ({ page }) => {
+  await open(page, { view: 'compare', sphere: { level: 2 } });
+  // Level 2 tetrahedron: 64 triangles, 34 shared vertices (gouraud, phong, cel); flat: its own geometry.
+  const stats = page.getByTestId('stats');
+  await expect(stats).toContainText('vertices (4 cells)');
+  const vertices = Number((await page.getByTestId('stats-vertices').textContent())!.replace(/,/g, ''));
+  const bytes = Number((await page.getByTestId('stats-bytes').getAttribute('title'))!.replace(/\D/g, ''));
+  await open(page, { view: 'single', sphere: { level: 2 }, material: { shading: 'flat' } });
+  const flatVertices = Number(await page.getByTestId('stats-vertices').textContent());
+  const flatBytes = Number((await page.getByTestId('stats-bytes').getAttribute('title'))!.replace(/\D/g, ''));
+  await expect(page.getByTestId('stats-vertices')).toHaveText(String(flatVertices));
+  expect(vertices).toBe(flatVertices + 3 * 34);
+  expect(bytes).toBe(flatBytes + 34 * 3 * 4 + 64 * 3 * 2);
+});
+
+test('the keyboard alone adds a light, toggles a checkbox and turns the sphere', async ({ page }) => {
+  await open(page);
+  /** Tabs forward (as a keyboard user would) until the focused element matches a selector or has a text. */
+  const tabTo = async (target: { selector?: string; text?: string }) => {
+    for (let i = 0; i < 250; i++) {
+      await page.keyboard.press('Tab');
+      const hit = await page.evaluate(({ selector, text }) => {
+        const el = document.activeElement;
+        return !!el && (selector ? el.matches(selector) : el.textContent?.trim() === text);
+      }, target);
+      if (hit) return;
+    }
+    throw new Error(`Tab never reached ${JSON.stringify(target)}`);
+  };
+  const start = await picture(page);
+  await tabTo({ text: 'add light' });
+  await page.keyboard.press('Enter');
+  await expect(page.locator('[id="Light 2.light2Position"]')).toBeVisible();
+  await settle(page);
+  expect((await urlState(page))['lights']).toHaveLength(2);
+  const withLight = await picture(page);
+  expect(withLight).not.toBe(start);
+  await tabTo({ selector: '[id="Sphere.auto"]' });
+  await page.keyboard.press('Space');
+  await settle(page);
+  expect(((await urlState(page))['sphere'] as { auto: boolean }).auto).toBe(true);
+  // Turn keys on the focused canvas (none of them moves the camera): L turns as a drag to the right does.
+  await tabTo({ selector: '[data-testid="viewport"]' });
+  const eye = ((await urlState(page))['camera'] as { eye: number[] }).eye;
+  const unturned = await picture(page);
+  await page.keyboard.press('KeyL');
+  await settle(page);
+  let rotation = await urlRotation(page);
+  expect(rotation[1]).toBeCloseTo(Math.sin(Math.PI / 72), 9); // 5° about the camera's up = world y
+  expect(await picture(page)).not.toBe(unturned);
+  await page.keyboard.press('KeyK');
+  await page.keyboard.press('KeyI');
+  await page.keyboard.press('KeyJ');
+  await settle(page);
+  rotation = await urlRotation(page);
+  expect(Math.abs(rotation[3]!)).toBeCloseTo(1, 9);
+  expect(((await urlState(page))['camera'] as { eye: number[] }).eye).toEqual(eye);
 });
