@@ -3,6 +3,8 @@ import { HIDE_OVERLAYS, open } from './playground-helpers';
 
 // Visual regression of the canvas (overlays hidden). Renders are pixel-deterministic under SwiftShader with the
 // shared Playwright flags, so the tolerance is zero (playwright.config.ts: maxDiffPixels 0, threshold 0).
+// The lecture scene's shots name their shading and lighting and set both; every other shot is the lecture
+// scene's default (Phong shading, Blinn-Phong lighting) with only what its name says changed.
 // Update the baselines after an intended change with:
 //   SHADELAB_E2E_PORT=4105 npx playwright test tests/playground-visual.spec.ts --update-snapshots
 
@@ -68,4 +70,16 @@ test('comparison view: flat | Gouraud | Phong | cel', async ({ page }) => {
     camera: { eye: [0, 0, 1.9] },
   });
   await shot(page, 'compare.png');
+});
+
+test('comparison view on a wide canvas: one row, as on the lecture slide', async ({ page }) => {
+  // At 800 × 600 the canvas (460 × 600) is 2 × 2; from an aspect of 2 the cells line up in one row.
+  await page.setViewportSize({ width: 1600, height: 500 });
+  await open(page, {
+    view: 'compare',
+    sphere: { level: 3 },
+    model: { scale: [1, 1, 1] },
+    camera: { eye: [0, 0, 1.9] },
+  });
+  await shot(page, 'compare-wide.png');
 });
