@@ -1,5 +1,6 @@
 // The ray-cast impostor against the exact CPU reference (renderReference, computed in the page for the same
-// view): colours within 2/255 over the interior, the silhouette exact to half a pixel, depth exact.
+// view): colours within 1/255 over the interior (the issue's bound is 2/255), the silhouette exact to half a
+// pixel, depth exact.
 import { expect, type Page, test } from '@playwright/test';
 import type { CompareResult } from '../playground/harness/tradeoff';
 import type { TradeOption, TradeView } from '../playground/src/tradeoff/tradeoffScene';
@@ -15,9 +16,14 @@ async function compare(page: Page, view: TradeView, option: TradeOption = impost
   return page.evaluate(([v, o]) => window.tradeoff.compare(v, o), [view, option] as const);
 }
 
+/**
+ * The impostor's pixels against the reference: within 1/255 inside (the issue asks for 2/255; every view
+ * measures at most 1, float32 against float64 rounding to the other side of an 8-bit code), the silhouette
+ * within 0.5 px (no mismatched pixel farther from the exact edge), no NaN.
+ */
 function expectExact(r: CompareResult) {
   expect(r.interiorPixels).toBeGreaterThan(1000);
-  expect(r.max).toBeLessThanOrEqual(2);
+  expect(r.max).toBeLessThanOrEqual(1);
   expect(r.silhouettePx).toBeLessThanOrEqual(0.5);
   expect(r.mismatchedBeyondHalfPx).toBe(0);
   expect(r.blackPixels).toBe(0);
@@ -26,7 +32,7 @@ function expectExact(r: CompareResult) {
 test.describe('impostor vs reference', () => {
   test.beforeEach(async ({ page }) => open(page));
 
-  test('the lecture scene at 1280×720: within 2/255 inside, silhouette within 0.5 px', async ({ page }) => {
+  test('the lecture scene at 1280×720: within 1/255 inside, silhouette within 0.5 px', async ({ page }) => {
     const r = await compare(page, { width: 1280, height: 720 });
     test.info().annotations.push({ type: 'impostor', description: JSON.stringify(r) });
     expectExact(r);
@@ -47,6 +53,99 @@ test.describe('impostor vs reference', () => {
     test(name, async ({ page }) => {
       const r = await compare(page, view);
       expectExact(r);
+    });
+  }
+
+  // The DESIGN.md extremes rows that apply to the impostor, each within 1/255 inside and 0.5 px at the edge.
+  const extremes: Array<[string, TradeView]> = [
+    [
+      'two lights, each with its own intensities',
+      {
+        width: 320,
+        height: 240,
+        lights: [
+          { position: [-5, 10, 20] },
+          {
+            position: [4, -3, 6],
+            ambient: [0.05, 0.1, 0.05],
+            diffuse: [0.5, 0.3, 0.2],
+            specular: [0.3, 0.3, 0.6],
+          },
+        ],
+      },
+    ],
+    [
+      'attenuation a + b·t + c·t²',
+      {
+        width: 320,
+        height: 240,
+        lights: [{ position: [-2, 3, 4], attenuation: { a: 0.5, b: 0.1, c: 0.02 } }],
+      },
+    ],
+    ['ks = 0 (no specular)', { width: 320, height: 240, ks: [0, 0, 0] }],
+    ['kd = 0 (no diffuse)', { width: 320, height: 240, kd: [0, 0, 0] }],
+    ['shininess 0 (0⁰ = 1: the highlight covers the lit side)', { width: 320, height: 240, shininess: 0 }],
+    ['shininess 1e4 (a pinpoint highlight)', { width: 320, height: 240, shininess: 1e4, light: [0, 0, 20] }],
+    [
+      // On a convex surface a light at a surface point lights only that point (l·n ≤ 0 elsewhere): the
+      // lecture light keeps the rest of the picture lit.
+      'a light at the surface (t = 0 at the front pole), beside the lecture light',
+      { width: 320, height: 240, lights: [{ position: [0, 0, 2] }, { position: [-5, 10, 20] }] },
+    ],
+    [
+      'a light at the surface with attenuation 1/t² (a = b = 0: clamped at 10⁶), beside the lecture light',
+      {
+        width: 320,
+        height: 240,
+        lights: [
+          { position: [0, 0, 2], attenuation: { a: 0, b: 0, c: 1 }, diffuse: [0.2, 0.2, 0.2] },
+          { position: [-5, 10, 20] },
+        ],
+      },
+    ],
+  ];
+  for (const [name, view] of extremes) {
+    test(`extremes: ${name}`, async ({ page }) => {
+      const r = await compare(page, view);
+      test.info().annotations.push({ type: 'impostor', description: JSON.stringify(r) });
+      expectExact(r);
+    });
+  }
+
+  // far/near = 1e9 is exact with reversed-Z. The standard and logarithmic depth buffers are exact up to
+  // far/near = 1e7: beyond, the far end of the pixel's ray, unprojected in float32, goes to infinity (P's
+  // −(f + n)/(f − n) rounds to −1) and the silhouette moves by 20 px (measured; packages/material README).
+  for (const [depth, views] of [
+    [
+      'reversed',
+      [
+        { width: 320, height: 240, near: 1e-3, far: 1e6 },
+        { width: 320, height: 240, near: 0.1, far: 1e8 },
+      ],
+    ],
+    [
+      'standard',
+      [
+        { width: 320, height: 240, near: 1e-3, far: 1e4 },
+        { width: 320, height: 240, near: 0.1, far: 1e6 },
+      ],
+    ],
+    ['logarithmic', [{ width: 320, height: 240, near: 1e-3, far: 1e4 }]],
+  ] as const) {
+    test(`extremes: far/near up to ${depth === 'reversed' ? '1e9' : '1e7'} with a ${depth} depth buffer`, async ({
+      page,
+    }) => {
+      for (const view of views) {
+        const r = await page.evaluate(([v, o, d]) => window.tradeoff.compare(v, o, d), [
+          view,
+          impostor,
+          depth,
+        ] as const);
+        test
+          .info()
+          .annotations.push({ type: `far/near ${view.far / view.near}`, description: JSON.stringify(r) });
+        expectExact(r);
+      }
     });
   }
 
@@ -114,7 +213,7 @@ test.describe('impostor vs reference', () => {
     const far = await compare(page, { width: 160, height: 120, eye: [0, 0, 40], fovy: 8 });
     expect(far.blackPixels).toBe(0);
     expect(far.silhouettePx).toBeLessThanOrEqual(0.5);
-    expect(far.max).toBeLessThanOrEqual(2);
+    expect(far.max).toBeLessThanOrEqual(1);
   });
 
   test('two impostors sharing one material: per-object uniforms are re-uploaded between draws', async ({
