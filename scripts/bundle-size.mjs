@@ -1,0 +1,112 @@
+#!/usr/bin/env node
+// The playground's bundle size: builds the app with its own Vite config (in memory, nothing written) and sums
+// what index.html loads at start (its entry chunk and every chunk it imports statically) in three groups:
+// three.js, React + react-dom + leva + the app, and the @shadelab packages' own chunks. Raw bytes and gzip -9.
+//
+//   node scripts/bundle-size.mjs                 # prints the README table
+//   node scripts/bundle-size.mjs --json [file]   # also writes the figures (default bench/results/playground-bundle.json)
+//
+// Deterministic (no timing): the same sources give the same numbers on any machine.
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname, sep } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { gzipSync } from 'node:zlib';
+import { build } from 'vite';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const args = process.argv.slice(2);
+const jsonAt = args.indexOf('--json');
+const jsonFile =
+  jsonAt === -1
+    ? null
+    : args[jsonAt + 1] && !args[jsonAt + 1].startsWith('--')
+      ? args[jsonAt + 1]
+      : `${root}bench/results/playground-bundle.json`;
+
+const result = await build({
+  configFile: `${root}playground/vite.config.ts`,
+  logLevel: 'warn',
+  build: { write: false, emptyOutDir: false },
+});
+const outputs = (Array.isArray(result) ? result : [result]).flatMap((r) => r.output);
+const chunks = new Map(outputs.filter((o) => o.type === 'chunk').map((c) => [c.fileName, c]));
+
+const entry = [...chunks.values()].find(
+  (c) => c.isEntry && c.facadeModuleId?.endsWith(`${sep}playground${sep}index.html`),
+);
+if (!entry) throw new Error('bundle-size: no chunk for playground/index.html in the build');
+
+/** The entry and every chunk it imports statically (what the page loads before its first frame). */
+const loaded = [];
+const seen = new Set();
+const visit = (fileName) => {
+  if (seen.has(fileName)) return;
+  seen.add(fileName);
+  const chunk = chunks.get(fileName);
+  if (!chunk) return;
+  loaded.push(chunk);
+  for (const imported of chunk.imports) visit(imported);
+};
+visit(entry.fileName);
+
+const inThree = (id) => /[\\/]node_modules[\\/]three[\\/]/.test(id);
+const inPackages = (id) => id.startsWith(`${root}packages${sep}`) || id.startsWith(`${root}packages/`);
+
+/**
+ * A chunk's group: all of its modules from three, all from packages/, or otherwise the app's. The bundler's
+ * own virtual helpers (ids starting with NUL: the module-preload polyfill, the runtime) do not decide it.
+ */
+function group(chunk) {
+  const ids = Object.keys(chunk.modules).filter(
+    (id) => !id.startsWith('\0') && chunk.modules[id].renderedLength > 0,
+  );
+  if (ids.length > 0 && ids.every(inThree)) return 'three';
+  if (ids.length > 0 && ids.every(inPackages)) return 'shadelab';
+  return 'app';
+}
+
+const LABELS = {
+  three: 'three.js',
+  app: 'React, react-dom, leva and the app',
+  shadelab: 'the @shadelab packages (their own chunks)',
+};
+const totals = Object.fromEntries(Object.keys(LABELS).map((k) => [k, { raw: 0, gzip: 0, chunks: [] }]));
+for (const chunk of loaded) {
+  const code = Buffer.from(chunk.code);
+  const t = totals[group(chunk)];
+  const gzip = gzipSync(code, { level: 9 }).length;
+  t.raw += code.length;
+  t.gzip += gzip;
+  t.chunks.push({ file: chunk.fileName, raw: code.length, gzip });
+}
+const all = Object.values(totals).reduce((a, t) => ({ raw: a.raw + t.raw, gzip: a.gzip + t.gzip }), {
+  raw: 0,
+  gzip: 0,
+});
+
+const kB = (n) =>
+  `${(n / 1000).toLocaleString('en-US', { minimumFractionDigits: 1, maximumFractionDigits: 1 })} kB`;
+const lines = [
+  '| what `index.html` loads (`vite build`) | raw | gzip -9 |',
+  '| --- | ---: | ---: |',
+  ...Object.entries(LABELS).map(
+    ([k, label]) => `| ${label} | ${kB(totals[k].raw)} | ${kB(totals[k].gzip)} |`,
+  ),
+  `| **total** | **${kB(all.raw)}** | **${kB(all.gzip)}** |`,
+];
+console.log(lines.join('\n'));
+for (const [k, t] of Object.entries(totals)) {
+  console.log(`  ${k}: ${t.chunks.map((c) => `${c.file} ${c.raw} B (${c.gzip} B gz)`).join(', ')}`);
+}
+
+if (jsonFile) {
+  mkdirSync(dirname(jsonFile), { recursive: true });
+  const json = {
+    entry: 'playground/index.html',
+    unit: 'bytes (kB = 1000 B in the table)',
+    groups: totals,
+    total: all,
+  };
+  writeFileSync(jsonFile, `${JSON.stringify(json, null, 2)}\n`);
+  console.log(`wrote ${jsonFile}`);
+}
