@@ -1,11 +1,14 @@
 import { type Camera, Matrix4 } from 'three';
 import { fail } from './validate.js';
 
-/** Options of {@link projectedRadiusPx}. */
+/** Options of {@link projectedRadiusPx} and {@link silhouetteErrorScalePx}. */
 export interface ProjectedRadiusOptions {
   /** The camera (its `projectionMatrix` and `matrixWorld` are read; keep them current). */
   camera: Camera;
-  /** The sphere's world matrix (`object.matrixWorld`); its largest scale axis scales the radius. */
+  /**
+   * The sphere's world matrix (`object.matrixWorld`): `projectedRadiusPx` scales the radius by its largest scale
+   * axis; `silhouetteErrorScalePx` uses all of it (the ellipsoid, turned and placed).
+   */
   matrixWorld: Matrix4;
   /** Height of the viewport in pixels (physical pixels: `renderer.getCurrentViewport(v).w`). Finite, > 0. */
   viewportHeightPx: number;
