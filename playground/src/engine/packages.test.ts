@@ -1,0 +1,82 @@
+// @vitest-environment happy-dom
+import * as THREE from 'three';
+import { describe, expect, it } from 'vitest';
+import {
+  createCamera,
+  createTrackball,
+  setCameraPerspective,
+  setCameraView,
+  setTrackballRotation,
+} from './packages';
+
+/** The lecture's camera, and a trackball on a pivot, listening on a 200 × 200 px element at (0, 0). */
+function scene() {
+  const camera = createCamera();
+  setCameraView(camera, [0, 0, 3], [0, 0, 0], [0, 1, 0]);
+  setCameraPerspective(camera, 90, 1, 0.1, 10);
+  const pivot = new THREE.Group();
+  const trackball = createTrackball(pivot, camera);
+  const element = document.createElement('canvas');
+  document.body.appendChild(element);
+  element.getBoundingClientRect = () =>
+    ({ left: 0, top: 0, width: 200, height: 200, right: 200, bottom: 200, x: 0, y: 0 }) as DOMRect;
+  trackball.connect(element);
+  const pointer = (type: string, x: number, y: number) =>
+    element.dispatchEvent(
+      new PointerEvent(type, {
+        pointerId: 1,
+        pointerType: 'mouse',
+        button: 0,
+        clientX: x,
+        clientY: y,
+        bubbles: true,
+      }),
+    );
+  const drag = (from: [number, number], to: [number, number]) => {
+    pointer('pointerdown', ...from);
+    pointer('pointermove', ...to);
+    pointer('pointerup', ...to);
+  };
+  return { camera, pivot, trackball, drag };
+}
+
+const isIdentity = (m: THREE.Matrix4) =>
+  m.elements.every((v, i) => Math.abs(v - new THREE.Matrix4().elements[i]!) < 1e-12);
+
+describe('setTrackballRotation', () => {
+  it('keeps the package default mapping (bell)', () => {
+    expect(scene().trackball.mapping).toBe('bell');
+  });
+
+  it('resets through the trackball: its rotation and getMatrix() agree with the object again, and the zoom stays', () => {
+    const { camera, pivot, trackball, drag } = scene();
+    drag([100, 100], [150, 120]);
+    expect(isIdentity(trackball.getMatrix())).toBe(false);
+    expect(pivot.quaternion.w).toBeLessThan(1);
+    // Zoom in by 2: the eye moves to 1.5 from the target.
+    trackball.zoomBy(2);
+    const eye = camera.position.clone();
+    expect(eye.z).toBeCloseTo(1.5, 12);
+
+    setTrackballRotation(trackball, pivot, [0, 0, 0, 1]);
+    expect(pivot.quaternion.toArray()).toEqual([0, 0, 0, 1]);
+    expect(isIdentity(trackball.getMatrix())).toBe(true);
+    expect(trackball.zoom).toBeCloseTo(2, 12);
+    expect(camera.position.distanceTo(eye)).toBeLessThan(1e-12);
+
+    // The next drag starts from the identity on both sides: the trackball's world matrix turns the object's.
+    drag([100, 100], [150, 120]);
+    const world = trackball.getWorldMatrix();
+    const object = new THREE.Matrix4().makeRotationFromQuaternion(pivot.quaternion);
+    world.elements.forEach((v, i) => {
+      expect(v).toBeCloseTo(object.elements[i]!, 9);
+    });
+  });
+
+  it('writes any other rotation to the object (normalised)', () => {
+    const { pivot, trackball } = scene();
+    setTrackballRotation(trackball, pivot, [0, 0.6, 0, 0.8]);
+    expect(pivot.quaternion.y).toBeCloseTo(0.6, 12);
+    expect(pivot.quaternion.w).toBeCloseTo(0.8, 12);
+  });
+});
