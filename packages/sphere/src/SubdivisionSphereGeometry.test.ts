@@ -156,5 +156,12 @@ describe('SubdivisionSphereGeometry', () => {
     expect(() => new SubdivisionSphereGeometry({ level: 11, base: 'icosahedron' })).toThrow(
       /bytes.*maxBytes/,
     );
+    // The memory error names the class too, not the function it calls.
+    expect(() => new SubdivisionSphereGeometry({ level: 11, base: 'icosahedron' })).toThrow(
+      /^SubdivisionSphereGeometry: level 11 of the icosahedron .* needs about 2\.01 GB \(2013265968 bytes\)/,
+    );
+    expect(() => new SubdivisionSphereGeometry({ level: 11, base: 'icosahedron' })).not.toThrow(
+      /subdivideSphere/,
+    );
   });
 });

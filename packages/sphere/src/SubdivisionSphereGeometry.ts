@@ -1,6 +1,6 @@
 import { BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import { resolveSphereOptions, type SphereParameters, type SubdivideSphereOptions } from './SphereOptions.js';
-import { subdivideSphere } from './subdivideSphere.js';
+import { buildSphere } from './subdivideSphere.js';
 
 /**
  * A three.js geometry of the subdivision sphere (see `subdivideSphere` for the construction): a `position`
@@ -32,7 +32,7 @@ export class SubdivisionSphereGeometry extends BufferGeometry {
   constructor(options: SubdivideSphereOptions = {}) {
     super();
     this.parameters = resolveSphereOptions('SubdivisionSphereGeometry', options);
-    const { positions, normals, indices } = subdivideSphere(this.parameters);
+    const { positions, normals, indices } = buildSphere('SubdivisionSphereGeometry', this.parameters);
     this.setAttribute('position', new BufferAttribute(positions, 3));
     if (normals) this.setAttribute('normal', new BufferAttribute(normals, 3));
     if (indices) this.setIndex(new BufferAttribute(indices, 1));

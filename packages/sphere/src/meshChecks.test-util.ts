@@ -6,72 +6,142 @@ export function triangleIndices(positions: Float32Array, indices?: ArrayLike<num
   return Uint32Array.from({ length: positions.length / 3 }, (_, i) => i);
 }
 
-/** Merge coincident vertices (exact float equality) so a soup can be checked like an indexed mesh. */
-export function weld(positions: Float32Array, indices: Uint32Array): Uint32Array {
-  const ids = new Map<string, number>();
-  const remap = new Uint32Array(positions.length / 3);
-  for (let v = 0; v < remap.length; v++) {
-    const key = `${positions[3 * v]},${positions[3 * v + 1]},${positions[3 * v + 2]}`;
-    let id = ids.get(key);
-    if (id === undefined) {
-      id = ids.size;
-      ids.set(key, id);
-    }
-    remap[v] = id;
-  }
-  return indices.map((i) => remap[i]);
+/**
+ * Vertex ids sorted by position (x, then y, then z, float32 values), ties by id: coincident vertices end up next
+ * to each other, the smallest id first.
+ */
+function sortedByPosition(positions: Float32Array): Uint32Array {
+  const order = new Uint32Array(positions.length / 3);
+  for (let i = 0; i < order.length; i++) order[i] = i;
+  return order.sort(
+    (a, b) =>
+      positions[3 * a] - positions[3 * b] ||
+      positions[3 * a + 1] - positions[3 * b + 1] ||
+      positions[3 * a + 2] - positions[3 * b + 2] ||
+      a - b,
+  );
 }
 
-/** Watertight and oriented: every directed edge u→w appears once and w→u once. Returns V, E, F. */
-export function checkClosedOriented(indices: Uint32Array): {
+function samePosition(positions: Float32Array, a: number, b: number): boolean {
+  return (
+    positions[3 * a] === positions[3 * b] &&
+    positions[3 * a + 1] === positions[3 * b + 1] &&
+    positions[3 * a + 2] === positions[3 * b + 2]
+  );
+}
+
+/**
+ * Merge coincident vertices (exact float equality) so a soup can be checked like an indexed mesh: the merged
+ * vertices are numbered in order of first use, so a mesh without duplicates keeps its indices. Sorting, no hashing.
+ */
+export function weld(positions: Float32Array, indices: Uint32Array): Uint32Array {
+  const order = sortedByPosition(positions);
+  const first = new Uint32Array(order.length); // each vertex → the smallest id at its position
+  for (let i = 0; i < order.length; i++) {
+    first[order[i]] =
+      i > 0 && samePosition(positions, order[i - 1], order[i]) ? first[order[i - 1]] : order[i];
+  }
+  const compact = new Uint32Array(order.length);
+  for (let v = 0, next = 0; v < order.length; v++) compact[v] = first[v] === v ? next++ : compact[first[v]];
+  return indices.map((i) => compact[i]);
+}
+
+/**
+ * Watertight and oriented: every directed edge u→w appears once and w→u once. Typed arrays only (fast enough for
+ * 12M corners): the keys u·V + w (exact in a double while V < 2^26) are sorted, and so are the reversed keys
+ * w·V + u; a closed oriented surface has no repeated key and the same two sorted lists. Returns V, E, F and the
+ * number of problems (degenerate edges, repeated directed edges, directed edges without their reverse).
+ */
+export function checkClosedOriented(indices: ArrayLike<number>): {
   V: number;
   E: number;
   F: number;
   problems: number;
 } {
-  const directed = new Map<number, number>();
   let V = 0;
-  for (const i of indices) V = Math.max(V, i + 1);
+  for (let i = 0; i < indices.length; i++) if (indices[i] >= V) V = indices[i] + 1;
+  const forward = new Float64Array(indices.length);
+  const reverse = new Float64Array(indices.length);
   let problems = 0;
   for (let t = 0; t < indices.length; t += 3) {
     for (let k = 0; k < 3; k++) {
       const u = indices[t + k];
-      const w = indices[t + ((k + 1) % 3)];
+      const w = indices[t + (k === 2 ? 0 : k + 1)];
       if (u === w) problems++;
-      const key = u * V + w;
-      directed.set(key, (directed.get(key) ?? 0) + 1);
+      forward[t + k] = u * V + w;
+      reverse[t + k] = w * V + u;
     }
   }
-  for (const [key, count] of directed) {
-    const u = Math.floor(key / V);
-    const w = key % V;
-    if (count !== 1 || directed.get(w * V + u) !== 1) problems++;
+  forward.sort();
+  reverse.sort();
+  let distinct = 0;
+  for (let i = 0; i < forward.length; i++) {
+    if (i > 0 && forward[i] === forward[i - 1]) problems++;
+    else distinct++;
+    if (forward[i] !== reverse[i]) problems++;
   }
-  return { V, E: directed.size / 2, F: indices.length / 3, problems };
+  return { V, E: distinct / 2, F: indices.length / 3, problems };
+}
+
+/** Vertices at exactly the same place as another (float32 equality), found by sorting the vertex ids by position. */
+export function duplicateVertices(positions: Float32Array): number {
+  const order = sortedByPosition(positions);
+  let duplicates = 0;
+  for (let i = 1; i < order.length; i++) if (samePosition(positions, order[i - 1], order[i])) duplicates++;
+  return duplicates;
 }
 
 /** Count triangles whose face normal points inwards (n · centroid ≤ 0). */
-export function inwardFaces(positions: Float32Array, indices: Uint32Array): number {
+export function inwardFaces(positions: Float32Array, indices: ArrayLike<number>): number {
   let inward = 0;
   for (let t = 0; t < indices.length; t += 3) {
     const a = 3 * indices[t];
     const b = 3 * indices[t + 1];
     const c = 3 * indices[t + 2];
-    const u = [
-      positions[b] - positions[a],
-      positions[b + 1] - positions[a + 1],
-      positions[b + 2] - positions[a + 2],
-    ];
-    const v = [
-      positions[c] - positions[a],
-      positions[c + 1] - positions[a + 1],
-      positions[c + 2] - positions[a + 2],
-    ];
-    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-    const g = [0, 1, 2].map((k) => positions[a + k] + positions[b + k] + positions[c + k]);
-    if (n[0] * g[0] + n[1] * g[1] + n[2] * g[2] <= 0) inward++;
+    const ux = positions[b] - positions[a];
+    const uy = positions[b + 1] - positions[a + 1];
+    const uz = positions[b + 2] - positions[a + 2];
+    const vx = positions[c] - positions[a];
+    const vy = positions[c + 1] - positions[a + 1];
+    const vz = positions[c + 2] - positions[a + 2];
+    const gx = positions[a] + positions[b] + positions[c];
+    const gy = positions[a + 1] + positions[b + 1] + positions[c + 1];
+    const gz = positions[a + 2] + positions[b + 2] + positions[c + 2];
+    if ((uy * vz - uz * vy) * gx + (uz * vx - ux * vz) * gy + (ux * vy - uy * vx) * gz <= 0) inward++;
   }
   return inward;
+}
+
+/**
+ * Run `build` while every Float32Array, Float64Array, Uint8Array, Uint16Array and Uint32Array it creates with
+ * `new` or `from` is counted: the byte length of each distinct ArrayBuffer behind them (views such as
+ * `subarray` share their buffer). During the call the globals are proxies whose construct trap makes a plain
+ * typed array (so the build runs at full speed) and records its buffer.
+ */
+export function countAllocatedBytes<T>(build: () => T): { result: T; bytes: number } {
+  const buffers = new Set<ArrayBufferLike>();
+  const names = ['Float32Array', 'Float64Array', 'Uint8Array', 'Uint16Array', 'Uint32Array'] as const;
+  const g = globalThis as unknown as Record<string, unknown>;
+  const originals = names.map((name) => g[name] as new (...args: unknown[]) => ArrayBufferView);
+  names.forEach((name, i) => {
+    g[name] = new Proxy(originals[i], {
+      construct(target, args) {
+        const array = Reflect.construct(target, args) as ArrayBufferView;
+        buffers.add(array.buffer);
+        return array;
+      },
+    });
+  });
+  try {
+    const result = build();
+    let bytes = 0;
+    for (const buffer of buffers) bytes += buffer.byteLength;
+    return { result, bytes };
+  } finally {
+    names.forEach((name, i) => {
+      g[name] = originals[i];
+    });
+  }
 }
 
 /** Largest | |p| / radius − 1 | over the vertices. */

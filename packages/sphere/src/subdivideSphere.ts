@@ -1,6 +1,6 @@
 import { bytesFor } from './estimateSphereBytes.js';
 import { baseSolid, type SphereBase } from './SphereBase.js';
-import { resolveSphereOptions, type SubdivideSphereOptions } from './SphereOptions.js';
+import { resolveSphereOptions, type SphereParameters, type SubdivideSphereOptions } from './SphereOptions.js';
 
 /** The arrays of a subdivision sphere. */
 export interface SphereMesh {
@@ -39,10 +39,18 @@ export interface SphereMesh {
  * 512 MiB); nothing is allocated then.
  */
 export function subdivideSphere(options: SubdivideSphereOptions = {}): SphereMesh {
-  const params = resolveSphereOptions('subdivideSphere', options);
+  return buildSphere('subdivideSphere', resolveSphereOptions('subdivideSphere', options));
+}
+
+/**
+ * {@link subdivideSphere} for resolved options; `caller` (the function or class the user called) starts the
+ * memory error's message.
+ * @internal
+ */
+export function buildSphere(caller: string, params: SphereParameters): SphereMesh {
   const { level, base, radius, normals, indexed, maxBytes } = params;
   const bytes = bytesFor(params);
-  const needs = `subdivideSphere: level ${level} of the ${base}`;
+  const needs = `${caller}: level ${level} of the ${base}`;
   // Infinity bytes is refused even with maxBytes: Infinity (its arrays cannot exist).
   if (!(bytes <= maxBytes && bytes < Number.POSITIVE_INFINITY)) {
     throw new RangeError(
@@ -80,7 +88,17 @@ export function formatBytes(bytes: number): string {
 
 type IndexArray = Uint16Array | Uint32Array;
 
-/** Positions (scaled by `radius`) and indices of the indexed sphere. */
+/**
+ * Positions (scaled by `radius`) and indices of the indexed sphere.
+ *
+ * Scratch lives in one Uint32Array of 3T entries (12n, with n = T/4 the triangles of level L − 1): the Uint32
+ * index array itself when the indices are Uint32, so the large levels allocate nothing but their outputs.
+ * Layout: [0, 3n) the edge table of level L − 1; [3n, 4.5n) and [4.5n, 6n) two regions for levels L − 2,
+ * L − 3, … (alternating, each level's edge table then its triangle edge ids); [6n, 12n) one record per
+ * triangle of level L − 1, its three corners and the level-L midpoint vertices of its three edges. The last
+ * pass turns record t (entries 6n + 6t …) into the four output triangles 12t … 12t + 11 in place: it reads a
+ * record before writing, and 12t + 11 < 6n + 6(t + 1) for every t < n, so no unread record is overwritten.
+ */
 function buildIndexed(
   base: SphereBase,
   level: number,
@@ -94,17 +112,23 @@ function buildIndexed(
   for (let i = 0; i < vertices.length; i++) positions[i] = vertices[i] * radius;
   if (level === 0) return { positions, indices: Uint16Array.from(faces) };
 
-  const indices = vertexCount <= 65536 ? new Uint16Array(3 * triangles) : new Uint32Array(3 * triangles);
-  // Scratch: the edge table (2 endpoints per edge; 2E = 3T) and the edge ids of every triangle (3T) of one
-  // level. Levels alternate between two regions: A holds level L − 1 (and L − 3, …), B holds L − 2 (and L − 4, …),
-  // so level 0 starts in A when L is odd.
-  const sizeA = (3 * triangles) / 4;
-  const regionA = [new Uint32Array(sizeA), new Uint32Array(sizeA)];
-  const regionB = level >= 2 ? [new Uint32Array(sizeA / 4), new Uint32Array(sizeA / 4)] : regionA;
-  let [edges, tris] = level % 2 ? regionA : regionB;
-  let [nextEdges, nextTris] = level % 2 ? regionB : regionA;
+  const n = triangles / 4;
+  const wide = vertexCount > 65536;
+  const indices = wide ? new Uint32Array(3 * triangles) : new Uint16Array(3 * triangles);
+  const scratch = wide ? (indices as Uint32Array) : new Uint32Array(3 * triangles);
+  const lastEdges = scratch.subarray(0, 3 * n);
+  const records = scratch.subarray(6 * n);
+  let vertexBase = vertices.length / 3;
 
-  // Level 0: each triangle edge gets an id, ×2, + 1 when the triangle runs against the stored direction.
+  // Level 0 state: edge table and triangle edge ids. With level 1 it is level L − 1 (edges straight into
+  // lastEdges); else it is level L − 2 − j, in region A = [3n, 4.5n) when j is even, B = [4.5n, 6n) when odd.
+  const regionA = 3 * n;
+  const regionB = 4.5 * n;
+  let at = level % 2 === 0 ? regionA : regionB;
+  let edges = level === 1 ? lastEdges : scratch.subarray(at, at + 3 * f0);
+  let tris =
+    level === 1 ? scratch.subarray(regionA, regionA + 3 * f0) : scratch.subarray(at + 3 * f0, at + 6 * f0);
+  // Each triangle edge gets an id, ×2, + 1 when the triangle runs against the stored direction.
   let edgeCount = 0;
   for (let c = 0; c < faces.length; c++) {
     const u = faces[c];
@@ -120,19 +144,38 @@ function buildIndexed(
     }
     tris[c] = id;
   }
+  midpoints(positions, edges, edgeCount, vertexBase, radius);
 
-  let vertexBase = vertices.length / 3;
-  let triangleCount = f0;
-  for (let k = 1; k < level; k++) {
-    midpoints(positions, edges, edgeCount, vertexBase, radius);
-    refine(edges, tris, edgeCount, triangleCount, vertexBase, nextEdges, nextTris);
+  if (level === 1) {
+    for (let t = 0; t < f0; t++) {
+      for (let k = 0; k < 3; k++) {
+        records[6 * t + k] = faces[3 * t + k];
+        records[6 * t + 3 + k] = vertexBase + (tris[3 * t + k] >>> 1);
+      }
+    }
+  } else {
+    let triangleCount = f0;
+    for (let k = 0; k < level - 2; k++) {
+      // Level k (in one region) → level k + 1 (in the other).
+      at = at === regionA ? regionB : regionA;
+      const nextEdgeCount = 2 * edgeCount + 3 * triangleCount;
+      const nextEdges = scratch.subarray(at, at + 2 * nextEdgeCount);
+      const nextTris = scratch.subarray(at + 2 * nextEdgeCount, at + 2 * nextEdgeCount + 12 * triangleCount);
+      refine(edges, tris, edgeCount, triangleCount, vertexBase, nextEdges, nextTris);
+      vertexBase += edgeCount;
+      edgeCount = nextEdgeCount;
+      triangleCount *= 4;
+      edges = nextEdges;
+      tris = nextTris;
+      midpoints(positions, edges, edgeCount, vertexBase, radius);
+    }
+    // Level L − 2 → the edge table and the records of level L − 1.
+    refineLast(edges, tris, edgeCount, triangleCount, vertexBase, lastEdges, records);
     vertexBase += edgeCount;
     edgeCount = 2 * edgeCount + 3 * triangleCount;
-    triangleCount *= 4;
-    [edges, tris, nextEdges, nextTris] = [nextEdges, nextTris, edges, tris];
+    midpoints(positions, lastEdges, edgeCount, vertexBase, radius);
   }
-  midpoints(positions, edges, edgeCount, vertexBase, radius);
-  finalTriangles(edges, tris, triangleCount, vertexBase, indices);
+  finalTriangles(records, n, indices);
   return { positions, indices };
 }
 
@@ -157,6 +200,17 @@ function midpoints(
   }
 }
 
+/** Edge e (u → w) with midpoint m = vertexBase + e becomes edges 2e (u → m) and 2e + 1 (m → w). */
+function splitEdges(edges: Uint32Array, edgeCount: number, vertexBase: number, nextEdges: Uint32Array): void {
+  for (let e = 0; e < edgeCount; e++) {
+    const m = vertexBase + e;
+    nextEdges[4 * e] = edges[2 * e];
+    nextEdges[4 * e + 1] = m;
+    nextEdges[4 * e + 2] = m;
+    nextEdges[4 * e + 3] = edges[2 * e + 1];
+  }
+}
+
 /**
  * The edge table and triangle edge ids of the next level. Edge e (u → w) with midpoint m becomes 2e (u → m)
  * and 2e + 1 (m → w); triangle t with midpoints m0, m1, m2 (of its edges 0, 1, 2) adds interior edges
@@ -173,13 +227,7 @@ function refine(
   nextEdges: Uint32Array,
   nextTris: Uint32Array,
 ): void {
-  for (let e = 0; e < edgeCount; e++) {
-    const m = vertexBase + e;
-    nextEdges[4 * e] = edges[2 * e];
-    nextEdges[4 * e + 1] = m;
-    nextEdges[4 * e + 2] = m;
-    nextEdges[4 * e + 3] = edges[2 * e + 1];
-  }
+  splitEdges(edges, edgeCount, vertexBase, nextEdges);
   for (let t = 0, interior = 2 * edgeCount; t < triangleCount; t++, interior += 3) {
     const p0 = tris[3 * t];
     const p1 = tris[3 * t + 1];
@@ -214,34 +262,94 @@ function refine(
   }
 }
 
-/** The last level's vertex indices; a triangle's corner i is where its edge id p_i starts: edges[p_i]. */
-function finalTriangles(
+/**
+ * As {@link refine}, but each child triangle is written as a record: its corners, then the vertices the next
+ * (final) level puts at its edges' midpoints. A child's edge id x gives that vertex as next base + (x >>> 1):
+ * along parent edge p the first half is p and the second p ^ 1; interior edge i gives interior + i.
+ */
+function refineLast(
   edges: Uint32Array,
   tris: Uint32Array,
+  edgeCount: number,
   triangleCount: number,
   vertexBase: number,
-  out: IndexArray,
+  nextEdges: Uint32Array,
+  records: Uint32Array,
 ): void {
-  for (let t = 0; t < triangleCount; t++) {
+  splitEdges(edges, edgeCount, vertexBase, nextEdges);
+  const next = vertexBase + edgeCount; // first vertex of the final level
+  for (let t = 0, interior = 2 * edgeCount; t < triangleCount; t++, interior += 3) {
     const p0 = tris[3 * t];
     const p1 = tris[3 * t + 1];
     const p2 = tris[3 * t + 2];
+    const a = edges[p0];
+    const b = edges[p1];
+    const c = edges[p2];
     const m0 = vertexBase + (p0 >>> 1);
     const m1 = vertexBase + (p1 >>> 1);
     const m2 = vertexBase + (p2 >>> 1);
-    const c = 12 * t;
-    out[c] = edges[p0];
-    out[c + 1] = m0;
-    out[c + 2] = m2;
-    out[c + 3] = m0;
-    out[c + 4] = edges[p1];
-    out[c + 5] = m1;
-    out[c + 6] = m2;
-    out[c + 7] = m1;
-    out[c + 8] = edges[p2];
-    out[c + 9] = m0;
-    out[c + 10] = m1;
-    out[c + 11] = m2;
+    const o = 2 * interior;
+    nextEdges[o] = m0;
+    nextEdges[o + 1] = m1;
+    nextEdges[o + 2] = m1;
+    nextEdges[o + 3] = m2;
+    nextEdges[o + 4] = m2;
+    nextEdges[o + 5] = m0;
+    const i0 = next + interior;
+    const r = 24 * t;
+    records[r] = a; // (a, m0, m2)
+    records[r + 1] = m0;
+    records[r + 2] = m2;
+    records[r + 3] = next + p0;
+    records[r + 4] = i0 + 2;
+    records[r + 5] = next + (p2 ^ 1);
+    records[r + 6] = m0; // (m0, b, m1)
+    records[r + 7] = b;
+    records[r + 8] = m1;
+    records[r + 9] = next + (p0 ^ 1);
+    records[r + 10] = next + p1;
+    records[r + 11] = i0;
+    records[r + 12] = m2; // (m2, m1, c)
+    records[r + 13] = m1;
+    records[r + 14] = c;
+    records[r + 15] = i0 + 1;
+    records[r + 16] = next + (p1 ^ 1);
+    records[r + 17] = next + p2;
+    records[r + 18] = m0; // (m0, m1, m2)
+    records[r + 19] = m1;
+    records[r + 20] = m2;
+    records[r + 21] = i0;
+    records[r + 22] = i0 + 1;
+    records[r + 23] = i0 + 2;
+  }
+}
+
+/**
+ * The output: record (a, b, c, m0, m1, m2) becomes triangles (a, m0, m2), (m0, b, m1), (m2, m1, c),
+ * (m0, m1, m2). `out` may be the array `records` views (in place; see {@link buildIndexed}).
+ */
+function finalTriangles(records: Uint32Array, count: number, out: IndexArray): void {
+  for (let t = 0; t < count; t++) {
+    const r = 6 * t;
+    const a = records[r];
+    const b = records[r + 1];
+    const c = records[r + 2];
+    const m0 = records[r + 3];
+    const m1 = records[r + 4];
+    const m2 = records[r + 5];
+    const o = 12 * t;
+    out[o] = a;
+    out[o + 1] = m0;
+    out[o + 2] = m2;
+    out[o + 3] = m0;
+    out[o + 4] = b;
+    out[o + 5] = m1;
+    out[o + 6] = m2;
+    out[o + 7] = m1;
+    out[o + 8] = c;
+    out[o + 9] = m0;
+    out[o + 10] = m1;
+    out[o + 11] = m2;
   }
 }
 
