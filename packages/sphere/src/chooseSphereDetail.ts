@@ -29,7 +29,10 @@ export interface SphereDetail {
   readonly level: number;
   /** Triangles drawn: F0 · 4^level. */
   readonly triangles: number;
-  /** Largest radial error on screen, in pixels: radiusPx · sphereError(base, level) ≤ maxErrorPx. */
+  /**
+   * Largest radial error on screen, in pixels: radiusPx · sphereError(base, level) ≤ maxErrorPx, for the
+   * exact-vertex mesh (float32 positions add up to about radiusPx · 2^-24, not budgeted).
+   */
   readonly errorPx: number;
 }
 
@@ -38,6 +41,11 @@ export interface SphereDetail {
  * level), is at most `maxErrorPx`. Cheapest means fewest triangles. Ties cannot happen between bases (their
  * triangle counts are 4^(level+1), 2·4^(level+1) and 5·4^(level+1), never equal); if a caller's base list
  * repeated a base, the first wins.
+ *
+ * `errorPx` is the error of the exact-vertex mesh. The float32 mesh `subdivideSphere` returns may differ from it
+ * by up to about radiusPx · 2^-24 (6e-8 of the radius: see `sphereError`); that is deliberately not budgeted,
+ * since it stays below 1e-4 px for any radiusPx up to 1000 and below 1e-3 px up to 16,000, far under any
+ * budget a display can show, and the GPU's own float32 vertex transform rounds by the same order.
  *
  * @example
  * ```ts

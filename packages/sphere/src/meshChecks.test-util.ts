@@ -336,3 +336,49 @@ export function unmatchedTriangles(
   }
   return unmatched + Math.max(0, reference.length - ours.length);
 }
+
+/**
+ * The radial error of a float32 indexed mesh as built: the largest 1 − |p| / radius over every point p of every
+ * face, by the same closest-point region test as {@link closestPointError}, in scalars (millions of faces).
+ */
+export function meshRadialError(positions: Float32Array, indices: ArrayLike<number>, radius: number): number {
+  let worst = Number.NEGATIVE_INFINITY;
+  for (let t = 0; t < indices.length; t += 3) {
+    const i = 3 * indices[t];
+    const j = 3 * indices[t + 1];
+    const k = 3 * indices[t + 2];
+    const ax = positions[i] / radius;
+    const ay = positions[i + 1] / radius;
+    const az = positions[i + 2] / radius;
+    const abx = positions[j] / radius - ax;
+    const aby = positions[j + 1] / radius - ay;
+    const abz = positions[j + 2] / radius - az;
+    const acx = positions[k] / radius - ax;
+    const acy = positions[k + 1] / radius - ay;
+    const acz = positions[k + 2] / radius - az;
+    // Closest point a + v·ab + w·ac to the origin (Ericson 5.1.5 with p = 0).
+    const d1 = -(abx * ax + aby * ay + abz * az);
+    const d2 = -(acx * ax + acy * ay + acz * az);
+    const d3 = d1 - (abx * abx + aby * aby + abz * abz);
+    const d4 = d2 - (acx * abx + acy * aby + acz * abz);
+    const d5 = d1 - (abx * acx + aby * acy + abz * acz);
+    const d6 = d2 - (acx * acx + acy * acy + acz * acz);
+    let v: number;
+    let w: number;
+    const va = d3 * d6 - d5 * d4;
+    const vb = d5 * d2 - d1 * d6;
+    const vc = d1 * d4 - d3 * d2;
+    if (d1 <= 0 && d2 <= 0) [v, w] = [0, 0];
+    else if (d3 >= 0 && d4 <= d3) [v, w] = [1, 0];
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0) [v, w] = [d1 / (d1 - d3), 0];
+    else if (d6 >= 0 && d5 <= d6) [v, w] = [0, 1];
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0) [v, w] = [0, d2 / (d2 - d6)];
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+      const s = (d4 - d3) / (d4 - d3 + (d5 - d6));
+      [v, w] = [1 - s, s];
+    } else [v, w] = [vb / (va + vb + vc), vc / (va + vb + vc)];
+    const e = 1 - Math.hypot(ax + v * abx + w * acx, ay + v * aby + w * acy, az + v * abz + w * acz);
+    if (e > worst) worst = e;
+  }
+  return worst;
+}

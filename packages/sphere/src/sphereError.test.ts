@@ -7,6 +7,7 @@ import {
   closestPointError,
   lectureSubdivision,
   lectureTetrahedron,
+  meshRadialError,
   meshTriangles,
   unitTriangles,
 } from './meshChecks.test-util.js';
@@ -94,6 +95,31 @@ describe('sphereError', () => {
       }
     }
   });
+
+  // sphereError is exact for the exact-vertex mesh. The mesh subdivideSphere returns stores float32
+  // coordinates: rounding one moves it by at most half an ulp, ≤ 2^-24 · |coordinate|, so a vertex moves by at
+  // most 2^-24 · radius and so does every point of a face (a convex combination of its corners). A second
+  // 2^-24 · radius covers the drift of midpoints computed from already-rounded parents (a face's circumradius ρ
+  // moves by a few 2^-24, its depth by ρ times that) and the measurement's own double arithmetic. Measured:
+  // at most 0.43 · 2^-24 · radius, either sign.
+  const FLOAT32_ERROR_TOLERANCE = 2 ** -23;
+  const FLOAT32_LEVELS: [SphereBase, number[], number][] = [
+    ['tetrahedron', [6, 7, 8, 9, 10], 1],
+    ['octahedron', [6, 7, 8, 9], 3.7],
+    ['icosahedron', [6, 7, 8], 1],
+  ];
+  for (const [base, levels, radius] of FLOAT32_LEVELS) {
+    it(`${base} levels ${levels[0]}–${levels.at(-1)}, radius ${radius}: the float32 mesh's error is radius · sphereError within radius · 2^-23`, () => {
+      for (const level of levels) {
+        const mesh = subdivideSphere({ base, level, radius, normals: 'none' });
+        const measured = radius * meshRadialError(mesh.positions, mesh.indices!, radius);
+        const exact = radius * sphereError(base, level);
+        expect(Math.abs(measured - exact), `level ${level}`).toBeLessThanOrEqual(
+          FLOAT32_ERROR_TOLERANCE * radius,
+        );
+      }
+    });
+  }
 
   it('level 0: the inradius gap of each solid, 1 − √(1 − ρ²) with ρ the face circumradius', () => {
     expect(sphereError('tetrahedron', 0)).toBeCloseTo(2 / 3, 14); // inradius 1/3
