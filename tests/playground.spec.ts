@@ -374,6 +374,9 @@ test.describe('the playground', () => {
     await text.fill(broken);
     await expect(page.getByTestId('shader-errors')).toContainText(`fragment line ${at + 2}:`);
     await expect(page.getByTestId('shader-status')).toHaveText(/last good program keeps rendering/);
+    // The page says where the edit lives: this browser, not the URL (the state in the hash has no GLSL).
+    await expect(page.getByTestId('shader-note')).toContainText('not in the URL');
+    expect(JSON.stringify(await urlState(page))).not.toContain('this is not glsl');
     await settle(page);
     expect(await picture(page)).toBe(good);
     // It keeps rendering: a change still draws a new frame with the last good program.

@@ -94,6 +94,11 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
           {status}
         </span>
       </div>
+      {edited && (
+        <p className="shader-note" data-testid="shader-note">
+          This edit is kept in this browser only (localStorage, per variant), not in the URL or a copied link.
+        </p>
+      )}
       <pre className="shader-defines" title="defines of this variant (set by the material)">
         {defines || '(no defines)'}
       </pre>
