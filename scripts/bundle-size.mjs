@@ -28,8 +28,13 @@ const result = await build({
   logLevel: 'warn',
   build: { write: false, emptyOutDir: false },
 });
-const outputs = (Array.isArray(result) ? result : [result]).flatMap((r) => r.output);
-const chunks = new Map(outputs.filter((o) => o.type === 'chunk').map((c) => [c.fileName, c]));
+/** @typedef {import('vite').Rolldown.OutputChunk} Chunk */
+const outputs = /** @type {import('vite').Rolldown.RolldownOutput[]} */ (
+  Array.isArray(result) ? result : [result]
+).flatMap((r) => r.output);
+/** @type {Map<string, Chunk>} */
+const chunks = new Map();
+for (const o of outputs) if (o.type === 'chunk') chunks.set(o.fileName, o);
 
 const entry = [...chunks.values()].find(
   (c) => c.isEntry && c.facadeModuleId?.endsWith(`${sep}playground${sep}index.html`),
@@ -37,9 +42,10 @@ const entry = [...chunks.values()].find(
 if (!entry) throw new Error('bundle-size: no chunk for playground/index.html in the build');
 
 /** The entry and every chunk it imports statically (what the page loads before its first frame). */
+/** @type {Chunk[]} */
 const loaded = [];
 const seen = new Set();
-const visit = (fileName) => {
+const visit = (/** @type {string} */ fileName) => {
   if (seen.has(fileName)) return;
   seen.add(fileName);
   const chunk = chunks.get(fileName);
@@ -49,14 +55,15 @@ const visit = (fileName) => {
 };
 visit(entry.fileName);
 
-const inThree = (id) => /[\\/]node_modules[\\/]three[\\/]/.test(id);
-const inPackages = (id) => id.startsWith(`${root}packages${sep}`) || id.startsWith(`${root}packages/`);
+const inThree = (/** @type {string} */ id) => /[\\/]node_modules[\\/]three[\\/]/.test(id);
+const inPackages = (/** @type {string} */ id) =>
+  id.startsWith(`${root}packages${sep}`) || id.startsWith(`${root}packages/`);
 
 /**
  * A chunk's group: all of its modules from three, all from packages/, or otherwise the app's. The bundler's
  * own virtual helpers (ids starting with NUL: the module-preload polyfill, the runtime) do not decide it.
  */
-function group(chunk) {
+function group(/** @type {Chunk} */ chunk) {
   const ids = Object.keys(chunk.modules).filter(
     (id) => !id.startsWith('\0') && chunk.modules[id].renderedLength > 0,
   );
@@ -70,6 +77,7 @@ const LABELS = {
   app: 'React, react-dom, leva and the app',
   shadelab: 'the @shadelab packages (their own chunks)',
 };
+/** @type {Record<string, { raw: number, gzip: number, chunks: { file: string, raw: number, gzip: number }[] }>} */
 const totals = Object.fromEntries(Object.keys(LABELS).map((k) => [k, { raw: 0, gzip: 0, chunks: [] }]));
 for (const chunk of loaded) {
   const code = Buffer.from(chunk.code);
@@ -84,7 +92,7 @@ const all = Object.values(totals).reduce((a, t) => ({ raw: a.raw + t.raw, gzip: 
   gzip: 0,
 });
 
-const kB = (n) =>
+const kB = (/** @type {number} */ n) =>
   `${(n / 1000).toLocaleString('en-US', { minimumFractionDigits: 1, maximumFractionDigits: 1 })} kB`;
 const lines = [
   '| what `index.html` loads (`vite build`) | raw | gzip -9 |',
