@@ -1,5 +1,5 @@
 // Error against frame time for every measured option (recharts), the Pareto front as a line, and the
-// current choice marked.
+// current choice marked on its own bench point (the bench's numbers, not the live view's).
 import {
   CartesianGrid,
   Legend,
@@ -10,7 +10,16 @@ import {
   XAxis,
   YAxis,
 } from 'recharts';
-import { type ErrorMetric, paretoFront, TRADE_POINTS, type TradePoint } from './benchData';
+import {
+  type ChartPoint,
+  chartPoints,
+  currentMarker,
+  type ErrorMetric,
+  paretoFront,
+  TRADE_POINTS,
+  type TradePoint,
+} from './benchData';
+import type { TradeOption } from './tradeoffScene';
 
 const COLORS: Record<TradePoint['shading'], string> = {
   flat: '#e0a040',
@@ -19,43 +28,17 @@ const COLORS: Record<TradePoint['shading'], string> = {
   impostor: '#ff60c0',
 };
 
-/** Log axes cannot show 0: errors below this are drawn at it. */
-const FLOOR = 0.01;
-
-interface ChartPoint {
-  name: string;
-  x: number;
-  y: number;
-  triangles: number;
-  bytes: number;
-  error: number;
-}
-
-function toChart(points: readonly TradePoint[], metric: ErrorMetric): ChartPoint[] {
-  return points.map((p) => ({
-    name: p.name,
-    x: p.frameMs,
-    y: Math.max(p[metric], FLOOR),
-    triangles: p.triangles,
-    bytes: p.bytes,
-    error: p[metric],
-  }));
-}
-
 export interface ParetoChartProps {
   metric: ErrorMetric;
-  /** The bench name of the current option (`'phong icosahedron 4'`, `'impostor'`). */
-  current: string;
+  /** The current option: marked at its bench point (when the bench measured it). */
+  current: TradeOption;
   onPick?: (point: TradePoint) => void;
 }
 
 export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
   const label = metric === 'rmse' ? 'interior RMSE (8-bit sRGB)' : 'silhouette error (px)';
-  const front = toChart(paretoFront(TRADE_POINTS, metric), metric);
-  const chosen = toChart(
-    TRADE_POINTS.filter((p) => p.name === current),
-    metric,
-  );
+  const front = chartPoints(paretoFront(TRADE_POINTS, metric), metric);
+  const chosen = currentMarker(current, metric);
   const pick = (data: unknown) => {
     const name = (data as { payload?: ChartPoint } | undefined)?.payload?.name;
     const point = TRADE_POINTS.find((p) => p.name === name);
@@ -103,7 +86,7 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
           <Scatter
             key={shading}
             name={shading}
-            data={toChart(
+            data={chartPoints(
               TRADE_POINTS.filter((p) => p.shading === shading),
               metric,
             )}
@@ -120,7 +103,13 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
           shape={() => <g />}
           isAnimationActive={false}
         />
-        <Scatter name="current" data={chosen} fill="#ff3030" shape="star" isAnimationActive={false} />
+        <Scatter
+          name="current option (bench point)"
+          data={chosen}
+          fill="#ff3030"
+          shape="star"
+          isAnimationActive={false}
+        />
       </ScatterChart>
     </ResponsiveContainer>
   );

@@ -1,4 +1,5 @@
-// The trade-off page: the measured Pareto chart (error against frame time, the current choice marked), and
+// The trade-off page: the measured Pareto chart (error against frame time, the current choice marked at its
+// bench point), and
 // the current view drawn with the chosen option beside its error heat map against the exact reference,
 // recomputed live whenever the option or the zoom changes. The scene comes from the playground's URL state
 // (`#s=…`, same schema and parser) when there is one, else the lecture's.
@@ -7,13 +8,28 @@ import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
 import { chooseSphereDetail, projectedRadiusPx } from '@shadelab/sphere/detail';
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { readUrlState } from '../state/persist';
-import { cheapestMeeting, type ErrorMetric, TRADE_CONDITIONS, type TradePoint } from './benchData';
-import { errorHeatmap } from './errorHeatmap';
+import {
+  cheapestMeeting,
+  type ErrorMetric,
+  TRADE_CONDITIONS,
+  TRADE_POINTS,
+  type TradePoint,
+} from './benchData';
+import {
+  errorHeatmap,
+  HEAT_BACKGROUND,
+  HEAT_EXACT,
+  HEAT_RAMP_STOPS,
+  heatColor,
+  type Rgb8,
+  silhouetteColor,
+} from './errorHeatmap';
 import { ParetoChart } from './ParetoChart';
 import { optionCost, optionKey, type TradeOption, TradeoffScene, type TradeView } from './tradeoffScene';
 
 const WIDTH = 640;
 const HEIGHT = 360;
+/** The highest level the page draws live (and auto detail picks; tests/tradeoff-page.spec.ts expects 7). */
 const MAX_LEVEL = 7;
 
 interface Initial {
@@ -36,7 +52,7 @@ function initialFromUrl(): Initial {
       fovy: camera.fovy,
       eye: camera.eye,
       scale: model.scale,
-      light: lights[0]?.position ?? [-5, 10, 20],
+      lights: lights.length > 0 ? lights : undefined,
       lighting: material.lighting,
       celBands: material.celBands,
       shininess: material.shininess,
@@ -126,6 +142,20 @@ export function TradeoffApp() {
     setOption(s === 'impostor' ? { shading: 'impostor' } : { shading: s, base, level });
   const pick = (p: TradePoint) => setOption(p.option);
   const cheapest = cheapestMeeting(targetRmse, targetSilhouette);
+  const bench = TRADE_POINTS.find((p) => p.name === name);
+  const swatch = (c: Rgb8, label: string) => (
+    <span className="swatch" key={label}>
+      <span
+        style={{
+          display: 'inline-block',
+          width: '0.9em',
+          height: '0.9em',
+          background: `rgb(${c.join(',')})`,
+        }}
+      />{' '}
+      {label}
+    </span>
+  );
 
   return (
     <div className="tradeoff">
@@ -243,9 +273,12 @@ export function TradeoffApp() {
       <section>
         <h2>error against the exact reference</h2>
         <canvas ref={heatCanvas} width={WIDTH} height={HEIGHT} data-testid="heatmap" />
-        <p className="legend">
-          grey: exact · yellow → red: interior colour error 1 … 16+ codes · cyan: silhouette off (brighter =
-          farther)
+        <p className="legend" data-testid="legend">
+          {swatch(HEAT_EXACT, 'exact (or within 1 px of the edge, not compared)')} ·{' '}
+          {HEAT_RAMP_STOPS.map((e) => swatch(heatColor(e), `${e}${e === 16 ? '+' : ''}`))} interior colour
+          error (8-bit codes) · {swatch(silhouetteColor(0.5), '→')}
+          {swatch(silhouetteColor(2.6), 'silhouette off (brighter = farther)')} ·{' '}
+          {swatch(HEAT_BACKGROUND, 'background')}
         </p>
         {live && (
           <dl className="stats" data-testid="stats">
@@ -261,11 +294,16 @@ export function TradeoffApp() {
             <dd>{live.ms.toFixed(0)} ms (CPU reference + metrics)</dd>
           </dl>
         )}
+        <p className="note" data-testid="bench-point">
+          {bench
+            ? `The ★ in the chart is this option's bench point (lecture scene, ${TRADE_CONDITIONS.width}×${TRADE_CONDITIONS.height}): ${bench.frameMs.toFixed(1)} ms, RMSE ${bench.rmse.toFixed(2)}, silhouette ${bench.silhouettePx.toFixed(2)} px. The numbers above are this view's, live.`
+            : 'The bench has not measured this option (no ★ in the chart); the numbers above are this view, live.'}
+        </p>
         {failure && <p className="note">{failure}</p>}
       </section>
       <section className="chart">
         <h2>measured trade (click a point to draw it)</h2>
-        <ParetoChart metric={metric} current={name} onPick={pick} />
+        <ParetoChart metric={metric} current={option} onPick={pick} />
         <p className="note">
           Lecture scene at {TRADE_CONDITIONS.width}×{TRADE_CONDITIONS.height}, median of{' '}
           {TRADE_CONDITIONS.frames} frames; {TRADE_CONDITIONS.note}; load average when measured{' '}

@@ -1,6 +1,6 @@
 // The measured trade (bench/results/tradeoff.json, written by `npm run bench`) as chart points.
 import results from '../../../bench/results/tradeoff.json';
-import type { TradeOption } from './tradeoffScene';
+import { optionCost, optionKey, type TradeOption } from './tradeoffScene';
 
 /** One measured option. */
 export interface TradePoint {
@@ -18,26 +18,35 @@ export interface TradePoint {
 
 interface Row {
   option: TradeOption;
-  triangles: number;
-  bytes: number;
   error: { rmse: number; max: number; silhouettePx: number };
-  frameMs: { median: number };
+  /** null in a `--no-timing` run. */
+  frameMs: { median: number } | null;
 }
 
-/** Every measured option, in the bench's order. */
-export const TRADE_POINTS: readonly TradePoint[] = Object.entries(results.rows as Record<string, Row>).map(
-  ([name, r]) => ({
-    name,
-    option: r.option,
-    shading: r.option.shading,
-    frameMs: r.frameMs.median,
-    rmse: r.error.rmse,
-    max: r.error.max,
-    silhouettePx: r.error.silhouettePx,
-    triangles: r.triangles,
-    bytes: r.bytes,
-  }),
-);
+/**
+ * Every measured option, in the bench's order. Triangles and bytes are those of what the scene draws now
+ * (`optionCost`: exact, and current even when the timed results predate a geometry change such as flat
+ * shading's move to flatShadingGeometry); frame time and errors are the bench's.
+ */
+export const TRADE_POINTS: readonly TradePoint[] = Object.entries(
+  results.rows as Record<string, Row>,
+).flatMap(([name, r]) => {
+  if (r.frameMs === null) return [];
+  const cost = optionCost(r.option);
+  return [
+    {
+      name,
+      option: r.option,
+      shading: r.option.shading,
+      frameMs: r.frameMs.median,
+      rmse: r.error.rmse,
+      max: r.error.max,
+      silhouettePx: r.error.silhouettePx,
+      triangles: cost.triangles,
+      bytes: cost.bytes,
+    },
+  ];
+});
 
 /** The measurement conditions, for the caption. */
 export const TRADE_CONDITIONS = {
@@ -50,6 +59,45 @@ export const TRADE_CONDITIONS = {
 
 /** Which error the chart plots. */
 export type ErrorMetric = 'rmse' | 'silhouettePx';
+
+/** Log axes cannot show 0: errors below this are drawn at it. */
+export const CHART_FLOOR = 0.01;
+
+/** One point as the chart draws it: x = bench frame time (ms), y = the error (floored for the log axis). */
+export interface ChartPoint {
+  name: string;
+  x: number;
+  y: number;
+  triangles: number;
+  bytes: number;
+  /** The error itself (not floored). */
+  error: number;
+}
+
+/** Chart points of `points` for `metric`. */
+export function chartPoints(points: readonly TradePoint[], metric: ErrorMetric): ChartPoint[] {
+  return points.map((p) => ({
+    name: p.name,
+    x: p.frameMs,
+    y: Math.max(p[metric], CHART_FLOOR),
+    triangles: p.triangles,
+    bytes: p.bytes,
+    error: p[metric],
+  }));
+}
+
+/**
+ * The marker of the current option: its own bench point (the same x and y as its dot in the chart), or none
+ * when the bench did not measure it. It shows the bench's frame time and error for the lecture scene at
+ * 1280×720, not the live view's.
+ */
+export function currentMarker(option: TradeOption, metric: ErrorMetric): ChartPoint[] {
+  const name = optionKey(option);
+  return chartPoints(
+    TRADE_POINTS.filter((p) => p.name === name),
+    metric,
+  );
+}
 
 /** The Pareto front for `metric`: no other option is both faster and more accurate. */
 export function paretoFront(points: readonly TradePoint[], metric: ErrorMetric): TradePoint[] {
