@@ -56,19 +56,53 @@ export function buildPackages() {
 
 /**
  * Make sure a Chromium exists for Playwright: the one named by SHADELAB_CHROMIUM, Debian's
- * /usr/bin/chromium, or Playwright's own download. When none is found and apt-get is usable,
- * install Debian's chromium.
+ * /usr/bin/chromium, or Playwright's own download. When none is found and apt-get is usable (as root),
+ * install Debian's chromium. Exits with a message saying what was searched otherwise.
  */
 export async function ensureBrowser() {
-  const { chromiumExecutable, describeBrowserSearch } = await import('./browser.mjs');
-  if (chromiumExecutable() !== null) return;
-  const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
-  if (existsSync('/usr/bin/apt-get') && isRoot) {
-    console.log('shadelab: no Chromium found; installing Debian chromium (apt-get)…');
-    must('apt-get', ['update', '-qq']);
-    must('apt-get', ['install', '-y', '-qq', 'chromium']);
-    if (chromiumExecutable() !== null) return;
+  const { lookupChromium, describeBrowserSearch } = await import('./browser.mjs');
+  const failure = browserSetup({
+    lookup: lookupChromium,
+    describe: describeBrowserSearch,
+    hasAptGet: existsSync('/usr/bin/apt-get'),
+    isRoot: typeof process.getuid === 'function' && process.getuid() === 0,
+    runCommand: run,
+  });
+  if (failure !== undefined) {
+    console.error(`shadelab: ${failure}`);
+    process.exit(1);
   }
-  console.error(`shadelab: no Chromium for Playwright. ${describeBrowserSearch()}`);
-  process.exit(1);
+}
+
+/**
+ * The decisions of {@link ensureBrowser}, with every check and command passed in (tests fake them).
+ * A SHADELAB_CHROMIUM naming a missing file fails at once (installing another browser would not help);
+ * with no browser, apt-get installs Debian's chromium when run as root; without root, or without apt-get,
+ * or when apt-get fails, the message says so and what was searched.
+ * @param {{ lookup: () => import('./browser.mjs').ChromiumLookup,
+ *   describe: (lookup: import('./browser.mjs').ChromiumLookup) => string, hasAptGet: boolean, isRoot: boolean,
+ *   runCommand: (cmd: string, args: string[]) => number, log?: (message: string) => void }} checks
+ * @returns {string | undefined} the error message, or undefined when a Chromium is there.
+ */
+export function browserSetup({ lookup, describe, hasAptGet, isRoot, runCommand, log = console.log }) {
+  const first = lookup();
+  if (first.problem) return first.problem;
+  if (first.executable !== null) return undefined;
+  if (!hasAptGet) return `no Chromium for Playwright. ${describe(first)}`;
+  if (!isRoot) {
+    return `no Chromium for Playwright, and installing Debian's chromium with apt-get needs root: run \`sudo apt-get install chromium\` (or npm test as root). ${describe(first)}`;
+  }
+  log('shadelab: no Chromium found; installing Debian chromium (apt-get)…');
+  for (const args of [
+    ['update', '-qq'],
+    ['install', '-y', '-qq', 'chromium'],
+  ]) {
+    const code = runCommand('apt-get', args);
+    if (code !== 0) {
+      return `\`apt-get ${args.join(' ')}\` failed with exit code ${code}, so there is no Chromium for Playwright. ${describe(first)}`;
+    }
+  }
+  const after = lookup();
+  if (after.executable !== null) return undefined;
+  return `apt-get installed chromium, but no Chromium was found afterwards. ${describe(after)}`;
 }
