@@ -5,7 +5,7 @@
 // (`#s=…`, same schema and parser) when there is one, else the lecture's.
 import { compareToReference, type ImageError } from '@shadelab/reference';
 import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
-import { chooseSphereDetail, projectedRadiusPx } from '@shadelab/sphere/detail';
+import { chooseSphereDetail, silhouetteErrorScalePx } from '@shadelab/sphere/detail';
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { readUrlState } from '../state/persist';
 import {
@@ -105,9 +105,11 @@ export function TradeoffApp() {
     try {
       scene.setView({ ...initial.view, eye });
       if (auto && option.shading !== 'impostor') {
-        // detail 'auto': the cheapest base and level within 0.5 px on screen for this view.
+        // detail 'auto': the cheapest base and level within 0.5 px on screen for this view, from the bound on
+        // the outline's error in pixels per unit of radial error (not the projected radius, which understates
+        // it near the camera).
         scene.impostor.updateMatrixWorld();
-        const radiusPx = projectedRadiusPx({
+        const radiusPx = silhouetteErrorScalePx({
           camera: scene.camera,
           matrixWorld: scene.impostor.matrixWorld,
           viewportHeightPx: HEIGHT,
