@@ -780,6 +780,88 @@ describe('Trackball: lifecycle', () => {
     expect(changes).toHaveBeenCalledTimes(1);
   });
 
+  it('rotate(q) turns exactly as the same drag does (camera axes, parent, getWorldMatrix), stops a spin, sends change', () => {
+    const camera = new PerspectiveCamera();
+    camera.position.set(4, 3, 2);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    const parent = new Group();
+    parent.quaternion.setFromAxisAngle(new Vector3(1, 1, 0).normalize(), 0.7);
+    const setup = () => {
+      const mesh = new Mesh();
+      mesh.quaternion.setFromAxisAngle(new Vector3(0, 0, 1), 0.4);
+      parent.clone().add(mesh).updateMatrixWorld(true);
+      return mesh;
+    };
+    const byDrag = setup();
+    const element = makeElement();
+    const dragged = trackball(byDrag, element, { camera, mapping: 'arcball' });
+    drag(element, [
+      [CX, CY],
+      [CX + 40, CY - 30],
+    ]);
+    const byCall = setup();
+    const called = trackball(byCall, null, { camera, enableDamping: true });
+    const changes = vi.fn();
+    called.addEventListener('change', changes);
+    const r = dragged.rotation;
+    called.rotate(new Quaternion(-3 * r.x, -3 * r.y, -3 * r.z, -3 * r.w)); // any non-zero multiple: the same
+    expectSameRotation(called.rotation, dragged.rotation);
+    expectSameRotation(byCall.quaternion, byDrag.quaternion);
+    expectMatrixClose(called.getWorldMatrix(), dragged.getWorldMatrix());
+    expect(changes).toHaveBeenCalledTimes(1);
+    expect(called.update()).toBe(false); // no spin from a call
+    // Composition: a second call premultiplies, as a second drag would.
+    const q = new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), 0.3);
+    called.rotate(q);
+    expectSameRotation(called.rotation, q.clone().multiply(dragged.rotation));
+  });
+
+  it('setRotation(q) puts the trackball at q from the start orientation, keeps the zoom, and agrees with the lecture', () => {
+    const camera = new PerspectiveCamera();
+    camera.position.set(0, 0, 5);
+    camera.updateMatrixWorld();
+    const mesh = new Mesh();
+    mesh.quaternion.setFromAxisAngle(new Vector3(0, 0, 1), 0.4);
+    const home = mesh.quaternion.clone();
+    const element = makeElement();
+    const tb = trackball(mesh, element, { camera });
+    drag(element, [
+      [CX, CY],
+      [CX + 40, CY + 70],
+    ]);
+    tb.zoomBy(2);
+    camera.position.set(3, 1, 4);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    const q = new Quaternion().setFromAxisAngle(new Vector3(1, 2, 3).normalize(), 1.1);
+    tb.setRotation(q);
+    expectSameRotation(tb.rotation, q);
+    expect(tb.zoom).toBeCloseTo(2, 12);
+    // The object: home turned by C·q·C⁻¹ (C the camera's orientation now); the world matrix is the lecture's.
+    const turn = camera.quaternion.clone().multiply(q).multiply(camera.quaternion.clone().invert());
+    expectSameRotation(mesh.quaternion, turn.multiply(home));
+    expectMatrixClose(tb.getWorldMatrix(), trackballWorldMatrix(tb, camera));
+    // The identity is the start orientation, as reset() gives, without touching the zoom.
+    tb.setRotation(new Quaternion());
+    expect(mesh.quaternion.angleTo(home)).toBeLessThan(1e-12);
+    expect(tb.zoom).toBeCloseTo(2, 12);
+  });
+
+  it('refuses a zero, NaN or infinite quaternion in rotate and setRotation, naming it, and changes nothing', () => {
+    const tb = trackball(new Mesh(), null);
+    for (const bad of [
+      new Quaternion(0, 0, 0, 0),
+      new Quaternion(Number.NaN, 0, 0, 1),
+      new Quaternion(0, Infinity, 0, 1),
+    ]) {
+      expect(() => tb.rotate(bad)).toThrow(/rotation must be a finite, non-zero quaternion/);
+      expect(() => tb.setRotation(bad)).toThrow(RangeError);
+    }
+    expect(tb.rotation.toArray()).toEqual([0, 0, 0, 1]);
+    expect(tb.object.quaternion.toArray()).toEqual([0, 0, 0, 1]);
+  });
+
   it('works without an object: object is a detached Object3D that receives the rotation', () => {
     const element = makeElement();
     const tb = trackball(null, element);

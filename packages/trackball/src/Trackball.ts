@@ -72,6 +72,7 @@ const _frame = /* @__PURE__ */ new Quaternion();
 const _parent = /* @__PURE__ */ new Quaternion();
 const _eye = /* @__PURE__ */ new Vector3();
 const _parentInverse = /* @__PURE__ */ new Quaternion();
+const _identity = /* @__PURE__ */ new Quaternion();
 const _ball: Vec3 = [0, 0, 0];
 const _arc: Quat = [0, 0, 0, 1];
 
@@ -255,7 +256,10 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     return this._zoom;
   }
 
-  /** The trackball rotation in camera coordinates, a unit quaternion. Read-only: use {@link Trackball.reset}. */
+  /**
+   * The trackball rotation in camera coordinates, a unit quaternion. Read-only: change it with
+   * {@link Trackball.rotate}, {@link Trackball.setRotation} or {@link Trackball.reset}.
+   */
   get rotation(): Quaternion {
     return this._rotation;
   }
@@ -332,6 +336,40 @@ export class Trackball extends Controls<TrackballEventMap, Object3D> {
     this._spinAngle = 0;
     this._hasBallStart = false;
     this._setZoom(1);
+    this.dispatchEvent(_changeEvent);
+  }
+
+  /**
+   * Turn as a drag would: by `q`, a rotation in camera coordinates (`rotation = q · rotation`), the object
+   * about the camera's current axes. For keyboard turns and scripted motion. Stops any spin; sends `change`.
+   *
+   * @param q - A finite, non-zero quaternion (normalised here).
+   */
+  rotate(q: Quaternion): void {
+    this._turnBy(q, this._rotation, this.object.quaternion, this._world);
+  }
+
+  /**
+   * Set the rotation to `q` (camera coordinates, as {@link Trackball.rotation} reads it; for example a saved
+   * view): the object is put at its original orientation turned by `q` about the camera's current axes, and
+   * {@link Trackball.getWorldMatrix} becomes the lecture's `trackballWorldMatrix`. Zoom is kept. Stops any
+   * spin; sends `change`.
+   *
+   * @param q - A finite, non-zero quaternion (normalised here).
+   */
+  setRotation(q: Quaternion): void {
+    this._turnBy(q, _identity, this._objectHome, _identity);
+  }
+
+  private _turnBy(q: Quaternion, rotation: Quaternion, object: Quaternion, world: Quaternion): void {
+    const n = q.length();
+    if (!(n > 0 && n < Infinity)) {
+      throw new RangeError(`Trackball: rotation must be a finite, non-zero quaternion, got (${q.toArray()})`);
+    }
+    _delta.copy(q).normalize();
+    this._spinAngle = 0;
+    this._rotation.multiplyQuaternions(_delta, rotation).normalize();
+    this._rotateObject(_delta, object, world);
     this.dispatchEvent(_changeEvent);
   }
 
