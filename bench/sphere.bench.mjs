@@ -4,17 +4,21 @@
 // level, the cheapest base per error budget, and the cost of sphereError itself.
 //
 //   npx tsc -b packages/sphere && node bench/sphere.bench.mjs [--json bench/results/sphere.json] [--quick]
+//     [--levels 4,5]   (only these build levels: a small configuration to check that the script runs)
+//
+// Sub-millisecond builds (levels 4–5) are timed in batches: each timed sample runs the call enough times to
+// last about SAMPLE_MS and reports the time per call, so timer resolution and one-off pauses do not dominate.
 import { SPHERE_BASES, sphereCounts, subdivideSphere } from '@shadelab/sphere';
 import { sphereError } from '@shadelab/sphere/detail';
 import { IcosahedronGeometry } from 'three';
-import { measure, writeResults } from './lib/bench.mjs';
+import { arg, summarize, writeResults } from './lib/bench.mjs';
 
 /** @typedef {import('@shadelab/sphere').SphereBase} SphereBase */
 /** @typedef {import('@shadelab/sphere').SphereMesh} SphereMesh */
 /** @typedef {import('@shadelab/sphere').SubdivideSphereOptions} SubdivideSphereOptions */
 /** @typedef {Float32ArrayConstructor | Uint16ArrayConstructor | Uint32ArrayConstructor} ArrayKind */
 /** @typedef {[ArrayKind, number]} Slot one output array: its kind and length */
-/** @typedef {{ median: number, min: number, max: number, runs: number }} Timing */
+/** @typedef {{ median: number, min: number, max: number, runs: number, batch: number }} Timing per call; batch = calls per timed sample */
 /** @typedef {{ ours: Timing, plain: Timing, bytes: number, threeOverOurs: number, oursOverPlain: number }} Variant */
 /**
  * @typedef {{ base: SphereBase, level: number, triangles: number, threeDetail: number, threeTriangles: number,
@@ -23,7 +27,13 @@ import { measure, writeResults } from './lib/bench.mjs';
 /** @typedef {{ base: SphereBase, level: number, triangles: number, error: number, errorTimesTriangles: number }} ErrorRow */
 
 const quick = process.argv.includes('--quick');
-const LEVELS = quick ? [4, 6, 8] : [4, 5, 6, 7, 8, 9];
+const levelsArg = arg('--levels', '');
+const LEVELS = levelsArg ? levelsArg.split(',').map(Number) : quick ? [4, 6, 8] : [4, 5, 6, 7, 8, 9];
+if (!LEVELS.every((l) => Number.isInteger(l) && l >= 0 && l <= 12)) {
+  throw new RangeError(`--levels must be a comma-separated list of integers from 0 to 12; got ${levelsArg}`);
+}
+/** A timed sample lasts at least this long (ms): faster calls are repeated within it. */
+const SAMPLE_MS = 5;
 /** Like three's geometry, which also builds normals (and uvs). @type {import('@shadelab/sphere').SphereNormals} */
 const NORMALS = 'smooth';
 
@@ -32,6 +42,28 @@ function plan(triangles) {
   if (triangles >= 2_000_000) return { warmup: 1, runs: 5 };
   if (triangles >= 200_000) return { warmup: 2, runs: 7 };
   return { warmup: 5, runs: 15 };
+}
+
+/**
+ * Time `fn` per call (ms): `warmup` untimed calls, then `runs` timed samples of `batch` calls each. The batch
+ * doubles from 1 until one batch lasts SAMPLE_MS (1 for calls that slow, at most 2^14), so that every sample
+ * is long against the timer's resolution.
+ * @param {() => unknown} fn @param {{ warmup: number, runs: number }} counts @returns {Timing}
+ */
+function measure(fn, { warmup, runs }) {
+  for (let i = 0; i < warmup; i++) fn();
+  /** @param {number} n */
+  const timeBatch = (n) => {
+    const t0 = performance.now();
+    for (let b = 0; b < n; b++) fn();
+    return performance.now() - t0;
+  };
+  let batch = 1;
+  while (batch < 2 ** 14 && timeBatch(batch) < SAMPLE_MS) batch *= 2;
+  /** @type {number[]} */
+  const times = [];
+  for (let r = 0; r < runs; r++) times.push(timeBatch(batch) / batch);
+  return { ...summarize(times), batch };
 }
 
 /** Allocate typed arrays of the given kinds and lengths and write every element in a plain loop. @param {Slot[]} layout */
@@ -77,7 +109,7 @@ const ratio = (x) => (x >= 10 ? x.toFixed(0) : x.toFixed(1));
 /** @param {number} x */
 const count = (x) => x.toLocaleString('en-US');
 
-console.log(`node ${process.version}, ${quick ? 'quick run' : 'full run'}; times are medians in ms`);
+console.log(`node ${process.version}, build levels ${LEVELS.join(', ')}; times are medians in ms per call`);
 
 // ── Build times ────────────────────────────────────────────────────────────────────────────────────────────
 /** @type {Map<number, Timing>} */
@@ -134,7 +166,9 @@ for (const base of SPHERE_BASES) {
   }
 }
 
-console.log(`\n### Build time (smooth normals; median of ≥ 5 runs after warm-up, ms)\n`);
+console.log(
+  `\n### Build time (smooth normals; median of ≥ 5 samples after warm-up, ms per call; a sample under ${SAMPLE_MS} ms repeats the call)\n`,
+);
 console.log(
   '| base | level | triangles | indexed | plain write (idx) | non-indexed | plain write (non-idx) | three `IcosahedronGeometry` (detail → triangles) | three ÷ indexed | indexed ÷ plain | three ÷ non-idx | non-idx ÷ plain |',
 );
@@ -224,4 +258,14 @@ for (const base of SPHERE_BASES) {
   console.log(`| ${base} | ${c.join(' | ')} |`);
 }
 
-writeResults({ node: process.version, quick, normals: NORMALS, builds, errors, budgets, errorCost });
+writeResults({
+  node: process.version,
+  quick,
+  levels: LEVELS,
+  sampleMs: SAMPLE_MS,
+  normals: NORMALS,
+  builds,
+  errors,
+  budgets,
+  errorCost,
+});
