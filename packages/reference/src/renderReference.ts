@@ -91,15 +91,17 @@ const IDENTITY: readonly number[] = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0
  * sphere by the numerically stable intersection of Ray Tracing Gems ch. 7 (see `intersectSphere`); only the
  * front surface counts (the entry point between the planes, like a mesh drawn with three's `FrontSide`). The
  * world position is M·p and the world normal sign(det)·cof(M)·p (the exact normal, also for mirrored M and
- * for scales from 1e-20 to 1e20; a singular M, a zero scale, is refused). The eye is the camera's centre of projection (a point, or a direction for orthographic).
+ * for scales from 1e-20 to 1e20). A zero scale (singular M of rank 2) gives the flattened ellipsoid, an elliptic
+ * disc: the ray meets its plane, and of the two sheets (p and its mirror through the kernel of M) the one facing
+ * the viewer is drawn, its normal cof(M)·p = ±(the plane's normal) towards the eye, as the camera-facing
+ * triangles of a flattened mesh are; rank ≤ 1 has no area and draws nothing. The eye is the camera's centre of projection (a point, or a direction for orthographic).
  *
  * Pixels are sampled at their centres, like the GPU rasteriser; the silhouette pixels are supersampled
  * (`samples`²) for the blended `rgba` and `coverage`. Cost: about one `shade` per pixel, plus samples² per
  * silhouette pixel (1280×720: about 0.4–0.7 s in Node or Chromium).
  *
- * @throws TypeError / RangeError naming the option for a bad size, sample count, radius or matrix, a
- * RangeError naming `modelMatrix` when its 3×3 part is singular (a zero scale), and a RangeError when P·V·M
- * is singular.
+ * @throws TypeError / RangeError naming the option for a bad size, sample count, radius or matrix, and a
+ * RangeError when P·V is singular.
  */
 export function renderReference(options: RenderReferenceOptions): ReferenceImage {
   const {
@@ -125,24 +127,21 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
   const M = checkMatrix('modelMatrix', modelMatrix);
   const nm = normalMatrix(M);
   // det A = a0·(a1 × a2): the first column of M against the first column of its cofactor matrix.
-  const det3 = Math.abs(M[0] * nm[0] + M[1] * nm[1] + M[2] * nm[2]);
-  if (det3 === 0) {
-    throw new RangeError(
-      'renderReference: modelMatrix must be invertible (|det| of its 3×3 > 0), got determinant 0: a zero scale flattens the sphere to a disc, segment or point, which the reference does not render',
-    );
-  }
+  const det3 = M[0] * nm[0] + M[1] * nm[1] + M[2] * nm[2];
   const pv = multiply(P, V);
   const mvp = multiply(pv, M);
   // The ray is built in world space by (P·V)⁻¹ and taken to model space by M⁻¹ on its own, not by (P·V·M)⁻¹:
   // an anisotropic scale (1e20 along one axis, 1e-20 along another) keeps the tiny components of the model-
   // space direction exact instead of burying them in the rounding of the far − near difference.
   const invPV = invert(pv);
-  const invM = invert(M);
-  if (invPV === null || invM === null) {
+  if (invPV === null) {
     throw new RangeError(
-      'renderReference: projectionMatrix · viewMatrix · modelMatrix must be invertible, got a singular matrix',
+      'renderReference: projectionMatrix · viewMatrix must be invertible, got a singular matrix',
     );
   }
+  // A zero scale (singular M) flattens the sphere into an elliptic disc (rank 2; nothing for rank ≤ 1).
+  const invM = det3 === 0 ? null : invert(M);
+  const disc = invM === null ? flatEllipsoid(M, nm) : null;
   const eye = eyeOfCamera(P, V);
 
   const n = width * height;
@@ -178,6 +177,38 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
     const wx = near[0] / near[3];
     const wy = near[1] / near[3];
     const wz = near[2] / near[3];
+    if (invM === null) {
+      // The flattened ellipsoid: meet its plane, take the hit's preimage p0 ⊥ kernel, then the sheet facing the
+      // viewer, p = p0 ± √(r² − |p0|²)·k̂, whose normal cof(M)·p = (k·p)·m points towards the eye (the triangles
+      // of a flattened mesh that face the camera are exactly those).
+      miss = Number.POSITIVE_INFINITY;
+      if (disc === null) return false; // rank ≤ 1: no area
+      const { m, k, inv } = disc;
+      const ex = far[0] / far[3] - wx;
+      const ey = far[1] / far[3] - wy;
+      const ez = far[2] / far[3] - wz;
+      const denom = m[0] * ex + m[1] * ey + m[2] * ez;
+      if (denom === 0 || !Number.isFinite(denom)) return false; // edge-on
+      const tau = (m[0] * (M[12] - wx) + m[1] * (M[13] - wy) + m[2] * (M[14] - wz)) / denom;
+      const hx = wx + tau * ex - M[12];
+      const hy = wy + tau * ey - M[13];
+      const hz = wz + tau * ez - M[14];
+      let qx = inv[0] * hx + inv[3] * hy + inv[6] * hz;
+      let qy = inv[1] * hx + inv[4] * hy + inv[7] * hz;
+      let qz = inv[2] * hx + inv[5] * hy + inv[8] * hz;
+      const along = qx * k[0] + qy * k[1] + qz * k[2];
+      qx -= along * k[0];
+      qy -= along * k[1];
+      qz -= along * k[2];
+      const q = Math.hypot(qx, qy, qz);
+      miss = q - radius;
+      if (!(tau >= 0 && tau <= 1) || !(q <= radius)) return false;
+      const s = (denom > 0 ? -1 : 1) * Math.sqrt(radius * radius - q * q);
+      px = qx + s * k[0];
+      py = qy + s * k[1];
+      pz = qz + s * k[2];
+      return true;
+    }
     transform4(invM, wx, wy, wz, 1, origin);
     transform4(invM, far[0] / far[3] - wx, far[1] / far[3] - wy, far[2] / far[3] - wz, 0, direction);
     const ox = origin[0];
@@ -292,6 +323,43 @@ export function renderReference(options: RenderReferenceOptions): ReferenceImage
     }
   }
   return { width, height, rgba, linear, hit, coverage, edgeDistance, depth };
+}
+
+/**
+ * The plane of a sphere flattened by a singular model matrix of rank 2: the world unit normal m of the image
+ * plane, the unit kernel k of M's 3×3 part A (cof(A) = m·kᵀ up to scale: every column of it is a multiple of
+ * m) and the inverse of A + σ·m·kᵀ (σ = |A|), which maps a point of the plane (relative to M's translation) to
+ * its preimage perpendicular to k. `null` for rank ≤ 1 (cof(A) = 0: a segment or a point, no area).
+ */
+function flatEllipsoid(
+  M: Mat4Like,
+  nm: Float64Array,
+): { m: [number, number, number]; k: [number, number, number]; inv: Float64Array } | null {
+  let best = -1;
+  let size = 0;
+  for (let j = 0; j < 3; j++) {
+    const len = Math.hypot(nm[3 * j], nm[3 * j + 1], nm[3 * j + 2]);
+    if (len > size) {
+      size = len;
+      best = j;
+    }
+  }
+  if (!(size > 0) || !Number.isFinite(size)) return null;
+  const m: [number, number, number] = [nm[3 * best] / size, nm[3 * best + 1] / size, nm[3 * best + 2] / size];
+  const k: [number, number, number] = [0, 0, 0];
+  for (let j = 0; j < 3; j++) k[j] = nm[3 * j] * m[0] + nm[3 * j + 1] * m[1] + nm[3 * j + 2] * m[2];
+  const kl = Math.hypot(k[0], k[1], k[2]);
+  for (let j = 0; j < 3; j++) k[j] /= kl;
+  const sigma = Math.hypot(M[0], M[1], M[2], M[4], M[5], M[6], M[8], M[9], M[10]);
+  // B = A + σ·m·kᵀ as a 4×4 (column-major) with a unit w, inverted; its 3×3 part is B⁻¹.
+  const B = new Float64Array(16);
+  for (let c = 0; c < 3; c++) for (let r = 0; r < 3; r++) B[4 * c + r] = M[4 * c + r] + sigma * m[r] * k[c];
+  B[15] = 1;
+  const inv4 = invert(B);
+  if (inv4 === null) return null;
+  const inv = new Float64Array(9);
+  for (let c = 0; c < 3; c++) for (let r = 0; r < 3; r++) inv[3 * c + r] = inv4[4 * c + r];
+  return { m, k, inv };
 }
 
 /**
