@@ -27,7 +27,12 @@ export interface SphereMesh {
  * every triangle holds its three edge ids, each with a bit saying which way the triangle runs along it. At each
  * level edge e gets the midpoint vertex V_old + e and splits into edges 2e and 2e + 1, and triangle t adds the
  * interior edges 2·E_old + 3t + 0‥2 and becomes triangles 4t‥4t + 3, so every new id is arithmetic. Every array
- * is allocated once, from the final counts.
+ * is allocated once, from the final counts; with Uint32 indices the scratch lives inside the index array (the last
+ * pass expands per-triangle records into it in place), so the build allocates only its outputs
+ * (`estimateSphereBytes` is exact).
+ *
+ * Positions are float32: the mesh's radial error is `radius · sphereError(base, level)` (exact for exact
+ * vertices) plus at most about radius · 2^-24 from rounding (see `sphereError`).
  *
  * @example
  * ```ts
