@@ -1,8 +1,11 @@
 import { defineConfig } from '@playwright/test';
-import { chromiumArgs, chromiumExecutable } from './scripts/browser.mjs';
+import { chromiumArgs, lookupChromium } from './scripts/browser.mjs';
 
 const port = Number(process.env.SHADELAB_E2E_PORT ?? 4173);
-const executablePath = chromiumExecutable() ?? undefined;
+const browser = lookupChromium();
+// A SHADELAB_CHROMIUM that names no file stops the run, as `npm test` does, rather than testing another browser.
+if (browser.problem) throw new Error(browser.problem);
+const executablePath = browser.executable ?? undefined;
 
 export default defineConfig({
   testDir: 'tests',

@@ -37,8 +37,8 @@ import {
   setTrackballRotation,
   setTrackballZoomLimits,
   sphereErrorPx,
+  sphereErrorScalePx,
   sphereKey,
-  sphereRadiusPx,
   type TrackballHandle,
   updateMaterialLights,
   type ViewCamera,
@@ -65,7 +65,7 @@ export interface FrameStats {
   /** The depth mode the renderer runs. */
   depth: DepthMode;
   detail: Detail | null;
-  /** The drawn sphere's largest radial error on screen, px (exact); null when unknown. */
+  /** The drawn sphere's silhouette error on screen, px (an upper bound); null when unknown. */
   errorPx: number | null;
 }
 
@@ -240,12 +240,12 @@ export class Viewer {
     const key = TURN_KEYS[event.code];
     if (!key || event.ctrlKey || event.metaKey || event.altKey || !this.state) return;
     event.preventDefault();
-    this.camera.updateMatrixWorld();
-    _axis.setFromMatrixColumn(this.camera.matrixWorld, key[0] === 'u' ? 0 : 1).normalize();
-    _turn.setFromAxisAngle(_axis, key[1] * TURN_STEP * this.state.trackball.rotateSpeed);
-    this.pivot.quaternion.premultiply(_turn).normalize();
-    this.pivot.updateMatrixWorld(true);
-    this.requestRender();
+    // The camera's u or v axis in camera coordinates, through the trackball (as a drag): its rotation and
+    // matrices stay those of the picture, and the next drag continues from here.
+    _axis.set(key[0] === 'u' ? 1 : 0, key[0] === 'u' ? 0 : 1, 0);
+    this.trackball.rotate(
+      _turn.setFromAxisAngle(_axis, key[1] * TURN_STEP * this.state.trackball.rotateSpeed),
+    );
     this.onViewEnd();
   };
 
@@ -473,18 +473,18 @@ export class Viewer {
   private errorPx(): number | null {
     if (!this.sphere || !this.state) return null;
     try {
-      return sphereErrorPx(this.sphere.base, this.sphere.level, this.radiusPx());
+      return sphereErrorPx(this.sphere.base, this.sphere.level, this.errorScalePx());
     } catch {
       return null;
     }
   }
 
-  /** The sphere's radius on screen in pixels (largest scale axis), for automatic detail. */
-  private radiusPx(): number {
+  /** Pixels of silhouette error per unit of relative radial error (an upper bound), for automatic detail. */
+  private errorScalePx(): number {
     const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
     const { rows } = this.layout();
     this.pivot.updateMatrixWorld(true);
-    return sphereRadiusPx(this.camera, this.mesh.matrixWorld, h / rows, this.state!.sphere.radius);
+    return sphereErrorScalePx(this.camera, this.mesh.matrixWorld, h / rows, this.state!.sphere.radius);
   }
 
   private applySphere(state: PlaygroundState) {
@@ -492,7 +492,7 @@ export class Viewer {
     const { radius } = state.sphere;
     this.lastDetail = null;
     if (state.sphere.auto) {
-      this.lastDetail = chooseDetail(this.radiusPx(), state.sphere.maxErrorPx);
+      this.lastDetail = chooseDetail(this.errorScalePx(), state.sphere.maxErrorPx);
       ({ base, level } = this.lastDetail);
     }
     const shadings =

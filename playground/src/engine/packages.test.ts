@@ -73,10 +73,21 @@ describe('setTrackballRotation', () => {
     });
   });
 
-  it('writes any other rotation to the object (normalised)', () => {
-    const { pivot, trackball } = scene();
-    setTrackballRotation(trackball, pivot, [0, 0.6, 0, 0.8]);
-    expect(pivot.quaternion.y).toBeCloseTo(0.6, 12);
-    expect(pivot.quaternion.w).toBeCloseTo(0.8, 12);
+  it('puts the object at any rotation through the trackball, from a turned camera too: its matrices agree', () => {
+    const { camera, pivot, trackball, drag } = scene();
+    drag([100, 100], [150, 120]);
+    setCameraView(camera, [2, 1, 2], [0, 0, 0], [0, 1, 0]);
+    camera.updateMatrixWorld();
+    setTrackballRotation(trackball, pivot, [0, 1.2, 0, 1.6]); // not normalised
+    const q = new THREE.Quaternion(0, 0.6, 0, 0.8);
+    expect(pivot.quaternion.angleTo(q)).toBeLessThan(1e-12);
+    // getWorldMatrix is the object's rotation; getMatrix the same rotation in camera coordinates (C⁻¹ q C).
+    const world = new THREE.Quaternion().setFromRotationMatrix(trackball.getWorldMatrix());
+    expect(world.angleTo(q)).toBeLessThan(1e-12);
+    const c = camera.getWorldQuaternion(new THREE.Quaternion());
+    const inCamera = c.clone().invert().multiply(q).multiply(c);
+    expect(
+      new THREE.Quaternion().setFromRotationMatrix(trackball.getMatrix()).angleTo(inCamera),
+    ).toBeLessThan(1e-12);
   });
 });

@@ -10,12 +10,13 @@ import { createOutline, type OutlineMaterial } from '@shadelab/material/outline'
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   chooseSphereDetail,
-  projectedRadiusPx,
   type SphereDetail,
+  silhouetteErrorScalePx,
   sphereError,
 } from '@shadelab/sphere/detail';
 import { Trackball } from '@shadelab/trackball';
 import type * as THREE from 'three';
+import { Quaternion } from 'three';
 import type {
   DepthMode,
   LightState,
@@ -53,27 +54,29 @@ export function sphereKey(base: SphereBase, level: number, shading: Shading, rad
 export type Detail = SphereDetail;
 
 /**
- * The sphere's radius on screen in pixels (exact, from the projection matrix; @shadelab/sphere), capped at
- * four viewport heights (the eye inside the sphere gives Infinity, and no detail is needed beyond the screen).
+ * Pixels of silhouette error on screen per unit of the sphere's relative radial error: an upper bound for
+ * this camera and model matrix, near the camera and off axis too (@shadelab/sphere's
+ * `silhouetteErrorScalePx`). Capped at sixteen viewport heights: with the eye inside the sphere, or its outline
+ * reaching behind the eye, it is Infinity, and no detail is needed beyond the finest level there.
  */
-export function sphereRadiusPx(
+export function sphereErrorScalePx(
   camera: ViewCamera,
   matrixWorld: THREE.Matrix4,
   viewportHeightPx: number,
   radius = 1,
 ): number {
-  const px = projectedRadiusPx({ camera, matrixWorld, viewportHeightPx, radius });
-  return Math.min(px, 4 * viewportHeightPx);
+  const px = silhouetteErrorScalePx({ camera, matrixWorld, viewportHeightPx, radius });
+  return Math.min(px, 16 * viewportHeightPx);
 }
 
-/** The largest radial error of the sphere on screen, in pixels (exact, from @shadelab/sphere). */
-export function sphereErrorPx(base: SphereBase, level: number, radiusPx: number): number {
-  return sphereError(base, level) * radiusPx;
+/** The sphere's silhouette error on screen in pixels (at most; from the exact `sphereError`). */
+export function sphereErrorPx(base: SphereBase, level: number, errorScalePx: number): number {
+  return sphereError(base, level) * errorScalePx;
 }
 
-/** The cheapest sphere whose exact radial error on screen stays within `maxErrorPx` (levels 0 … 10). */
-export function chooseDetail(radiusPx: number, maxErrorPx: number): Detail {
-  return chooseSphereDetail({ radiusPx, maxErrorPx });
+/** The cheapest sphere whose silhouette error on screen stays within `maxErrorPx` (levels 0 … 10). */
+export function chooseDetail(errorScalePx: number, maxErrorPx: number): Detail {
+  return chooseSphereDetail({ radiusPx: errorScalePx, maxErrorPx });
 }
 
 // ---- camera -------------------------------------------------------------------------------------------------
@@ -88,7 +91,10 @@ export function depthParameters(depth: DepthMode): {
   return depthBufferParameters(depth);
 }
 
-/** The depth mode a renderer really runs (reversed-Z falls back to standard without EXT_clip_control). */
+/**
+ * The depth mode a renderer really runs (without EXT_clip_control, 'reversed' falls back to standard and
+ * 'reversed-or-logarithmic' to logarithmic).
+ */
 export function activeDepth(renderer: THREE.WebGLRenderer): DepthMode {
   return depthModeOf(renderer);
 }
@@ -191,24 +197,29 @@ export function getTrackballRotation(object: THREE.Object3D): [number, number, n
   return object.quaternion.toArray() as [number, number, number, number];
 }
 
+const _rotation = /* @__PURE__ */ new Quaternion();
+const _cameraRotation = /* @__PURE__ */ new Quaternion();
+
 /**
- * Puts the object at rotation `q` (a restored URL, a keyboard turn). The identity goes through the
- * trackball's own `reset()`, so its `rotation` and `getMatrix()` agree with the picture again; its zoom is kept
- * (reset() sets it to 1: the same factor is applied back). Any other rotation is written to the object: the
- * trackball has no rotation setter yet, so until a drag its `getMatrix()` lags behind (a drag starts from the
- * object's orientation, so the picture is always right).
+ * Puts the object at rotation `q` (world orientation, as the URL keeps it; a restored link, "reset rotation")
+ * through the trackball's own `setRotation`, so its `rotation`, `getMatrix()` and `getWorldMatrix()` agree
+ * with the picture and the next drag continues from it. The trackball works in camera coordinates:
+ * `setRotation(C⁻¹ · q · C)` (C the camera's orientation now) puts the object, which starts unrotated, at q.
+ * The zoom is kept.
  */
 export function setTrackballRotation(
   trackball: TrackballHandle,
   object: THREE.Object3D,
   q: [number, number, number, number],
 ): void {
-  if (q[0] === 0 && q[1] === 0 && q[2] === 0 && trackball.object === object) {
-    const zoom = trackball.zoom;
-    trackball.reset();
-    if (zoom !== trackball.zoom) trackball.zoomBy(zoom / trackball.zoom);
+  _rotation.fromArray(q);
+  if (trackball.object === object) {
+    if (trackball.camera) trackball.camera.getWorldQuaternion(_cameraRotation);
+    else _cameraRotation.identity();
+    _rotation.multiply(_cameraRotation); // q · C
+    trackball.setRotation(_rotation.premultiply(_cameraRotation.invert())); // C⁻¹ · q · C
   } else {
-    object.quaternion.fromArray(q).normalize();
+    object.quaternion.copy(_rotation).normalize();
   }
   object.updateMatrixWorld(true);
 }

@@ -22,10 +22,18 @@ export type SphereBase = 'tetrahedron' | 'octahedron' | 'icosahedron';
 export type TrackballMapping = 'arcball' | 'bell';
 /** Camera projection. */
 export type Projection = 'perspective' | 'orthographic';
-/** How the renderer stores depth (@shadelab/camera's DepthMode); changing it makes a new renderer. */
-export type DepthMode = 'standard' | 'logarithmic' | 'reversed';
+/**
+ * How the renderer should store depth (@shadelab/camera's DepthModeRequest: 'reversed-or-logarithmic' is
+ * reversed-Z where EXT_clip_control exists, else logarithmic); changing it makes a new renderer.
+ */
+export type DepthMode = 'standard' | 'logarithmic' | 'reversed' | 'reversed-or-logarithmic';
 /** Every depth mode, in the order the controls list them. */
-export const DEPTH_MODES: readonly DepthMode[] = ['standard', 'logarithmic', 'reversed'];
+export const DEPTH_MODES: readonly DepthMode[] = [
+  'standard',
+  'logarithmic',
+  'reversed',
+  'reversed-or-logarithmic',
+];
 /** One view of the lit sphere, or the lecture's flat | Gouraud | Phong | cel slide. */
 export type ViewMode = 'single' | 'compare';
 /** How the sphere is drawn: a subdivided mesh, or a ray-cast impostor (exact, two triangles). */
@@ -337,7 +345,7 @@ const stateParser = object<PlaygroundState>({
   model: object({ scale: vec3(1e3) }),
   camera: object({
     projection: oneOf('perspective', 'orthographic'),
-    depth: oneOf('standard', 'logarithmic', 'reversed'),
+    depth: oneOf(...DEPTH_MODES),
     eye: vec3(1e4),
     at: vec3(1e4),
     up: vec3(1e4),

@@ -1,6 +1,6 @@
 import { button } from 'leva';
 import type { PlaygroundState, Rgb, Vec3 } from '../state/schema';
-import { defaultLight, MAX_LIGHTS } from '../state/schema';
+import { DEPTH_MODES, defaultLight, MAX_LIGHTS } from '../state/schema';
 import { type Field, type Update, useFolder } from './useFolder';
 
 const vec3 = (label: string, step = 0.1): Record<string, unknown> => ({ label, step });
@@ -199,7 +199,7 @@ export function SceneControls({
       },
     },
     depth: {
-      input: { label: 'depth buffer', options: ['standard', 'logarithmic', 'reversed'] },
+      input: { label: 'depth buffer', options: [...DEPTH_MODES] },
       read: (s) => s.camera.depth,
       write: (d, v: PlaygroundState['camera']['depth']) => {
         d.camera.depth = v;

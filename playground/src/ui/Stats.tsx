@@ -48,7 +48,7 @@ export function Stats({ feed }: { feed: StatsFeed }) {
       <dd data-testid="stats-depth">{stats.depth}</dd>
       {stats.errorPx !== null && (
         <>
-          <dt>radial error</dt>
+          <dt>silhouette error ≤</dt>
           <dd>{stats.errorPx.toFixed(3)} px</dd>
         </>
       )}
