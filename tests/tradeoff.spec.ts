@@ -225,6 +225,28 @@ test.describe('impostor vs reference', () => {
     expect(r.differing).toBe(0);
   });
 
+  test('a zero scale: every mesh shading draws the flattened disc as the reference does (normal towards the viewer)', async ({
+    page,
+  }) => {
+    // The DESIGN.md row "model matrix with a zero scale": face on, and rotated in an oblique view. (The
+    // impostor draws nothing at a zero scale: its quad's inverse matrix is singular; see the material README.)
+    for (const view of [
+      { width: 320, height: 240, scale: [2, 1, 0] },
+      { width: 320, height: 240, scale: [2, 0, 1], rotation: [0.9, 0.3, 0], eye: [0.5, 1, 3] },
+    ] satisfies TradeView[]) {
+      for (const shading of ['flat', 'gouraud', 'phong'] as const) {
+        const r = await compare(page, view, { shading, base: 'icosahedron', level: 6 });
+        test.info().annotations.push({ type: `${shading} ${view.scale}`, description: JSON.stringify(r) });
+        expect(r.interiorPixels).toBeGreaterThan(5000);
+        expect(r.max).toBeLessThanOrEqual(2);
+        expect(r.rmse).toBeLessThan(0.5);
+        expect(r.silhouettePx).toBeLessThanOrEqual(0.5);
+        expect(r.mismatchedBeyondHalfPx).toBe(0);
+        expect(r.blackPixels).toBe(0);
+      }
+    }
+  });
+
   test('the meshes converge on the same reference (phong, icosahedron 5 vs 1)', async ({ page }) => {
     const fine = await compare(
       page,
