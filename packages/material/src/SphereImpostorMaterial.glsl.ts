@@ -55,9 +55,13 @@ void main() {
   vec4 farH = through + impostorInverseMvp[2];
 #endif
   vec3 o = nearH.xyz / nearH.w;
-  vec3 d = farH.xyz / farH.w - o;
-  float len = length(d);
-  d /= len;
+  // far − near = (farH.xyz·nearH.w − nearH.xyz·farH.w) / (nearH.w·farH.w): nothing is divided by farH.w, about
+  // near/far, which rounds to 0 or below at large far/near (the far point at infinity): the direction stays
+  // exact and the ray unbounded.
+  vec3 d = farH.xyz * nearH.w - nearH.xyz * farH.w;
+  float s = nearH.w * farH.w;
+  float len = s > 0.0 ? length(d) / s : 1e38;
+  d = normalize(d) * sign(nearH.w);
   // Ray Tracing Gems ch. 7: b' = o·d, Δ = 1 − |o − b'd|², q = −b' − sign(b')√Δ, t0 = c/q, t1 = q.
   float b = dot(o, d);
   vec3 f = o - b * d;

@@ -16,6 +16,18 @@ export interface ProjectedRadiusOptions {
   radius?: number;
 }
 
+/** Both functions' size options: finite numbers > 0, or a RangeError naming the function and the option. */
+function checkSizes(fn: string, viewportHeightPx: unknown, radius: unknown): void {
+  for (const [name, value] of [
+    ['viewportHeightPx', viewportHeightPx],
+    ['radius', radius],
+  ] as const) {
+    if (typeof value !== 'number' || !(value > 0) || !Number.isFinite(value)) {
+      fail(fn, name, 'a finite number > 0', value);
+    }
+  }
+}
+
 /**
  * The radius of a sphere on screen, in pixels, from any three.js camera's projection matrix (so also
  * shadelab's `Camera`, which has no `fov`):
@@ -40,12 +52,7 @@ export function projectedRadiusPx({
   viewportHeightPx,
   radius = 1,
 }: ProjectedRadiusOptions): number {
-  if (typeof viewportHeightPx !== 'number' || !(viewportHeightPx > 0) || !Number.isFinite(viewportHeightPx)) {
-    fail('projectedRadiusPx', 'viewportHeightPx', 'a finite number > 0', viewportHeightPx);
-  }
-  if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
-    fail('projectedRadiusPx', 'radius', 'a finite number > 0', radius);
-  }
+  checkSizes('projectedRadiusPx', viewportHeightPx, radius);
   const m = matrixWorld.elements;
   const scale = Math.sqrt(
     Math.max(
@@ -96,12 +103,7 @@ export function silhouetteErrorScalePx({
   viewportHeightPx,
   radius = 1,
 }: ProjectedRadiusOptions): number {
-  if (typeof viewportHeightPx !== 'number' || !(viewportHeightPx > 0) || !Number.isFinite(viewportHeightPx)) {
-    fail('silhouetteErrorScalePx', 'viewportHeightPx', 'a finite number > 0', viewportHeightPx);
-  }
-  if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
-    fail('silhouetteErrorScalePx', 'radius', 'a finite number > 0', radius);
-  }
+  checkSizes('silhouetteErrorScalePx', viewportHeightPx, radius);
   const p = camera.projectionMatrix.elements;
   const f = (viewportHeightPx / 2) * Math.abs(p[5]);
   // Model → view; the ellipsoid is c + A·u, |u| ≤ 1 (columns of A: the scaled axes in view space).
