@@ -9,7 +9,7 @@
 // AutoDetailSphere budgets (silhouetteErrorScalePx · sphereError).
 //
 //   node bench/autodetail.bench.mjs [--json PATH] [--distances 25] [--samples 2048] [--rotations 24]
-import { SubdivisionSphereGeometry, sphereCounts } from '@shadelab/sphere';
+import { sphereCounts } from '@shadelab/sphere';
 import {
   AutoDetailSphere,
   chooseSphereDetail,
@@ -19,7 +19,7 @@ import {
 } from '@shadelab/sphere/detail';
 import { Euler, Matrix4, MeshBasicMaterial, PerspectiveCamera, Quaternion, Vector3 } from 'three';
 import { arg, writeResults } from './lib/bench.mjs';
-import { silhouetteGapPx } from './lib/silhouetteGap.mjs';
+import { silhouetteGapPx, sphereMesh } from './lib/silhouetteGap.mjs';
 
 const WIDTH = 1280;
 const HEIGHT = 720;
@@ -32,19 +32,6 @@ const FIXED = /** @type {const} */ ({ base: 'tetrahedron', level: 6 });
 const matrixWorld = new Matrix4().makeScale(2, 1, 2);
 const material = new MeshBasicMaterial();
 
-/** @type {Map<string, SubdivisionSphereGeometry>} */
-const geometries = new Map();
-/** @param {import('@shadelab/sphere').SphereBase} base @param {number} level */
-function geometry(base, level) {
-  const key = `${base}/${level}`;
-  let g = geometries.get(key);
-  if (!g) {
-    g = new SubdivisionSphereGeometry({ base, level });
-    geometries.set(key, g);
-  }
-  return g;
-}
-
 /** @param {number} d */
 function cameraAt(d) {
   const camera = new PerspectiveCamera(90, WIDTH / HEIGHT, 0.01, 1000);
@@ -56,7 +43,7 @@ function cameraAt(d) {
 /** @param {PerspectiveCamera} camera @param {import('@shadelab/sphere').SphereBase} base @param {number} level */
 function measured(camera, base, level) {
   return silhouetteGapPx(
-    geometry(base, level),
+    sphereMesh(base, level),
     { camera, matrixWorld, widthPx: WIDTH, heightPx: HEIGHT },
     samples,
   );
@@ -120,13 +107,12 @@ for (let i = 0; i < rotations; i++) {
   const m = new Matrix4().compose(new Vector3(), q, new Vector3(2, 1, 2));
   const camera = cameraAt(distances[0]);
   const gap = silhouetteGapPx(
-    geometry(FIXED.base, FIXED.level),
+    sphereMesh(FIXED.base, FIXED.level),
     { camera, matrixWorld: m, widthPx: WIDTH, heightPx: HEIGHT },
     samples,
   );
   fixedRotatedPx = Math.max(fixedRotatedPx, gap);
 }
-for (const g of geometries.values()) g.dispose();
 
 const sum = (/** @type {number[]} */ a) => a.reduce((s, x) => s + x, 0);
 const worst = (/** @type {number[]} */ a) => Math.max(...a);

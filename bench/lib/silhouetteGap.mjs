@@ -4,7 +4,25 @@
 // direction): the largest distance on screen between the two outlines, either way, counting only what is on
 // screen. Independent of the bound it checks (no contour formula, no projection algebra of ours). Shared by
 // bench/autodetail.bench.mjs and the sphere tests (packages/sphere/src/silhouetteGap.test-util.ts).
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import { Matrix4, Ray, Raycaster, Sphere, Vector2, Vector3 } from 'three';
+
+/** @type {Map<string, SubdivisionSphereGeometry>} */
+const spheres = new Map();
+/**
+ * The unit subdivision sphere of a base and level (default options), built once and kept: the meshes the gap
+ * is measured on.
+ * @param {import('@shadelab/sphere').SphereBase} base @param {number} level
+ */
+export function sphereMesh(base, level) {
+  const key = `${base}/${level}`;
+  let g = spheres.get(key);
+  if (!g) {
+    g = new SubdivisionSphereGeometry({ base, level });
+    spheres.set(key, g);
+  }
+  return g;
+}
 
 /**
  * @typedef {object} GapScene

@@ -33,6 +33,34 @@ const copyFrame = (f: CameraFrame): CameraFrame => ({
   w: f.w.clone(),
 });
 
+/**
+ * Sweeps t over ±3·POLE_CAP_RAD in 12,000 steps (5e-8 rad each) through `look(camera, t)`, checking every frame
+ * is orthonormal (and `each`). `limit`: across the cap the right vector turns by π over 2·POLE_CAP_RAD of
+ * sweep, so a continuous turn moves no basis vector by more than about π·step/POLE_CAP_RAD per step.
+ */
+function sweepCamera(
+  look: (camera: Camera, t: number) => void,
+  each?: (frame: CameraFrame, t: number) => void,
+): { first: CameraFrame; last: CameraFrame; maxStep: number; limit: number } {
+  const camera = new Camera();
+  const steps = 12000;
+  const span = 3 * POLE_CAP_RAD;
+  let first: CameraFrame | undefined;
+  let last: CameraFrame | undefined;
+  let maxStep = 0;
+  for (let i = 0; i <= steps; i++) {
+    const t = -span + (2 * span * i) / steps;
+    look(camera, t);
+    const frame = camera.getFrame();
+    expectOrthonormal(frame);
+    each?.(frame, t);
+    if (last) maxStep = Math.max(maxStep, frameStep(last, frame));
+    last = copyFrame(frame);
+    first ??= last;
+  }
+  return { first: first!, last: last!, maxStep, limit: 1.05 * Math.PI * ((2 * span) / steps / POLE_CAP_RAD) };
+}
+
 describe('lookAt with up parallel to the gaze (DESIGN.md extremes)', () => {
   const gazes: [number, number, number][] = [
     [0, -1, 0],
@@ -80,51 +108,28 @@ describe('lookAt with up parallel to the gaze (DESIGN.md extremes)', () => {
   });
 
   it('turns continuously while up sweeps through the pole (fixed gaze), and meets three outside the cap', () => {
-    const camera = new Camera();
     const eye = new Vector3(0, 5, 0);
     const at = new Vector3(0, 0, 0); // gaze −y
-    const steps = 12000;
-    const span = 3 * POLE_CAP_RAD;
-    let previous: CameraFrame | undefined;
-    let first: CameraFrame | undefined;
-    let maxStep = 0;
-    for (let i = 0; i <= steps; i++) {
-      const angle = -span + (2 * span * i) / steps; // angle of up from +y towards +z
-      const up = new Vector3(0, Math.cos(angle), Math.sin(angle));
-      camera.lookAt(eye, at, up);
-      const frame = camera.getFrame();
-      expectOrthonormal(frame);
-      if (previous) maxStep = Math.max(maxStep, frameStep(previous, frame));
-      previous = copyFrame(frame);
-      first ??= previous;
-      if (Math.abs(angle) > POLE_CAP_RAD * 1.01) {
-        const m = new Matrix4().lookAt(eye, at, up);
-        const u = new Vector3().setFromMatrixColumn(m, 0);
-        expect(frame.u.distanceTo(u)).toBeLessThan(1e-9);
-      }
-    }
-    // Across the cap the right vector turns by π over 2·POLE_CAP_RAD of sweep: π·Δ/POLE_CAP_RAD per step.
-    const delta = (2 * span) / steps;
-    expect(maxStep).toBeLessThan(1.05 * Math.PI * (delta / POLE_CAP_RAD));
+    const upAt = (angle: number) => new Vector3(0, Math.cos(angle), Math.sin(angle)); // from +y towards +z
+    const { first, last, maxStep, limit } = sweepCamera(
+      (camera, angle) => camera.lookAt(eye, at, upAt(angle)),
+      (frame, angle) => {
+        if (Math.abs(angle) > POLE_CAP_RAD * 1.01) {
+          const m = new Matrix4().lookAt(eye, at, upAt(angle));
+          expect(frame.u.distanceTo(new Vector3().setFromMatrixColumn(m, 0))).toBeLessThan(1e-9);
+        }
+      },
+    );
+    expect(maxStep).toBeLessThan(limit);
     expect(maxStep).toBeLessThan(0.01);
     // …and the two sides are the two exact, opposite frames (the turn really happened, continuously).
-    expect(first?.u.dot(previous?.u ?? new Vector3())).toBeCloseTo(-1, 9);
+    expect(first.u.dot(last.u)).toBeCloseTo(-1, 9);
   });
 
   it('turns continuously while the eye orbits over the pole with up fixed', () => {
-    const camera = new Camera();
-    const steps = 12000;
-    const span = 3 * POLE_CAP_RAD;
-    let previous: CameraFrame | undefined;
-    let maxStep = 0;
-    for (let i = 0; i <= steps; i++) {
-      const phi = -span + (2 * span * i) / steps;
-      camera.lookAt([0, 10 * Math.cos(phi), 10 * Math.sin(phi)], [0, 0, 0], [0, 1, 0]);
-      const frame = camera.getFrame();
-      expectOrthonormal(frame);
-      if (previous) maxStep = Math.max(maxStep, frameStep(previous, frame));
-      previous = copyFrame(frame);
-    }
+    const { maxStep } = sweepCamera((camera, phi) =>
+      camera.lookAt([0, 10 * Math.cos(phi), 10 * Math.sin(phi)], [0, 0, 0], [0, 1, 0]),
+    );
     expect(maxStep).toBeLessThan(0.01);
   });
 
@@ -214,46 +219,25 @@ describe('Camera.lookAt near the pole (DESIGN.md extremes, through the Camera an
   });
 
   it('turns continuously while the eye passes under the pole (eye below at, up = +y: up ≈ +gaze)', () => {
-    const camera = new Camera();
-    const steps = 12000;
-    const span = 3 * POLE_CAP_RAD;
-    let previous: CameraFrame | undefined;
-    let first: CameraFrame | undefined;
-    let maxStep = 0;
-    for (let i = 0; i <= steps; i++) {
-      const phi = -span + (2 * span * i) / steps;
+    const { first, last, maxStep, limit } = sweepCamera(
       // The eye on a circle below `at`: the gaze is ≈ +y, along up.
-      camera.lookAt([0, -10 * Math.cos(phi), 10 * Math.sin(phi)], [0, 0, 0], [0, 1, 0]);
-      const frame = camera.getFrame();
-      expectOrthonormal(frame);
-      expect(frame.w.y).toBeLessThan(-0.99); // looking up
-      if (previous) maxStep = Math.max(maxStep, frameStep(previous, frame));
-      previous = copyFrame(frame);
-      first ??= previous;
-      if (Math.abs(phi) > POLE_CAP_RAD * 1.01) {
-        const m = new Matrix4().lookAt(frame.e, new Vector3(), new Vector3(0, 1, 0));
-        expect(frame.u.distanceTo(new Vector3().setFromMatrixColumn(m, 0))).toBeLessThan(1e-9);
-      }
-    }
-    const delta = (2 * span) / steps; // 5e-8 rad per step
-    expect(maxStep).toBeLessThan(1.05 * Math.PI * (delta / POLE_CAP_RAD));
-    expect(first?.u.dot(previous?.u ?? new Vector3())).toBeCloseTo(-1, 9);
+      (camera, phi) => camera.lookAt([0, -10 * Math.cos(phi), 10 * Math.sin(phi)], [0, 0, 0], [0, 1, 0]),
+      (frame, phi) => {
+        expect(frame.w.y).toBeLessThan(-0.99); // looking up
+        if (Math.abs(phi) > POLE_CAP_RAD * 1.01) {
+          const m = new Matrix4().lookAt(frame.e, new Vector3(), new Vector3(0, 1, 0));
+          expect(frame.u.distanceTo(new Vector3().setFromMatrixColumn(m, 0))).toBeLessThan(1e-9);
+        }
+      },
+    );
+    expect(maxStep).toBeLessThan(limit);
+    expect(first.u.dot(last.u)).toBeCloseTo(-1, 9);
   });
 
   it('turns continuously while up sweeps through +gaze (fixed gaze −y, up from −y side)', () => {
-    const camera = new Camera();
-    const steps = 12000;
-    const span = 3 * POLE_CAP_RAD;
-    let previous: CameraFrame | undefined;
-    let maxStep = 0;
-    for (let i = 0; i <= steps; i++) {
-      const angle = -span + (2 * span * i) / steps;
-      camera.lookAt([0, 5, 0], [0, 0, 0], [0, -Math.cos(angle), Math.sin(angle)]); // up ≈ −y = +gaze
-      const frame = camera.getFrame();
-      expectOrthonormal(frame);
-      if (previous) maxStep = Math.max(maxStep, frameStep(previous, frame));
-      previous = copyFrame(frame);
-    }
-    expect(maxStep).toBeLessThan(1.05 * Math.PI * ((2 * span) / steps / POLE_CAP_RAD));
+    const { maxStep, limit } = sweepCamera(
+      (camera, angle) => camera.lookAt([0, 5, 0], [0, 0, 0], [0, -Math.cos(angle), Math.sin(angle)]), // up ≈ +gaze
+    );
+    expect(maxStep).toBeLessThan(limit);
   });
 });

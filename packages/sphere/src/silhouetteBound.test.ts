@@ -1,7 +1,6 @@
 // The error AutoDetailSphere budgets (silhouetteErrorScalePx · sphereError) against the silhouette error
 // actually seen in the image, measured independently (silhouetteGap.test-util.ts: projected mesh vertices,
 // their hull, against the ray-cast exact outline of the ellipsoid, on screen only).
-import { type SphereBase, SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   AutoDetailSphere,
   chooseSphereDetail,
@@ -20,7 +19,7 @@ import {
   Vector3,
 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { silhouetteGapPx } from './silhouetteGap.test-util.js';
+import { silhouetteGapPx, sphereMesh } from './silhouetteGap.test-util.js';
 
 const W = 1280;
 const H = 720;
@@ -34,17 +33,6 @@ function lectureCamera(d: number): PerspectiveCamera {
   camera.position.set(0, 0, d);
   camera.updateMatrixWorld();
   return camera;
-}
-
-const geometries = new Map<string, SubdivisionSphereGeometry>();
-function sphereMesh(base: SphereBase, level: number): SubdivisionSphereGeometry {
-  const key = `${base}/${level}`;
-  let g = geometries.get(key);
-  if (!g) {
-    g = new SubdivisionSphereGeometry({ base, level });
-    geometries.set(key, g);
-  }
-  return g;
 }
 
 describe('silhouetteErrorScalePx', () => {
