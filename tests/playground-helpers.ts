@@ -135,6 +135,32 @@ export async function litArea(page: Page): Promise<number> {
   });
 }
 
+/** The lit pixels' bounding box on the canvas (pixels brighter than 8 in any channel), and the canvas size. */
+export async function litBox(
+  page: Page,
+): Promise<{ width: number; height: number; canvasWidth: number; canvasHeight: number }> {
+  return page.getByTestId('viewport').evaluate((canvas: HTMLCanvasElement) => {
+    const gl = canvas.getContext('webgl2')!;
+    const w = canvas.width;
+    const h = canvas.height;
+    const out = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    let [x0, x1, y0, y1] = [w, -1, h, -1];
+    for (let y = 0; y < h; y++) {
+      for (let x = 0; x < w; x++) {
+        const i = (y * w + x) * 4;
+        if (out[i]! > 8 || out[i + 1]! > 8 || out[i + 2]! > 8) {
+          x0 = Math.min(x0, x);
+          x1 = Math.max(x1, x);
+          y0 = Math.min(y0, y);
+          y1 = Math.max(y1, y);
+        }
+      }
+    }
+    return { width: x1 - x0 + 1, height: y1 - y0 + 1, canvasWidth: w, canvasHeight: h };
+  });
+}
+
 /** The canvas split into `cols` × `rows` cells, each cell's pixels as one string (equal = same picture). */
 export async function cellPictures(page: Page, cols: number, rows: number): Promise<string[]> {
   return page.getByTestId('viewport').evaluate(

@@ -5,6 +5,7 @@ import {
   drag,
   frames,
   litArea,
+  litBox,
   open,
   picture,
   pixel,
@@ -496,6 +497,26 @@ test.describe('the playground', () => {
     await settle(page);
     expect(((await urlState(page))['material'] as { shading: string }).shading).toBe('gouraud');
   });
+});
+
+test("the camera follows a resize: the aspect is the canvas's, so the sphere keeps its proportions", async ({
+  page,
+}) => {
+  // The lecture's ellipsoid (2, 1, 2) seen from (0, 0, 6) (so that it fits the narrow canvas): the tangent
+  // lines from the eye to its outline have slopes 2/√32 across (the circle of radius 2) and 1/√32 up (the
+  // ellipse z²/4 + y² = 1), so with the right aspect the lit box is twice as wide as high on any canvas, and
+  // (fovy 90°) 1/√32 of the canvas height high.
+  await open(page, { camera: { eye: [0, 0, 6] } });
+  const before = await litBox(page);
+  await page.setViewportSize({ width: 1400, height: 500 });
+  await expect.poll(async () => (await litBox(page)).canvasWidth).not.toBe(before.canvasWidth);
+  await settle(page);
+  const after = await litBox(page);
+  expect(after.canvasWidth / after.canvasHeight).not.toBeCloseTo(before.canvasWidth / before.canvasHeight, 1);
+  for (const box of [before, after]) {
+    expect(Math.abs(box.height - box.canvasHeight / Math.sqrt(32))).toBeLessThanOrEqual(2);
+    expect(Math.abs(box.width / box.height - 2)).toBeLessThan(0.02);
+  }
 });
 
 test('a light moves with the gizmo', async ({ page }) => {
