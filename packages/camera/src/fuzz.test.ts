@@ -212,13 +212,14 @@ const operation = fc.oneof(
       [
         'lookAt(eye, at, up)',
         (c: Camera): Expected => ({
-          // A number first is three's lookAt(x, y, z); at = undefined its lookAt(target).
+          // A number first is three's lookAt(x, y, z); at = undefined its lookAt(target); up = undefined
+          // keeps this.up.
           name:
             typeof e === 'number'
               ? targetExpected(c, [e, a, u])
               : a === undefined
                 ? targetExpected(c, e)
-                : lookAtExpected(e, a, u),
+                : lookAtExpected(e, a, u === undefined ? c.up.toArray() : u),
         }),
         (c: Camera) => c.lookAt(e, a, u),
       ] as const,

@@ -162,7 +162,8 @@ describe('lookAt with up parallel to the gaze (DESIGN.md extremes)', () => {
   });
 
   it('huge and tiny (non-zero) eye − at keep working without overflow or underflow', () => {
-    for (const s of [1e-300, 1e-30, 1e30, 1e300]) {
+    // Down to the smallest subnormal (5e-324: 1/s overflows, so the scaling must divide, not multiply).
+    for (const s of [5e-324, 1e-310, 1e-300, 1e-30, 1e30, 1e300]) {
       const frame = lookAtFrame([0, 0, s], [0, 0, 0], [0, 1, 0], newFrame());
       expectOrthonormal(frame);
       expect(frame.w.toArray()).toEqual([0, 0, 1]);

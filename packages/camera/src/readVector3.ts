@@ -57,7 +57,7 @@ export function checkCoordinates(v: Vector3, name: string): Vector3 {
 export function safeNormalize(v: Vector3): boolean {
   const m = Math.max(Math.abs(v.x), Math.abs(v.y), Math.abs(v.z));
   if (m === 0) return false;
-  v.divideScalar(m);
-  v.divideScalar(v.length());
+  // Divide (three's divideScalar multiplies by 1/m, which overflows to Infinity for a subnormal m).
+  v.set(v.x / m, v.y / m, v.z / m).normalize(); // length now in [1, √3]
   return true;
 }
