@@ -406,7 +406,7 @@ export class Viewer {
       setTrackballRadius(this.trackball, state.trackball.radius);
       const current = getTrackballRotation(this.pivot);
       if (current.some((c, i) => Math.abs(c - state.trackball.rotation[i]!) > 1e-12)) {
-        setTrackballRotation(this.trackball, this.pivot, state.trackball.rotation);
+        setTrackballRotation(this.trackball, state.trackball.rotation);
       }
     });
     attempt('camera movement', () => {

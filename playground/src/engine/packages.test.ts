@@ -58,7 +58,7 @@ describe('setTrackballRotation', () => {
     const eye = camera.position.clone();
     expect(eye.z).toBeCloseTo(1.5, 12);
 
-    setTrackballRotation(trackball, pivot, [0, 0, 0, 1]);
+    setTrackballRotation(trackball, [0, 0, 0, 1]);
     expect(pivot.quaternion.toArray()).toEqual([0, 0, 0, 1]);
     expect(isIdentity(trackball.getMatrix())).toBe(true);
     expect(trackball.zoom).toBeCloseTo(2, 12);
@@ -78,7 +78,7 @@ describe('setTrackballRotation', () => {
     drag([100, 100], [150, 120]);
     setCameraView(camera, [2, 1, 2], [0, 0, 0], [0, 1, 0]);
     camera.updateMatrixWorld();
-    setTrackballRotation(trackball, pivot, [0, 1.2, 0, 1.6]); // not normalised
+    setTrackballRotation(trackball, [0, 1.2, 0, 1.6]); // not normalised
     const q = new THREE.Quaternion(0, 0.6, 0, 0.8);
     expect(pivot.quaternion.angleTo(q)).toBeLessThan(1e-12);
     // getWorldMatrix is the object's rotation; getMatrix the same rotation in camera coordinates (C⁻¹ q C).

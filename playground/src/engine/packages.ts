@@ -201,27 +201,18 @@ const _rotation = /* @__PURE__ */ new Quaternion();
 const _cameraRotation = /* @__PURE__ */ new Quaternion();
 
 /**
- * Puts the object at rotation `q` (world orientation, as the URL keeps it; a restored link, "reset rotation")
- * through the trackball's own `setRotation`, so its `rotation`, `getMatrix()` and `getWorldMatrix()` agree
- * with the picture and the next drag continues from it. The trackball works in camera coordinates:
+ * Puts the trackball's object at rotation `q` (world orientation, as the URL keeps it; a restored link, "reset
+ * rotation") through the trackball's own `setRotation`, so its `rotation`, `getMatrix()` and `getWorldMatrix()`
+ * agree with the picture and the next drag continues from it. The trackball works in camera coordinates:
  * `setRotation(C⁻¹ · q · C)` (C the camera's orientation now) puts the object, which starts unrotated, at q.
  * The zoom is kept.
  */
-export function setTrackballRotation(
-  trackball: TrackballHandle,
-  object: THREE.Object3D,
-  q: [number, number, number, number],
-): void {
-  _rotation.fromArray(q);
-  if (trackball.object === object) {
-    if (trackball.camera) trackball.camera.getWorldQuaternion(_cameraRotation);
-    else _cameraRotation.identity();
-    _rotation.multiply(_cameraRotation); // q · C
-    trackball.setRotation(_rotation.premultiply(_cameraRotation.invert())); // C⁻¹ · q · C
-  } else {
-    object.quaternion.copy(_rotation).normalize();
-  }
-  object.updateMatrixWorld(true);
+export function setTrackballRotation(trackball: TrackballHandle, q: [number, number, number, number]): void {
+  if (trackball.camera) trackball.camera.getWorldQuaternion(_cameraRotation);
+  else _cameraRotation.identity();
+  _rotation.fromArray(q).multiply(_cameraRotation); // q · C
+  trackball.setRotation(_rotation.premultiply(_cameraRotation.invert())); // C⁻¹ · q · C
+  trackball.object.updateMatrixWorld(true);
 }
 
 // ---- material -----------------------------------------------------------------------------------------------
