@@ -18,5 +18,7 @@ export default defineConfig({
     include: ['packages/*/src/**/*.test.ts', 'playground/src/**/*.test.ts', 'bench/**/*.test.ts'],
     environment: 'node',
     testTimeout: 60_000,
+    // Every fast-check property runs from one fixed seed (SHADELAB_FUZZ_SEED overrides it; see npm run fuzz).
+    setupFiles: [fileURLToPath(new URL('./test-utils/fastCheckSeed.ts', import.meta.url))],
   },
 });

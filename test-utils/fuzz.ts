@@ -1,6 +1,17 @@
 import fc from 'fast-check';
 import { expect } from 'vitest';
 
+/**
+ * The seed every fast-check property of this run uses (set by test-utils/fastCheckSeed.ts), for a fuzz suite's
+ * closing line: a failure seen in a log reproduces with `SHADELAB_FUZZ_SEED=<seed>`.
+ */
+export function fuzzSeed(): number {
+  const { seed } = fc.readConfigureGlobal();
+  if (seed === undefined)
+    throw new Error('no fast-check seed: test-utils/fastCheckSeed.ts is not a setup file');
+  return seed;
+}
+
 /** Calls made and calls refused, for a fuzz suite's closing line. */
 export interface FuzzCounts {
   calls: number;

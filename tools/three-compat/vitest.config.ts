@@ -26,6 +26,7 @@ export default defineConfig({
   define: { __THREE_COMPAT_VERSION__: JSON.stringify(version) },
   test: {
     ...base.test,
-    setupFiles: [here('./checkRevision.ts')],
+    // The repository's setup files (the fixed fast-check seed) and the check that the pinned three is used.
+    setupFiles: [...[base.test?.setupFiles ?? []].flat(), here('./checkRevision.ts')],
   },
 });

@@ -23,7 +23,7 @@ import {
   Vector4,
 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
-import { hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
+import { fuzzSeed, hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor option and setter, fed hostile values, either works or throws a TypeError/RangeError
 // naming the parameter, and no NaN or Infinity ever reaches a uniform (checked after the per-draw update that
@@ -48,7 +48,7 @@ const colour = fc.oneof(
 const counts = { calls: 0, threw: 0, draws: 0 };
 afterAll(() => {
   console.log(
-    `material fuzz: ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.draws} draws with every uniform checked`,
+    `material fuzz: seed ${fuzzSeed()}, ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.draws} draws with every uniform checked`,
   );
 });
 

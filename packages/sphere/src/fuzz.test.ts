@@ -8,7 +8,7 @@ import { chooseSphereDetail, sphereError } from '@shadelab/sphere/detail';
 import { computeVertexNormals } from '@shadelab/sphere/normals';
 import fc from 'fast-check';
 import { afterAll, describe, expect, it } from 'vitest';
-import { hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
+import { fuzzSeed, hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every public entry point, fed hostile values, either works with finite results or throws a
 // TypeError/RangeError naming the parameter. Nothing non-finite reaches an array.
@@ -37,7 +37,7 @@ const sphereOptions = fc.record(
 const counts = { calls: 0, threw: 0 };
 afterAll(() => {
   console.log(
-    `sphere fuzz: ${counts.calls} calls, ${counts.threw} refused with a named TypeError/RangeError`,
+    `sphere fuzz: seed ${fuzzSeed()}, ${counts.calls} calls, ${counts.threw} refused with a named TypeError/RangeError`,
   );
 });
 

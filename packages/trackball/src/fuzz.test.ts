@@ -3,7 +3,7 @@ import { arcRotation, projectToBall, Trackball } from '@shadelab/trackball';
 import fc from 'fast-check';
 import { Matrix4, Object3D, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
-import { hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
+import { fuzzSeed, hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor option, setter and method, fed hostile values, either works with finite results or
 // throws a TypeError/RangeError naming the parameter; hostile pointer and wheel input never yields NaN.
@@ -17,7 +17,7 @@ const num = (min: number, max: number) =>
 const counts = { calls: 0, threw: 0, events: 0 };
 afterAll(() => {
   console.log(
-    `trackball fuzz: ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.events} hostile input events`,
+    `trackball fuzz: seed ${fuzzSeed()}, ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.events} hostile input events`,
   );
 });
 
