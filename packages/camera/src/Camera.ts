@@ -154,7 +154,8 @@ export class Camera extends ThreeCamera {
    * world frame is the requested one (uniformly-scaled parents, as three).
    *
    * @throws RangeError when eye = at, up is zero, any component is NaN/infinite, or an eye component is beyond
-   * ±1e30 (the view matrix must stay finite in float32); TypeError for non-vectors.
+   * ±1e30 (the view matrix must stay finite in float32); TypeError for non-vectors, and for `lookAt(x, y, z)`
+   * with a missing or non-number component (named `at`).
    */
   override lookAt(target: Vec3Input): this;
   override lookAt(x: number, y: number, z: number): this;
@@ -162,6 +163,13 @@ export class Camera extends ThreeCamera {
   override lookAt(a: Vec3Input | number, b?: Vec3Input | number, c?: Vec3Input | number): this {
     // three's forms look from the current world position with this.up.
     let eye: Vec3Input = this.getWorldPosition(_eye);
+    // lookAt(x, y, z) takes three numbers: three's Vector3.set keeps the old component for an undefined one,
+    // so a missing or non-number y or z would aim at a point nobody asked for.
+    if (typeof a === 'number' && (typeof b !== 'number' || typeof c !== 'number')) {
+      throw new TypeError(
+        `at must have numeric x, y, z in lookAt(x, y, z), got (${typeof a}, ${typeof b}, ${typeof c})`,
+      );
+    }
     let at: Vec3Input = typeof a === 'number' ? _target.set(a, b as number, c as number) : a;
     let up: Vec3Input = this.up;
     if (typeof a !== 'number' && b !== undefined) {

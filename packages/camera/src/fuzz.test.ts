@@ -9,7 +9,7 @@ import {
 import fc from 'fast-check';
 import { Matrix4, PerspectiveCamera, Vector3 } from 'three';
 import { afterAll, describe, expect, it } from 'vitest';
-import { hostileNumbers, hostileValue } from '../../../test-utils/fuzz.js';
+import { fuzzSeed, hostileNumbers, hostileValue } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor, option and setter, fed hostile values, either works with finite results or throws a
 // TypeError/RangeError naming the parameter. A camera that has refused a call is still finite and usable.
@@ -32,7 +32,7 @@ const vec = fc.oneof(
 const counts = { calls: 0, threw: 0 };
 afterAll(() => {
   console.log(
-    `camera fuzz: ${counts.calls} calls, ${counts.threw} refused with a named TypeError/RangeError`,
+    `camera fuzz: seed ${fuzzSeed()}, ${counts.calls} calls, ${counts.threw} refused with a named TypeError/RangeError`,
   );
 });
 
@@ -447,5 +447,45 @@ describe('camera fuzz (hostile values everywhere)', () => {
       ),
       { numRuns: 100 },
     );
+  });
+});
+
+// Every counterexample a fuzz run found, as a named test (DEVELOPERS.md, "Fuzzing"): fixed values, so they keep
+// testing the case even when the arbitraries above change.
+describe('camera fuzz counterexamples (regression tests)', () => {
+  it('lookAt(0, -1e308, undefined) is a TypeError naming at (seed -318908392, path "239:0:0", issue 13)', () => {
+    // three's lookAt(x, y, z) with z missing: Vector3.set kept the previous z, so the camera looked at a point
+    // nobody gave (down −y) instead of refusing. Found on "any sequence of calls leaves a finite camera".
+    const camera = new Camera().lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+    const before = camera.matrixWorld.clone();
+    for (const args of [
+      [0, -1e308, undefined],
+      [0, -1e308],
+      [1, 2],
+      [1, undefined, 3],
+      [1, '2', 3],
+      [1, 2, null],
+      [1, 2, [3]],
+    ] as const) {
+      expect(() => camera.lookAt(...(args as unknown as [number, number, number])), String(args)).toThrow(
+        new TypeError(
+          `at must have numeric x, y, z in lookAt(x, y, z), got (${[0, 1, 2].map((i) => typeof args[i]).join(', ')})`,
+        ),
+      );
+      expect(camera.matrixWorld.elements).toEqual(before.elements);
+    }
+    // With all three numbers it is three's lookAt(x, y, z): from (0, 0, 3) straight down −y (w = eye − at).
+    camera.lookAt(0, -1e308, 3);
+    expect(camera.getFrame().w.distanceTo(new Vector3(0, 1, 0))).toBeLessThan(1e-15);
+  });
+
+  it('eye − at of subnormal length (5e-324) gives the exact frame, not an overflow refusal (CI fuzz, f439681)', () => {
+    // three's divideScalar multiplies by 1/m, which is Infinity for m = 5e-324.
+    for (const s of [5e-324, -5e-324, 1e-310]) {
+      const { u, v, w } = new Camera().lookAt([0, 0, s], [0, 0, 0], [0, 1, 0]).getFrame();
+      expect(w.toArray()).toEqual([0, 0, Math.sign(s)]);
+      expect(v.toArray()).toEqual([0, 1, 0]);
+      expect(u.toArray()).toEqual([Math.sign(s), 0, 0]);
+    }
   });
 });
