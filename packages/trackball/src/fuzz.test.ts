@@ -2,7 +2,7 @@
 import { arcRotation, projectToBall, Trackball } from '@shadelab/trackball';
 import fc from 'fast-check';
 import { Matrix4, Object3D, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
-import { afterAll, describe, expect, it } from 'vitest';
+import { afterAll, afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { fuzzSeed, hostileNumbers, hostileValue, worksOrNamedError } from '../../../test-utils/fuzz.js';
 
 // Issue 8: every constructor option, setter and method, fed hostile values, either works with finite results or
@@ -15,6 +15,18 @@ const num = (min: number, max: number) =>
   fc.oneof({ weight: 2, arbitrary: fc.double({ min, max, noNaN: true }) }, hostile) as fc.Arbitrary<unknown>;
 
 const counts = { calls: 0, threw: 0, events: 0 };
+
+// A release starts a damped spin only within 100 ms of the last move (performance.now): the suite runs on a
+// clock of its own, which moves only when a drag is held before its release, so no machine's speed changes
+// what is tested.
+let clock = 0;
+beforeEach(() => {
+  clock = 0;
+  vi.spyOn(performance, 'now').mockImplementation(() => clock);
+});
+afterEach(() => {
+  vi.restoreAllMocks();
+});
 afterAll(() => {
   console.log(
     `trackball fuzz: seed ${fuzzSeed()}, ${counts.calls} calls (${counts.threw} refused with a named TypeError/RangeError), ${counts.events} hostile input events`,
@@ -80,7 +92,7 @@ const options = fc.record(
 );
 
 type Input =
-  | { kind: 'drag'; points: [number, number][] }
+  | { kind: 'drag'; points: [number, number][]; heldMs: number }
   | { kind: 'wheel'; deltaY: number; deltaMode: number }
   | { kind: 'pinch'; a: [number, number]; b: [number, number]; to: [number, number] }
   | { kind: 'update'; delta: unknown }
@@ -93,7 +105,10 @@ const coordinate = fc.oneof(
 );
 const point = fc.tuple(coordinate, coordinate);
 const input: fc.Arbitrary<Input> = fc.oneof(
-  fc.array(point, { minLength: 1, maxLength: 6 }).map((points) => ({ kind: 'drag' as const, points })),
+  // Released at once (a fling, which spins), or after holding still (no spin).
+  fc
+    .tuple(fc.array(point, { minLength: 1, maxLength: 6 }), fc.constantFrom(0, 16, 150))
+    .map(([points, heldMs]) => ({ kind: 'drag' as const, points, heldMs })),
   fc.record({ kind: fc.constant('wheel' as const), deltaY: coordinate, deltaMode: fc.constantFrom(0, 1, 2) }),
   fc.record({ kind: fc.constant('pinch' as const), a: point, b: point, to: point }),
   fc.record({ kind: fc.constant('update' as const), delta: num(0, 1) }),
@@ -125,6 +140,7 @@ function apply(trackball: Trackball, el: HTMLElement, step: Input): void {
       const [first, ...rest] = step.points;
       send(el, 'pointerdown', first);
       for (const p of rest) send(el, 'pointermove', p);
+      clock += step.heldMs;
       send(el, 'pointerup', step.points.at(-1)!);
       return;
     }
@@ -272,5 +288,49 @@ describe('trackball fuzz (hostile values everywhere)', () => {
     expect(trackball.getMatrix().elements).toEqual(
       new Matrix4().makeRotationFromQuaternion(trackball.rotation).elements,
     );
+  });
+});
+
+// Every counterexample a fuzz run found, as a named test (DEVELOPERS.md, "Fuzzing"): fixed values, so they keep
+// testing the case even when the arbitraries above change.
+describe('trackball fuzz counterexamples (regression tests)', () => {
+  it('an orthographic zoom above 9e307 is refused: three computes 2 · zoom, which overflows (fuzz, 626c68a)', () => {
+    // Found as a pinch from a 5e-324 px span to a huge one with maxZoom = Number.MAX_VALUE.
+    const camera = new OrthographicCamera(-2, 2, 1, -1, 0.1, 100);
+    const el = makeElement();
+    const trackball = new Trackball(null, el, { camera, maxZoom: Number.MAX_VALUE });
+    send(el, 'pointerdown', [0, 0], 1);
+    send(el, 'pointerdown', [5e-324, 0], 2);
+    send(el, 'pointermove', [1e308, 0], 2);
+    send(el, 'pointerup', [1e308, 0], 2);
+    send(el, 'pointerup', [0, 0], 1);
+    // The ratio is ∞, clamped to maxZoom: a zoom three cannot draw, so the step is refused.
+    expect(trackball.zoom).toBe(1);
+    expect(camera.zoom).toBe(1);
+    expectSane(trackball, camera);
+    // The same through zoomBy: the step past the limit three can draw is refused and changes nothing.
+    const zoomed = new Trackball(null, makeElement(), { camera, maxZoom: Number.MAX_VALUE });
+    expect(zoomed.zoomBy(1e300)).toBe(true);
+    const atLimit = camera.projectionMatrix.clone();
+    expect(zoomed.zoomBy(1e300)).toBe(false);
+    expect(zoomed.zoom).toBe(1e300);
+    expect(camera.projectionMatrix.equals(atLimit)).toBe(true);
+    expectSane(zoomed, camera);
+    trackball.dispose();
+    zoomed.dispose();
+  });
+
+  it('rotateSpeed near Number.MAX_VALUE keeps the rotation a unit quaternion: speed · θ overflowed to sin(∞) = NaN (fuzz, e45651b)', () => {
+    for (const rotateSpeed of [Number.MAX_VALUE, 1.7e308]) {
+      const el = makeElement();
+      const object = new Object3D();
+      const trackball = new Trackball(object, el, { rotateSpeed });
+      send(el, 'pointerdown', [100, 50]);
+      send(el, 'pointermove', [100, 160]); // a 110 px drag, as found
+      send(el, 'pointerup', [100, 160]);
+      expectSane(trackball, null);
+      expect(Math.abs(object.quaternion.length() - 1)).toBeLessThan(1e-9);
+      trackball.dispose();
+    }
   });
 });
