@@ -13,7 +13,7 @@ import {
   Vector3,
 } from 'three';
 import { TrackballControls } from 'three/examples/jsm/controls/TrackballControls.js';
-import { afterEach, describe, expect, it, vi } from 'vitest';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 
 const SIZE = 200; // the element is a 200 × 200 px square at (10, 20): ball radius 100 px, centre (110, 120)
 const CX = 110;
@@ -83,7 +83,14 @@ function trackball(
   return t;
 }
 
+// A release spins only within 100 ms of the last move (performance.now): the clock stands still, so a release
+// is always a fling however slow the machine (tests of a held release move it themselves).
+beforeEach(() => {
+  vi.spyOn(performance, 'now').mockReturnValue(0);
+});
+
 afterEach(() => {
+  vi.restoreAllMocks();
   for (const t of made.splice(0)) t.dispose();
   document.body.innerHTML = '';
 });

@@ -1,6 +1,6 @@
 import { arcRotation, projectToBall, type Quat, Trackball } from '@shadelab/trackball';
 import { Group, Matrix4, Mesh, PerspectiveCamera, Quaternion, Vector3 } from 'three';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 
 /** Largest deviation of the rotation matrix of q from orthonormal with det +1 (three.js builds the matrix). */
 function orthonormalError(q: Quat): number {
@@ -90,6 +90,8 @@ describe('trackball extremes (DESIGN.md): 10⁶ drags through Trackball', () => 
     parent.updateMatrixWorld();
     const camera = new PerspectiveCamera();
     const tb = new Trackball(mesh, element, { camera, enableDamping: true });
+    // The clock stands still: every release is a fling (within 100 ms of its last move) on any machine.
+    const now = vi.spyOn(performance, 'now').mockReturnValue(0);
     const event = { pointerId: 1, pointerType: 'mouse', button: 0, clientX: 0, clientY: 0 };
     const at = ([x, y]: [number, number]) => {
       event.clientX = 250 + 250 * x;
@@ -134,6 +136,7 @@ describe('trackball extremes (DESIGN.md): 10⁶ drags through Trackball', () => 
     expect(tb.getWorldMatrix().elements.every(Number.isFinite)).toBe(true);
     expect(tb.dragging).toBe(false);
     tb.dispose();
+    now.mockRestore();
     expect(onElement.size + onDocument.size).toBe(0);
   });
 });
