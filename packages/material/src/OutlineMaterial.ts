@@ -19,7 +19,12 @@ import { type ColorInput, checkNonNegative, setColor } from './validate.js';
 export interface OutlineMaterialOptions {
   /** Outline width in world units, measured along the surface normal. Finite, ≥ 0. @default 0.03 */
   thickness?: number;
-  /** Outline colour (linear RGB; hex and CSS strings are sRGB). @default 0x000000 */
+  /**
+   * Outline colour, read like every colour of this package (see {@link ColorInput}): a CSS string is sRGB
+   * (`'#f2f2f2'`), a `THREE.Color` or `[r, g, b]` is linear, and a number is a grey level in 0 … 1 (so a
+   * three-style hex number such as `0xff8000` is refused with its `'#ff8000'` spelling, never misread).
+   * @default 0 (black)
+   */
   color?: ColorInput;
 }
 
@@ -36,7 +41,7 @@ export class OutlineMaterial extends ShaderMaterial {
   override type = 'OutlineMaterial';
   readonly #color = new Color(0, 0, 0);
 
-  constructor({ thickness = 0.03, color = 0x000000 }: OutlineMaterialOptions = {}) {
+  constructor({ thickness = 0.03, color = 0 }: OutlineMaterialOptions = {}) {
     super({
       vertexShader,
       fragmentShader,
@@ -61,12 +66,12 @@ export class OutlineMaterial extends ShaderMaterial {
     this.uniforms.thickness.value = checkNonNegative('OutlineMaterial.thickness', value);
   }
 
-  /** Outline colour (linear RGB). @default Color(0, 0, 0) */
+  /** Outline colour (linear RGB; set it with a {@link ColorInput}, a number being a grey level in 0 … 1). @default Color(0, 0, 0) */
   get color(): Color {
     return this.#color;
   }
   set color(value: ColorInput) {
-    setColor('OutlineMaterial.color', this.#color, value);
+    setColor('OutlineMaterial.color', this.#color, value, 1);
     this.uniforms.outlineColor.value.copy(this.#color);
   }
 

@@ -4,11 +4,15 @@ import { type ColorInput, checkColorChannels, checkNonNegative, setColor } from 
 
 /** Options of {@link PhongLight}. */
 export interface PhongLightOptions {
-  /** Ia: ambient intensity (linear RGB; hex and CSS strings are sRGB). @default [0.2, 0.2, 0.2] (the lecture's) */
+  /**
+   * Ia: ambient intensity, linear. A number is a grey level (`0.2` = (0.2, 0.2, 0.2)), never a hex colour; a
+   * colour is a CSS string (sRGB), a `THREE.Color` or linear `[r, g, b]` (see {@link ColorInput}).
+   * @default 0.2 (the lecture's)
+   */
   ambient?: ColorInput;
-  /** Id: diffuse intensity (linear RGB). @default [1, 1, 1] (the lecture's) */
+  /** Id: diffuse intensity, linear; a number is a grey level (see {@link ColorInput}). @default 1 (the lecture's) */
   diffuse?: ColorInput;
-  /** Is: specular intensity (linear RGB). @default [0.8, 0.8, 0.8] (the lecture's) */
+  /** Is: specular intensity, linear; a number is a grey level (see {@link ColorInput}). @default 0.8 (the lecture's) */
   specular?: ColorInput;
   /**
    * Attenuation a, b, c: diffuse and specular are divided by a + b·t + c·t² (t = distance in world units).
@@ -27,7 +31,8 @@ const NO_ATTENUATION: Attenuation = Object.freeze({ a: 1, b: 0, c: 0 });
  * `matrixWorld` is current. The default light is the lecture's: Ia 0.2, Id 1, Is 0.8, no attenuation.
  *
  * @example
- * const light = new PhongLight({ diffuse: [1, 0.9, 0.8], attenuation: { a: 1, b: 0.05, c: 0 } });
+ * const light = new PhongLight({ ambient: 0.2, diffuse: 1, specular: 0.8 }); // the lecture's Ia, Id, Is (greys)
+ * const warm = new PhongLight({ diffuse: [1, 0.9, 0.8], specular: '#ffe0c0', attenuation: { a: 1, b: 0.05, c: 0 } });
  * light.position.set(-5, 10, 20);
  * scene.add(light);
  */
@@ -51,8 +56,9 @@ export class PhongLight extends Object3D {
   }
 
   /**
-   * Ia, the ambient intensity (linear RGB, channels finite ≥ 0). Setting it validates and copies; the
-   * returned Color may be edited in place (it is re-checked before every draw).
+   * Ia, the ambient intensity (linear RGB, channels finite ≥ 0). Set it with a {@link ColorInput} (a number is
+   * a grey level); setting validates and copies, and the returned Color may be edited in place (it is
+   * re-checked before every draw).
    * @default Color(0.2, 0.2, 0.2)
    */
   get ambient(): Color {
@@ -62,7 +68,7 @@ export class PhongLight extends Object3D {
     setColor('PhongLight.ambient', this.#ambient, value);
   }
 
-  /** Id, the diffuse intensity (linear RGB, channels finite ≥ 0). @default Color(1, 1, 1) */
+  /** Id, the diffuse intensity (linear RGB, channels finite ≥ 0; set a number as a grey level). @default Color(1, 1, 1) */
   get diffuse(): Color {
     return this.#diffuse;
   }
@@ -70,7 +76,7 @@ export class PhongLight extends Object3D {
     setColor('PhongLight.diffuse', this.#diffuse, value);
   }
 
-  /** Is, the specular intensity (linear RGB, channels finite ≥ 0). @default Color(0.8, 0.8, 0.8) */
+  /** Is, the specular intensity (linear RGB, channels finite ≥ 0; set a number as a grey level). @default Color(0.8, 0.8, 0.8) */
   get specular(): Color {
     return this.#specular;
   }

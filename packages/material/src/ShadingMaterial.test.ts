@@ -83,8 +83,8 @@ describe('ShadingMaterial options', () => {
     expect(m.kd.equals(new Color(0.6, 0.35, 0.2))).toBe(true);
   });
 
-  it('accepts hex and CSS colours as sRGB, tuples and Colors as linear', () => {
-    const m = new ShadingMaterial({ ka: 0xffffff, kd: [0.25, 0.5, 1], ks: new Color(0.1, 0.2, 0.3) });
+  it('accepts CSS colours as sRGB, tuples and Colors as linear (greys: ColorInput.test.ts)', () => {
+    const m = new ShadingMaterial({ ka: '#ffffff', kd: [0.25, 0.5, 1], ks: new Color(0.1, 0.2, 0.3) });
     expect(m.ka.toArray()).toEqual([1, 1, 1]);
     expect(m.kd.toArray()).toEqual([0.25, 0.5, 1]);
     expect(m.ks.toArray()).toEqual([0.1, 0.2, 0.3]);

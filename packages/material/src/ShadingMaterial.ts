@@ -40,11 +40,15 @@ export interface ShadingMaterialOptions {
   lighting?: Lighting;
   /** 0 = off; N in 2 … 255 = cel shading with N diffuse shades and a hard-edged highlight. @default 0 */
   celBands?: number;
-  /** ka, ambient reflectance (linear RGB; hex and CSS strings are sRGB). @default [0.6, 0.35, 0.2] */
+  /**
+   * ka, ambient reflectance, linear. A number is a grey level (`0.5` = (0.5, 0.5, 0.5)), never a hex colour; a
+   * colour is a CSS string (sRGB), a `THREE.Color` or linear `[r, g, b]` (see {@link ColorInput}).
+   * @default [0.6, 0.35, 0.2]
+   */
   ka?: ColorInput;
-  /** kd, diffuse reflectance (linear RGB). @default [0.6, 0.35, 0.2] */
+  /** kd, diffuse reflectance, linear; a number is a grey level (see {@link ColorInput}). @default [0.6, 0.35, 0.2] */
   kd?: ColorInput;
-  /** ks, specular reflectance (linear RGB). @default [0.5, 0.5, 0.5] */
+  /** ks, specular reflectance, linear; a number is a grey level (see {@link ColorInput}). @default 0.5 */
   ks?: ColorInput;
   /** α, the specular exponent: finite, ≥ 0 (0⁰ = 1: shininess 0 gives a uniform highlight). @default 32 */
   shininess?: number;
@@ -187,7 +191,11 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#syncDefines();
   }
 
-  /** ka, ambient reflectance (linear RGB, channels finite ≥ 0). @default Color(0.6, 0.35, 0.2) */
+  /**
+   * ka, ambient reflectance (linear RGB, channels finite ≥ 0). Set it with a {@link ColorInput} (a number is a
+   * grey level); setting validates and copies.
+   * @default Color(0.6, 0.35, 0.2)
+   */
   get ka(): Color {
     return this.#ka;
   }
@@ -195,7 +203,7 @@ export class ShadingMaterial extends ShaderMaterial {
     setColor('ShadingMaterial.ka', this.#ka, value);
   }
 
-  /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0). @default Color(0.6, 0.35, 0.2) */
+  /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0; set a number as a grey level). @default Color(0.6, 0.35, 0.2) */
   get kd(): Color {
     return this.#kd;
   }
@@ -203,7 +211,7 @@ export class ShadingMaterial extends ShaderMaterial {
     setColor('ShadingMaterial.kd', this.#kd, value);
   }
 
-  /** ks, specular reflectance (linear RGB, channels finite ≥ 0). @default Color(0.5, 0.5, 0.5) */
+  /** ks, specular reflectance (linear RGB, channels finite ≥ 0; set a number as a grey level). @default Color(0.5, 0.5, 0.5) */
   get ks(): Color {
     return this.#ks;
   }

@@ -7,7 +7,7 @@ import { OutlineMaterial, type OutlineMaterialOptions } from './OutlineMaterial.
  * `mesh.remove(outline)` and free it with `outline.material.dispose()` (the geometry stays the mesh's).
  *
  * @example
- * const outline = createOutline(mesh, { thickness: 0.05, color: 0x000000 });
+ * const outline = createOutline(mesh, { thickness: 0.05, color: '#000000' });
  * @returns the outline mesh, already added to `mesh`.
  */
 export function createOutline(

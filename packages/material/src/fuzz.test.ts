@@ -41,7 +41,11 @@ const colour = fc.oneof(
     fc.double({ min: 0, max: 2, noNaN: true }),
     fc.double({ min: 0, max: 2, noNaN: true }),
   ),
+  // A number is a grey level (linear, the same on r, g and b); a hex colour is a CSS string. Three-style hex
+  // numbers are large greys for a light or ka/kd/ks and refused by the outline (greys 0 … 1).
+  fc.double({ min: 0, max: 2, noNaN: true }),
   fc.integer({ min: 0, max: 0xffffff }),
+  fc.integer({ min: 0, max: 0xffffff }).map((hex) => `#${hex.toString(16).padStart(6, '0')}`),
   hostile,
 );
 
@@ -212,6 +216,12 @@ describe('material fuzz (hostile values everywhere)', () => {
                 target[name] instanceof Color ? (target[name] as Color).toArray() : target[name],
               );
               expect(after, `a refused ${name} keeps its value`).toBe(before);
+            } else if (typeof value === 'number' && target[name] instanceof Color) {
+              expect((target[name] as Color).toArray(), `${name} = ${value} is a grey level`).toEqual([
+                value,
+                value,
+                value,
+              ]);
             }
           }
           if (material.phongLights.length > 0 && !material.phongLights.every((l) => l instanceof PhongLight))

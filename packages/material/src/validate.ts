@@ -1,9 +1,17 @@
-// Internal argument checks shared by ShadingMaterial and PhongLight: errors name the parameter, the value
-// and the allowed range.
-import { Color, type ColorRepresentation } from 'three';
+// Internal argument checks shared by ShadingMaterial, PhongLight and OutlineMaterial: errors name the parameter,
+// the value and the allowed range.
+import { Color } from 'three';
 
-/** A colour input: anything `THREE.Color.set` takes (hex and CSS strings are sRGB), or linear `[r, g, b]`. */
-export type ColorInput = ColorRepresentation | readonly [number, number, number];
+/**
+ * A colour or an intensity, as this package reads it (the rule is stated once in the package README,
+ * "Colours and intensities"):
+ * - a number is a **grey level**: the same linear value on r, g and b, as the lecture writes its intensities
+ *   (Ia = 0.2 is `0.2`); never a hex colour;
+ * - a string is a CSS colour, sRGB (`'#ff8000'`, `'orange'`, `'rgb(255, 128, 0)'`): write hex colours so;
+ * - a `THREE.Color` is copied as is (linear: `new Color(0xff8000)` is three's sRGB hex converted);
+ * - `[r, g, b]` is linear RGB.
+ */
+export type ColorInput = number | string | Color | readonly [number, number, number];
 
 function show(value: unknown): string {
   if (typeof value === 'string') return JSON.stringify(value);
@@ -51,23 +59,35 @@ export function checkColorChannels(name: string, color: Color): Color {
   return color;
 }
 
-/** Parse `value` into `target` (linear working space) after checking it; `target` is left untouched on error. */
-export function setColor(name: string, target: Color, value: ColorInput): Color {
+/** What `setColor` accepts, for its error messages. */
+const FORMS = "a grey level (number), a CSS colour string ('#rrggbb'), a Color or linear [r, g, b]";
+
+/**
+ * Parse `value` (a {@link ColorInput}) into `target` (linear working space) after checking it; `target` is left
+ * untouched on error. A number is a grey level in 0 … `maxGrey`: the outline colour, shown as is, takes 0 … 1
+ * so that a three-style hex number (0xff8000) is refused, not read as a grey.
+ */
+export function setColor(name: string, target: Color, value: ColorInput, maxGrey = MAX_COEFFICIENT): Color {
   const parsed = new Color();
   if (Array.isArray(value)) {
     if (value.length !== 3 || !value.every((c) => typeof c === 'number')) {
-      throw new TypeError(
-        `${name} must be a Color, a hex number, a CSS string or [r, g, b], got ${show(value)}`,
-      );
+      throw new TypeError(`${name} must be ${FORMS}, got ${show(value)}`);
     }
     parsed.setRGB(value[0], value[1], value[2]);
   } else if (value instanceof Color || (typeof value === 'object' && value !== null && 'isColor' in value)) {
     parsed.copy(value as Color);
   } else if (typeof value === 'number') {
-    if (!Number.isInteger(value) || value < 0 || value > 0xffffff) {
-      throw new RangeError(`${name} as a hex number must be an integer in 0 … 0xffffff, got ${show(value)}`);
+    if (!(Number.isFinite(value) && value >= 0 && value <= maxGrey)) {
+      const range = maxGrey === MAX_COEFFICIENT ? '0 … 1e18' : `0 … ${maxGrey}`;
+      const hex =
+        Number.isInteger(value) && value > maxGrey && value <= 0xffffff
+          ? ` (a hex colour is written '#${value.toString(16).padStart(6, '0')}' or new Color(0x${value.toString(16).padStart(6, '0')}))`
+          : '';
+      throw new RangeError(
+        `${name} as a number is a grey level (the same linear value on r, g and b) in ${range}${hex}, got ${show(value)}`,
+      );
     }
-    parsed.setHex(value);
+    parsed.setRGB(value, value, value);
   } else if (typeof value === 'string') {
     parsed.setRGB(Number.NaN, 0, 0);
     parsed.setStyle(value);
@@ -75,9 +95,7 @@ export function setColor(name: string, target: Color, value: ColorInput): Color 
       throw new TypeError(`${name} must be a CSS colour string three understands, got ${show(value)}`);
     }
   } else {
-    throw new TypeError(
-      `${name} must be a Color, a hex number, a CSS string or [r, g, b], got ${show(value)}`,
-    );
+    throw new TypeError(`${name} must be ${FORMS}, got ${show(value)}`);
   }
   checkColorChannels(name, parsed);
   return target.copy(parsed);
