@@ -530,7 +530,7 @@ function outline(thickness: number): {
     return pixels;
   };
   const before = read();
-  const hull = createOutline(mesh, { thickness, color: 0x000000 });
+  const hull = createOutline(mesh, { thickness, color: '#000000' });
   const after = read();
   hull.material.dispose();
   material.dispose();

@@ -291,7 +291,7 @@ export const OUTLINE_THICKNESS = 0.03;
  * drawn light so that it shows on the lecture's black background.
  */
 export function createOutlineMesh(mesh: THREE.Mesh): THREE.Mesh<THREE.BufferGeometry, OutlineMaterial> {
-  return createOutline(mesh, { thickness: OUTLINE_THICKNESS, color: 0xf2f2f2 });
+  return createOutline(mesh, { thickness: OUTLINE_THICKNESS, color: '#f2f2f2' });
 }
 
 /** Sets the outline's colour (a CSS colour such as `#rrggbb`, sRGB; the material names a bad one). */

@@ -6,4 +6,4 @@ import { chooseSphereDetail, type SphereDetail } from '@shadelab/sphere/detail';
 
 export const impostorOptions: SphereImpostorMaterialOptions = { lighting: 'blinn-phong', celBands: 3 };
 export const detail: SphereDetail = chooseSphereDetail({ radiusPx: 200, maxErrorPx: 0.5 });
-export const outlineOptions: OutlineMaterialOptions = { thickness: 0.05, color: 0x000000 };
+export const outlineOptions: OutlineMaterialOptions = { thickness: 0.05, color: '#000000' };
