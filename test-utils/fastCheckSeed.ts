@@ -22,4 +22,10 @@ export function fuzzSeedFromEnvironment(value = process.env.SHADELAB_FUZZ_SEED):
   return seed;
 }
 
-fc.configureGlobal({ ...fc.readConfigureGlobal(), seed: fuzzSeedFromEnvironment() });
+// includeErrorInReport: the failure message itself says what went wrong (`Got error: …`), so the JSON report that
+// scripts/fuzz.mjs reads has it (by default it is only the error's cause).
+fc.configureGlobal({
+  ...fc.readConfigureGlobal(),
+  seed: fuzzSeedFromEnvironment(),
+  includeErrorInReport: true,
+});
