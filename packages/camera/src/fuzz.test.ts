@@ -162,22 +162,30 @@ function lookAtExpected(eye: unknown, at: unknown, up: unknown, bounded = true):
 const targetExpected = (c: Camera, target: unknown) =>
   validVector(target) ? lookAtExpected(c.position.toArray(), target, c.up.toArray()) : 'at';
 
+/** Arguments as fast-check prints values (NaN, -0, undefined, 10n, Symbol(s), strings quoted). */
+const show = (...args: unknown[]) => args.map((a) => fc.stringify(a)).join(', ');
+
+/** An operation that a counterexample prints as the call it makes, e.g. `lookAt(0, -1e+308, undefined)`. */
+function call<T extends readonly unknown[]>(text: string, operation: T): T {
+  return Object.assign(operation, { [fc.toStringMethod]: () => text });
+}
+
 /** One random call on a camera (or a movement on it), with the outcome its arguments predict. */
 const operation = fc.oneof(
-  fc.tuple(num(1, 179), num(0.1, 10), num(1e-3, 10), num(10, 1e6)).map(
-    ([fovy, aspect, near, far]) =>
-      [
-        'setPerspective',
-        (c: Camera): Expected => ({
-          name: firstBad(projectionChecks({ ...fieldsOf(c), kind: 'perspective', fovy, aspect, near, far })),
-          orElse: MATRIX,
-        }),
-        (c: Camera) => c.setPerspective(fovy, aspect, near, far),
-      ] as const,
+  fc.tuple(num(1, 179), num(0.1, 10), num(1e-3, 10), num(10, 1e6)).map(([fovy, aspect, near, far]) =>
+    call(`setPerspective(${show(fovy, aspect, near, far)})`, [
+      'setPerspective',
+      (c: Camera): Expected => ({
+        name: firstBad(projectionChecks({ ...fieldsOf(c), kind: 'perspective', fovy, aspect, near, far })),
+        orElse: MATRIX,
+      }),
+      (c: Camera) => c.setPerspective(fovy, aspect, near, far),
+    ] as const),
   ),
-  fc.tuple(num(-10, 10), num(-10, 10), num(-10, 10), num(-10, 10), num(-10, 10), num(-10, 10)).map(
-    ([right, left, top, bottom, near, far]) =>
-      [
+  fc
+    .tuple(num(-10, 10), num(-10, 10), num(-10, 10), num(-10, 10), num(-10, 10), num(-10, 10))
+    .map(([right, left, top, bottom, near, far]) =>
+      call(`setOrthographic(${show(right, left, top, bottom, near, far)})`, [
         'setOrthographic',
         (c: Camera): Expected => ({
           name: firstBad(
@@ -186,99 +194,93 @@ const operation = fc.oneof(
           orElse: MATRIX,
         }),
         (c: Camera) => c.setOrthographic(right, left, top, bottom, near, far),
-      ] as const,
+      ] as const),
+    ),
+  num(0.1, 10).map((aspect) =>
+    call(`setAspect(${show(aspect)})`, [
+      'setAspect',
+      (c: Camera): Expected => {
+        if (typeof aspect !== 'number' || !positive(aspect)) return { name: 'aspect' };
+        const f = fieldsOf(c);
+        if (c.projection === 'perspective') return { name: null, orElse: MATRIX };
+        // Orthographic: keeps the vertical extent and the centre; the new left/right are checked as planes.
+        const cx = (c.left + c.right) / 2;
+        const half = (Math.sign(c.right - c.left) * aspect * Math.abs(c.top - c.bottom)) / 2;
+        return {
+          name: firstBad(projectionChecks({ ...f, left: cx - half, right: cx + half })),
+          orElse: MATRIX,
+        };
+      },
+      (c: Camera) => c.setAspect(aspect),
+    ] as const),
   ),
-  num(0.1, 10).map(
-    (aspect) =>
-      [
-        'setAspect',
-        (c: Camera): Expected => {
-          if (typeof aspect !== 'number' || !positive(aspect)) return { name: 'aspect' };
-          const f = fieldsOf(c);
-          if (c.projection === 'perspective') return { name: null, orElse: MATRIX };
-          // Orthographic: keeps the vertical extent and the centre; the new left/right are checked as planes.
-          const cx = (c.left + c.right) / 2;
-          const half = (Math.sign(c.right - c.left) * aspect * Math.abs(c.top - c.bottom)) / 2;
-          return {
-            name: firstBad(projectionChecks({ ...f, left: cx - half, right: cx + half })),
-            orElse: MATRIX,
-          };
-        },
-        (c: Camera) => c.setAspect(aspect),
-      ] as const,
+  fc.tuple(vec, vec, vec).map(([e, a, u]) =>
+    call(`lookAt(${show(e, a, u)})`, [
+      'lookAt(eye, at, up)',
+      (c: Camera): Expected => ({
+        // A number first is three's lookAt(x, y, z); at = undefined its lookAt(target); up = undefined
+        // keeps this.up.
+        name:
+          typeof e === 'number'
+            ? targetExpected(c, [e, a, u])
+            : a === undefined
+              ? targetExpected(c, e)
+              : lookAtExpected(e, a, u === undefined ? c.up.toArray() : u),
+      }),
+      (c: Camera) => c.lookAt(e, a, u),
+    ] as const),
   ),
-  fc.tuple(vec, vec, vec).map(
-    ([e, a, u]) =>
-      [
-        'lookAt(eye, at, up)',
-        (c: Camera): Expected => ({
-          // A number first is three's lookAt(x, y, z); at = undefined its lookAt(target); up = undefined
-          // keeps this.up.
-          name:
-            typeof e === 'number'
-              ? targetExpected(c, [e, a, u])
-              : a === undefined
-                ? targetExpected(c, e)
-                : lookAtExpected(e, a, u === undefined ? c.up.toArray() : u),
-        }),
-        (c: Camera) => c.lookAt(e, a, u),
-      ] as const,
-  ),
-  vec.map(
-    (t) =>
-      [
-        'lookAt(target)',
-        (c: Camera): Expected => ({ name: targetExpected(c, t) }),
-        (c: Camera) => c.lookAt(t),
-      ] as const,
+  vec.map((t) =>
+    call(`lookAt(${show(t)})`, [
+      'lookAt(target)',
+      (c: Camera): Expected => ({ name: targetExpected(c, t) }),
+      (c: Camera) => c.lookAt(t),
+    ] as const),
   ),
   fc
     .tuple(
       fc.constantFrom('fovy', 'fov', 'aspect', 'near', 'far', 'zoom', 'left', 'right', 'top', 'bottom'),
       hostile,
     )
-    .map(
-      ([field, value]) =>
-        [
-          `${field} = …; updateProjectionMatrix()`,
-          (c: Camera): Expected => ({
-            name: firstBad(projectionChecks({ ...fieldsOf(c), [field === 'fov' ? 'fovy' : field]: value })),
-            orElse: MATRIX,
-          }),
-          (c: Camera) => {
-            const saved = (c as unknown as Record<string, unknown>)[field];
-            (c as unknown as Record<string, unknown>)[field] = value;
-            try {
-              c.updateProjectionMatrix();
-            } catch (error) {
-              // The documented contract: a refused field is put back by the caller.
-              (c as unknown as Record<string, unknown>)[field] = saved;
-              c.updateProjectionMatrix();
-              throw error;
-            }
-          },
-        ] as const,
+    .map(([field, value]) =>
+      call(`${field} = ${show(value)}; updateProjectionMatrix()`, [
+        `${field} = …; updateProjectionMatrix()`,
+        (c: Camera): Expected => ({
+          name: firstBad(projectionChecks({ ...fieldsOf(c), [field === 'fov' ? 'fovy' : field]: value })),
+          orElse: MATRIX,
+        }),
+        (c: Camera) => {
+          const saved = (c as unknown as Record<string, unknown>)[field];
+          (c as unknown as Record<string, unknown>)[field] = value;
+          try {
+            c.updateProjectionMatrix();
+          } catch (error) {
+            // The documented contract: a refused field is put back by the caller.
+            (c as unknown as Record<string, unknown>)[field] = saved;
+            c.updateProjectionMatrix();
+            throw error;
+          }
+        },
+      ] as const),
     ),
-  fc.tuple(num(-1, 1), num(-1, 1), num(-1, 1)).map(
-    ([du, dv, dw]) =>
-      [
-        'move',
-        (): Expected =>
-          [du, dv, dw].every(isFiniteNumber)
-            ? { name: null, orElse: 'du, dv, dw' } // refused only beyond ±1e30 world units
-            : { name: 'du, dv, dw' },
-        (c: Camera) => new CameraMovement(c).move(du, dv, dw),
-      ] as const,
+  fc.tuple(num(-1, 1), num(-1, 1), num(-1, 1)).map(([du, dv, dw]) =>
+    call(`move(${show(du, dv, dw)})`, [
+      'move',
+      (): Expected =>
+        [du, dv, dw].every(isFiniteNumber)
+          ? { name: null, orElse: 'du, dv, dw' } // refused only beyond ±1e30 world units
+          : { name: 'du, dv, dw' },
+      (c: Camera) => new CameraMovement(c).move(du, dv, dw),
+    ] as const),
   ),
   fc
     .tuple(num(-1, 1), num(-1, 1))
-    .map(
-      ([yaw, pitch]) =>
-        [
-          'turn',
-          (): Expected => ({ name: [yaw, pitch].every(isFiniteNumber) ? null : 'yaw, pitch' }),
-          (c: Camera) => new CameraMovement(c).turn(yaw, pitch),
-        ] as const,
+    .map(([yaw, pitch]) =>
+      call(`turn(${show(yaw, pitch)})`, [
+        'turn',
+        (): Expected => ({ name: [yaw, pitch].every(isFiniteNumber) ? null : 'yaw, pitch' }),
+        (c: Camera) => new CameraMovement(c).turn(yaw, pitch),
+      ] as const),
     ),
 );
 
