@@ -7,11 +7,11 @@
 //   node scripts/bundle-size.mjs --json [file]   # also writes the figures (default bench/results/playground-bundle.json)
 //
 // Deterministic (no timing): the same sources give the same numbers on any machine.
-import { mkdirSync, writeFileSync } from 'node:fs';
-import { dirname, sep } from 'node:path';
+import { sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
 import { build } from 'vite';
+import { writeJson } from '../bench/lib/meta.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const args = process.argv.slice(2);
@@ -108,13 +108,11 @@ for (const [k, t] of Object.entries(totals)) {
 }
 
 if (jsonFile) {
-  mkdirSync(dirname(jsonFile), { recursive: true });
-  const json = {
+  writeJson(jsonFile, {
     entry: 'playground/index.html',
     unit: 'bytes (kB = 1000 B in the table)',
     groups: totals,
     total: all,
-  };
-  writeFileSync(jsonFile, `${JSON.stringify(json, null, 2)}\n`);
+  });
   console.log(`wrote ${jsonFile}`);
 }

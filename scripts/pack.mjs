@@ -2,10 +2,11 @@
 // into DIR (a new temporary folder by default) and print what each tarball holds: packed and unpacked size and
 // file count. tests/pack.spec.ts imports `packPackages` to install the tarballs into fresh apps.
 import { spawnSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
+import { basename, dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { writeJson } from '../bench/lib/meta.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 
@@ -110,8 +111,8 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
   console.log(packTable(packed));
   console.log(`\ntarballs in ${dirname(packed[0].tarball)}`);
   const json = arg('--json');
+  // With the run's meta block; the tarball's file name only (its folder is this machine's).
   if (json) {
-    mkdirSync(dirname(resolve(json)), { recursive: true });
-    writeFileSync(resolve(json), `${JSON.stringify(packed, null, 2)}\n`);
+    writeJson(resolve(json), { packages: packed.map((p) => ({ ...p, tarball: basename(p.tarball) })) });
   }
 }

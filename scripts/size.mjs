@@ -5,11 +5,13 @@
 // - a subpath (`@shadelab/x/y`): everything it exports, and what it adds to an app that already imports the
 //   main entry (the bytes of main + subpath minus those of main), the latter gated at the same target;
 // - the package total (all its entries together), reported so that growth is seen.
-// `node scripts/size.mjs` checks the budgets; `--json PATH` also writes the numbers.
+// `node scripts/size.mjs` checks the budgets; `--json PATH` also writes the numbers (with the run's meta block;
+// `--json bench/results/size.json` is what BENCHMARKS.md shows).
 import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { build } from 'vite';
+import { writeJson } from '../bench/lib/meta.mjs';
 import { root } from './setup.mjs';
 
 const packages = ['sphere', 'camera', 'trackball', 'material', 'reference'];
@@ -113,8 +115,6 @@ for (const r of rows) {
   );
 }
 const i = process.argv.indexOf('--json');
-if (i >= 0) {
-  mkdirSync(dirname(process.argv[i + 1]), { recursive: true });
-  writeFileSync(process.argv[i + 1], `${JSON.stringify(rows, null, 2)}\n`);
-}
+// { meta, rows }: bench/results/size.json is what BENCHMARKS.md shows (npm run benchmarks).
+if (i >= 0) writeJson(process.argv[i + 1], rows);
 process.exit(rows.every((r) => r.ok) ? 0 : 1);

@@ -1,6 +1,5 @@
 // Shared benchmark helpers: warm-up, then the median, min and max of repeated runs.
-import { mkdirSync, writeFileSync } from 'node:fs';
-import { dirname } from 'node:path';
+import { writeJson } from './meta.mjs';
 
 /**
  * Time `fn` (milliseconds): `warmup` untimed calls, then `runs` timed ones.
@@ -33,12 +32,14 @@ export function jsonPath() {
   return i >= 0 ? process.argv[i + 1] : undefined;
 }
 
-/** Write results as JSON to `--json PATH` when given. @param {unknown} results */
+/**
+ * Write results as JSON to `--json PATH` when given, with the run's `meta` block (lib/meta.mjs: date, commit,
+ * machine, load average, Node, Chromium and three versions). @param {unknown} results
+ */
 export function writeResults(results) {
   const path = jsonPath();
   if (!path) return;
-  mkdirSync(dirname(path), { recursive: true });
-  writeFileSync(path, `${JSON.stringify(results, null, 2)}\n`);
+  writeJson(path, results);
   console.log(`wrote ${path}`);
 }
 

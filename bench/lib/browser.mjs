@@ -8,6 +8,7 @@ import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
 import { chromiumArgs, chromiumExecutable } from '../../scripts/browser.mjs';
+import { recordBrowser } from './meta.mjs';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 
@@ -53,6 +54,7 @@ export async function openPlayground() {
     executablePath: chromiumExecutable() ?? undefined,
     args: chromiumArgs,
   });
+  recordBrowser(`Chromium ${browser.version()}`);
   return {
     url: (path) => `http://127.0.0.1:${port}/${path.replace(/^\//, '')}`,
     browser,
