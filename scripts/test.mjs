@@ -14,6 +14,7 @@ mkdirSync(join(root, 'reports'), { recursive: true });
 const stages = [
   ['type check (tsc -b, tests)', 'npx', ['tsc', '-b']],
   ['type check (tests, playground, bench)', 'npx', ['tsc', '-p', 'tsconfig.test.json']],
+  ['code in the docs type-checks (snippets)', 'node', ['scripts/snippets.mjs', '--check']],
   ['lint (biome)', 'npx', ['biome', 'ci', '.']],
   [
     'size budget (minified + gzipped, without three)',
