@@ -1,0 +1,124 @@
+// scripts/snippets.mjs on a tiny Markdown fixture: which blocks it extracts and with what marks, that a good
+// block (complete or partial with its context) type-checks, and that a broken one is reported at its Markdown
+// line and column, in the block or in its context.
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterAll, describe, expect, test } from 'vitest';
+import { checkBlocks, collectBlocks, extractBlocks, root } from './snippets.mjs';
+
+const FIXTURE = `# Fixture
+
+\`\`\`sh
+npm install three
+\`\`\`
+
+A complete block, with three's types and the DOM:
+
+\`\`\`ts
+import { Vector3 } from 'three';
+
+const length: number = new Vector3(3, 4, 0).length();
+document.title = String(length);
+\`\`\`
+
+<!-- context
+import type { Vector3 } from 'three';
+declare const v: Vector3;
+-->
+
+\`\`\`ts partial
+const x: number = v.x;
+\`\`\`
+
+- In a list, indented, with a type error on its second line:
+
+  \`\`\`typescript
+  const n: number = 1;
+  const s: string = n;
+  \`\`\`
+
+<!-- context=broken
+const missing: number = notDeclared;
+-->
+
+\`\`\`ts partial=broken
+export const y = missing + 1;
+\`\`\`
+
+\`\`\`ts run=lecture
+import { Camera } from '@shadelab/camera';
+new Camera().lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+\`\`\`
+`;
+
+describe('extractBlocks', () => {
+  test('finds every ts block with its fence line, marks, heading and context; skips other languages', () => {
+    const blocks = extractBlocks(FIXTURE, 'docs/fixture.md');
+    expect(
+      blocks.map((b) => ({ line: b.line, ext: b.ext, partial: b.partial, run: b.run, indent: b.indent })),
+    ).toEqual([
+      { line: 9, ext: 'ts', partial: undefined, run: undefined, indent: 0 },
+      { line: 21, ext: 'ts', partial: true, run: undefined, indent: 0 },
+      { line: 27, ext: 'ts', partial: undefined, run: undefined, indent: 2 },
+      { line: 36, ext: 'ts', partial: 'broken', run: undefined, indent: 0 },
+      { line: 40, ext: 'ts', partial: undefined, run: 'lecture', indent: 0 },
+    ]);
+    expect(blocks[0].heading).toBe('Fixture');
+    expect(blocks[1].context).toEqual({
+      name: undefined,
+      line: 17,
+      lines: ["import type { Vector3 } from 'three';", 'declare const v: Vector3;'],
+    });
+    expect(blocks[2].code).toBe('const n: number = 1;\nconst s: string = n;\n');
+  });
+
+  test('refuses a misspelt mark, a partial block without its context, an orphan context and run with partial', () => {
+    expect(() => extractBlocks('```ts partal\nlet a = 1;\n```\n', 'a.md')).toThrow(
+      "a.md:1: unknown mark 'partal'",
+    );
+    expect(() => extractBlocks('text\n\n```ts partial\na;\n```\n', 'b.md')).toThrow(
+      'b.md:3: a partial block needs its context',
+    );
+    expect(() => extractBlocks('<!-- context\ndeclare const a: 1;\n-->\n\n```ts\na;\n```\n', 'c.md')).toThrow(
+      'c.md:1: this context comment is not followed by a `partial` block',
+    );
+    expect(() => extractBlocks('```ts partial=nowhere\na;\n```\n', 'd.md')).toThrow(
+      'd.md:1: partial=nowhere names no <!-- context=nowhere --> comment',
+    );
+    expect(() =>
+      extractBlocks('<!-- context\ndeclare const a: 1;\n-->\n```ts partial run=lecture\na;\n```\n', 'e.md'),
+    ).toThrow('e.md:4: a run=lecture block is run as it stands');
+  });
+});
+
+describe('checkBlocks', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'shadelab-snippets-'));
+  // Inside the repository, so that three and @shadelab/* resolve through its node_modules as in a user's app.
+  mkdirSync(join(root, 'reports'), { recursive: true });
+  const out = mkdtempSync(join(root, 'reports', 'snippets-test-'));
+  afterAll(() => {
+    rmSync(dir, { recursive: true, force: true });
+    rmSync(out, { recursive: true, force: true });
+  });
+
+  test('good blocks pass; each error is reported at its Markdown line and column (block or context)', () => {
+    writeFileSync(join(dir, 'fixture.md'), FIXTURE);
+    const blocks = collectBlocks({ dir, files: ['fixture.md'] });
+    const { errors } = checkBlocks(blocks, out);
+    expect(errors).toEqual([
+      // The list item's block: line 29 of the Markdown, column 9 counting the two spaces of indentation.
+      expect.stringMatching(
+        /^fixture\.md:29:9: error TS2322: Type 'number' is not assignable to type 'string'/,
+      ),
+      expect.stringMatching(
+        /^fixture\.md:33:25 \(in the context of the block at line 36\): error TS2304: Cannot find name 'notDeclared'/,
+      ),
+    ]);
+  });
+
+  test('a block that type-checks alone passes', () => {
+    const blocks = extractBlocks('```ts\nexport const a: number = Math.PI;\n```\n', 'ok.md');
+    expect(checkBlocks(blocks, out).errors).toEqual([]);
+  });
+});
