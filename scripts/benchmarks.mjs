@@ -1,0 +1,902 @@
+// BENCHMARKS.md, generated from bench/results/*.json: never edit it, change the JSON (npm run bench, or the
+// commands listed in the page) and run this.
+//
+//   node scripts/benchmarks.mjs           # (npm run benchmarks) writes BENCHMARKS.md
+//   node scripts/benchmarks.mjs --check   # exits 1 when BENCHMARKS.md differs from what the JSON renders (npm test)
+//
+// Every number in the page comes from a results file, and so does how it was measured: each file's `meta`
+// block (bench/lib/meta.mjs: date, commit, machine, load average, Node, Chromium and three versions), shown in
+// the Runs table; a field a file does not have reads "not recorded".
+import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+export const OUTPUT = 'BENCHMARKS.md';
+const NOT_RECORDED = '_not recorded_';
+
+/**
+ * Where each results file comes from, in the order of the page: the script that writes it and the command
+ * that regenerates it.
+ * @type {{ name: string, writer: string, command: string }[]}
+ */
+export const SOURCES = [
+  { name: 'sphere', writer: 'bench/sphere.bench.mjs', command: 'npm run bench -- sphere' },
+  { name: 'autodetail', writer: 'bench/autodetail.bench.mjs', command: 'npm run bench -- autodetail' },
+  { name: 'tradeoff', writer: 'bench/tradeoff.bench.mjs', command: 'npm run bench -- tradeoff' },
+  { name: 'material', writer: 'bench/material.bench.mjs', command: 'npm run bench -- material' },
+  { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
+  { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
+  {
+    name: 'size',
+    writer: 'scripts/size.mjs',
+    command: 'node scripts/size.mjs --json bench/results/size.json',
+  },
+  {
+    name: 'pack',
+    writer: 'scripts/pack.mjs',
+    command: 'node scripts/pack.mjs --json bench/results/pack.json',
+  },
+  {
+    name: 'playground-bundle',
+    writer: 'scripts/bundle-size.mjs',
+    command: 'node scripts/bundle-size.mjs --json bench/results/playground-bundle.json',
+  },
+  {
+    name: 'playground-first-frame',
+    writer: 'tests/playground-perf.spec.ts',
+    command:
+      'SHADELAB_FIRST_FRAME_JSON=bench/results/playground-first-frame.json CI=1 npx playwright test tests/playground-perf.spec.ts',
+  },
+  { name: 'reliability', writer: 'bench/reliability.bench.mjs', command: 'npm run bench -- reliability' },
+];
+
+// ── Formatting ─────────────────────────────────────────────────────────────────────────────────────────────
+
+/** Thousands with commas, independent of the locale. @param {number} n */
+export const int = (n) => {
+  const [whole, frac] = String(n).split('.');
+  const sign = whole.startsWith('-') ? '-' : '';
+  const digits = sign ? whole.slice(1) : whole;
+  const grouped = digits.replace(/\B(?=(\d{3})+(?!\d))/g, ',');
+  return `${sign}${grouped}${frac === undefined ? '' : `.${frac}`}`;
+};
+/** A number with d decimals and thousands commas. @param {number} x @param {number} d */
+const fixed = (x, d) => {
+  const [whole, frac] = x.toFixed(d).split('.');
+  return `${int(Number(whole))}${frac === undefined ? '' : `.${frac}`}`;
+};
+/** Milliseconds as the sphere bench prints them. @param {number} x */
+const ms = (x) => (x >= 100 ? x.toFixed(0) : x >= 10 ? x.toFixed(1) : x.toFixed(2));
+/** A ratio as the sphere bench prints it. @param {number} x */
+const ratio = (x) => (x >= 10 ? x.toFixed(0) : x.toFixed(1));
+/** @param {number} x */
+const exp1 = (x) => (x === 0 ? '0' : x.toExponential(1));
+/** @param {number} bytes */
+const kB = (bytes) => `${fixed(bytes / 1000, 1)} kB`;
+/** @param {number} bytes */
+const MB = (bytes) => `${(bytes / 1e6).toFixed(2)} MB`;
+/** @param {number} bytes */
+const B = (bytes) => `${int(bytes)} B`;
+const SUPERSCRIPT = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+/** 1000 → 10³ for exact powers of ten, else the number. @param {number} n */
+const power10 = (n) => {
+  const k = Math.round(Math.log10(n));
+  return 10 ** k === n ? `10${[...String(k)].map((c) => SUPERSCRIPT[Number(c)]).join('')}` : int(n);
+};
+
+/**
+ * A Markdown table. @param {string[]} header @param {string} align one letter per column: l or r
+ * @param {(string | number)[][]} rows @returns {string[]}
+ */
+export function table(header, align, rows) {
+  return [
+    `| ${header.join(' | ')} |`,
+    `| ${[...align].map((a) => (a === 'r' ? '---:' : '---')).join(' | ')} |`,
+    ...rows.map((r) => `| ${r.join(' | ')} |`),
+  ];
+}
+
+/** @param {string | null | undefined} iso */
+function showDate(iso) {
+  if (!iso) return NOT_RECORDED;
+  const d = new Date(iso);
+  return Number.isNaN(d.getTime()) ? iso : `${d.toISOString().slice(0, 16).replace('T', ' ')} UTC`;
+}
+
+/** @param {number[] | null | undefined} load */
+const showLoad = (load) => (Array.isArray(load) ? load.map((x) => x.toFixed(2)).join(' / ') : null);
+
+/** The Runs table's cells for one file's meta. @param {any} meta */
+function metaCells(meta) {
+  const m = meta ?? {};
+  const commit = m.commit
+    ? `\`${m.commit.slice(0, 7)}\`${m.dirty ? ' + uncommitted changes' : ''}`
+    : NOT_RECORDED;
+  const machine = m.machine
+    ? `${m.machine.cpus} × ${m.machine.cpuModel}, ${m.machine.memoryGiB} GiB, ${m.machine.platform}`
+    : NOT_RECORDED;
+  const start = showLoad(m.loadavg);
+  const end = showLoad(m.loadavgEnd);
+  const load = start ? (end ? `${start} → ${end}` : start) : NOT_RECORDED;
+  return [
+    showDate(m.date),
+    commit,
+    machine,
+    load,
+    m.node ?? NOT_RECORDED,
+    m.chromium ?? NOT_RECORDED,
+    m.three ?? NOT_RECORDED,
+  ];
+}
+
+/** The line under a section's heading: which file, and its run. @param {string} name @param {any} data */
+function fromLine(name, data) {
+  const m = data.meta ?? {};
+  const commit = m.commit ? `commit \`${m.commit.slice(0, 7)}\`` : 'commit not recorded';
+  return `From [\`bench/results/${name}.json\`](bench/results/${name}.json), run of ${showDate(m.date)} (${commit}; machine and versions in [Runs](#runs)).`;
+}
+
+/** @param {string} name */
+const missing = (name) => {
+  const source = SOURCES.find((s) => s.name === name);
+  return `_No committed results: \`${source?.command ?? `bench/results/${name}.json`}\` writes them._`;
+};
+
+// ── Sections ───────────────────────────────────────────────────────────────────────────────────────────────
+
+/** @param {Record<string, any>} results @returns {string[]} */
+function runs(results) {
+  const names = [...SOURCES.map((s) => s.name), ...Object.keys(results).sort()].filter(
+    (n, i, all) => all.indexOf(n) === i && results[n],
+  );
+  const rows = names.map((name) => {
+    const source = SOURCES.find((s) => s.name === name);
+    return [
+      `[\`${name}.json\`](bench/results/${name}.json)`,
+      source ? `[\`${source.writer}\`](${source.writer})` : NOT_RECORDED,
+      ...metaCells(results[name].meta),
+    ];
+  });
+  const notes = names
+    .filter((n) => results[n].meta?.backfilled)
+    .map((n) => `- \`${n}.json\`: ${results[n].meta.backfilled}`);
+  return [
+    '## Runs',
+    '',
+    'Each results file records the run that wrote it. Load average: 1, 5 and 15 minutes, at the start → at the end.',
+    '',
+    ...table(
+      ['results', 'written by', 'date', 'commit', 'machine', 'load average', 'Node', 'Chromium', 'three'],
+      'lllllllll',
+      rows,
+    ),
+    ...(notes.length ? ['', 'Files written before runs recorded their meta:', '', ...notes] : []),
+    '',
+    'To refresh a file, run its command on a quiet machine, then `npm run benchmarks`:',
+    '',
+    ...SOURCES.filter((s) => names.includes(s.name)).map((s) => `- \`${s.name}.json\`: \`${s.command}\``),
+  ];
+}
+
+/** @param {any} r @returns {string[]} */
+function sphereBuild(r) {
+  const out = [
+    '## Sphere build time',
+    '',
+    fromLine('sphere', r),
+    '',
+    `\`subdivideSphere\` with ${r.normals} normals, median of at least 5 timed samples after warm-up, ms per call; a sample shorter than ${r.sampleMs} ms repeats the call and reports the time per call${r.quick ? ' (a `--quick` run)' : ''}. \`plain write\` allocates the same typed arrays as the build and fills them in a simple loop: the floor for producing those bytes. The peer is three's \`IcosahedronGeometry(1, d)\` at the detail d whose 20·(d + 1)² triangles are nearest.`,
+    '',
+    ...table(
+      [
+        'base',
+        'level',
+        'triangles',
+        'indexed',
+        'plain write (idx)',
+        'non-indexed',
+        'plain write (non-idx)',
+        'three `IcosahedronGeometry` (detail → triangles)',
+        'three ÷ indexed',
+        'indexed ÷ plain',
+        'three ÷ non-idx',
+        'non-idx ÷ plain',
+      ],
+      'lrrrrrrrrrrr',
+      r.builds.map((/** @type {any} */ b) => [
+        b.base,
+        b.level,
+        int(b.triangles),
+        ms(b.indexed.ours.median),
+        ms(b.indexed.plain.median),
+        ms(b.nonIndexed.ours.median),
+        ms(b.nonIndexed.plain.median),
+        `${ms(b.three.median)} (${b.threeDetail} → ${int(b.threeTriangles)})`,
+        `${ratio(b.indexed.threeOverOurs)}×`,
+        `${ratio(b.indexed.oursOverPlain)}×`,
+        `${ratio(b.nonIndexed.threeOverOurs)}×`,
+        `${ratio(b.nonIndexed.oursOverPlain)}×`,
+      ]),
+    ),
+  ];
+  const t = r.builds.find((/** @type {any} */ b) => b.base === 'tetrahedron' && b.level === 8);
+  if (t) {
+    const ok = t.indexed.threeOverOurs >= 10 && t.indexed.oursOverPlain <= 5;
+    out.push(
+      '',
+      `Target (indexed level 8 tetrahedron, ${int(t.triangles)} triangles): ${ratio(t.indexed.threeOverOurs)}× faster than three (goal ≥ 10×), ${ratio(t.indexed.oursOverPlain)}× the plain write (goal ≤ 5×): **${ok ? 'met' : 'not met'}**.`,
+    );
+  }
+  return out;
+}
+
+/** @param {any} r @returns {string[]} */
+function sphereError(r) {
+  const bases = [...new Set(r.errors.map((/** @type {any} */ e) => e.base))];
+  const levels = [...new Set(r.errors.map((/** @type {any} */ e) => e.level))];
+  /** @param {unknown} base @param {unknown} level */
+  const at = (base, level) => r.errors.find((/** @type {any} */ e) => e.base === base && e.level === level);
+  /** @param {any} p */
+  const pick = (p) =>
+    p ? `L${p.level}: ${int(p.triangles)}` : `> L${Math.max(.../** @type {number[]} */ (levels))}`;
+  const costLevels = [...new Set(r.errorCost.map((/** @type {any} */ c) => c.levels))];
+  return [
+    '## Sphere error',
+    '',
+    fromLine('sphere', r),
+    '',
+    'The exact radial error of the unit sphere (`sphereError`) and the triangle count T of each base and level: error·T tends to a constant per base, and the lowest constant buys accuracy cheapest.',
+    '',
+    ...table(
+      ['level', ...bases.flatMap((b) => [`${b} T`, 'error', 'error·T'])],
+      `r${'rrr'.repeat(bases.length)}`,
+      levels.map((level) => [
+        level,
+        ...bases.flatMap((base) => {
+          const e = at(base, level);
+          return e
+            ? [int(e.triangles), e.error.toExponential(3), e.errorTimesTriangles.toFixed(3)]
+            : ['—', '—', '—'];
+        }),
+      ]),
+    ),
+    '',
+    '### Fewest triangles for a relative error budget',
+    '',
+    ...table(
+      ['error ≤', ...bases.map(String), 'cheapest'],
+      `r${'r'.repeat(bases.length)}l`,
+      r.budgets.map((/** @type {any} */ b) => [
+        b.budget.toExponential(0),
+        ...b.picks.map(pick),
+        b.best ? `${b.best.base} L${b.best.level}` : '—',
+      ]),
+    ),
+    '',
+    '### sphereError first-call cost',
+    '',
+    'Milliseconds; later calls are a memo lookup.',
+    '',
+    ...table(
+      ['base', ...costLevels.map((l) => (l === '0-10' ? 'levels 0–10 (all)' : `level ${l}`))],
+      `l${'r'.repeat(costLevels.length)}`,
+      bases.map((base) => [
+        base,
+        ...costLevels.map((l) => {
+          const c = r.errorCost.find((/** @type {any} */ x) => x.base === base && x.levels === l);
+          return c ? ms(c.firstCallMs) : '—';
+        }),
+      ]),
+    ),
+  ];
+}
+
+/** @param {any} r @returns {string[]} */
+function autodetail(r) {
+  const t = r.totals;
+  const first = r.points[0];
+  const last = r.points.at(-1);
+  /** @param {number} n */
+  const saved = (n) => `${((1 - n / t.fixed.triangles) * 100).toFixed(1)} %`;
+  /** @param {any} a */
+  const show = (a) => `${a.base} ${a.level} (${int(a.triangles)})`;
+  /** @param {string} label @param {any} x @param {boolean} [isFixed] */
+  const row = (label, x, isFixed = false) => [
+    label,
+    int(x.triangles),
+    isFixed ? '—' : saved(x.triangles),
+    `${x.worstMeasuredPx.toFixed(3)} px`,
+    x.overBudget,
+  ];
+  const budget = r.budgetPx;
+  return [
+    '## Automatic detail',
+    '',
+    fromLine('autodetail', r),
+    '',
+    `\`AutoDetailSphere\` over a zoom sweep of the lecture scene: ellipsoid scale (${r.scale.join(', ')}), eye on +z, ${r.fovy}° perspective, ${r.width}×${r.height}, ${r.points.length} distances from ${first.distance.toFixed(2)} to ${last.distance.toFixed(1)} units. Errors are measured in the image: the largest distance between the mesh's projected outline and the exact ellipsoid's (${int(r.outlineSamples)} outline samples, [\`bench/lib/silhouetteGap.mjs\`](bench/lib/silhouetteGap.mjs)).`,
+    '',
+    ...table(
+      [
+        '',
+        'triangles drawn over the sweep',
+        `saved vs fixed ${r.fixed.base} level ${r.fixed.level}`,
+        'worst measured error',
+        `distances over ${budget} px`,
+      ],
+      'lrrrr',
+      [
+        row(`fixed ${r.fixed.base} level ${r.fixed.level} (the lecture's)`, t.fixed, true),
+        row(`\`AutoDetailSphere\`, budget ${budget} px`, t.auto),
+        row(
+          `\`AutoDetailSphere\`, budget ${r.equalBudgetPx.toFixed(3)} px (level ${r.fixed.level}'s worst measured error)`,
+          t.autoEqual,
+        ),
+        row(
+          `\`AutoDetailSphere\`, budget ${r.equalBoundPx.toFixed(3)} px (level ${r.fixed.level}'s worst bound)`,
+          t.autoEqualBound,
+        ),
+        row(`projected radius × error (the model before the bound), budget ${budget} px`, t.radiusModel),
+      ],
+    ),
+    '',
+    `The bound costs ${int(t.auto.triangles - t.radiusModel.triangles)} triangles (${(t.auto.triangles / t.radiusModel.triangles).toFixed(1)}×) more than the radius model over the sweep. Level ${r.fixed.level}'s error depends on how the sphere is turned: turned ${r.fixedRotated.rotations} seeded random ways at ${r.fixedRotated.distance} units it measures up to ${r.fixedRotated.worstMeasuredPx.toFixed(2)} px (its bound there: ${first.fixed.boundPx.toFixed(2)} px); the bound holds for every orientation.`,
+    '',
+    '### Automatic detail at each distance',
+    '',
+    'Measured error in px, the bound `AutoDetailSphere` budgets in brackets; a mesh is base, level (triangles).',
+    '',
+    ...table(
+      [
+        'distance',
+        'radius px',
+        `${r.fixed.base} ${r.fixed.level}`,
+        `auto ${budget} px`,
+        'radius model (before)',
+        'auto at equal error',
+        'auto at equal bound',
+      ],
+      'rrlllll',
+      r.points.map((/** @type {any} */ p) => [
+        p.distance.toFixed(2),
+        p.radiusPx.toFixed(1),
+        `${p.fixed.measuredPx.toFixed(3)} [${p.fixed.boundPx.toFixed(3)}]`,
+        `${show(p.auto)}: ${p.auto.measuredPx.toFixed(3)} [${p.auto.boundPx.toFixed(3)}]`,
+        `${show(p.radiusModel)}: ${p.radiusModel.measuredPx.toFixed(3)}`,
+        `${show(p.autoEqual)}: ${p.autoEqual.measuredPx.toFixed(3)}`,
+        `${show(p.autoEqualBound)}: ${p.autoEqualBound.measuredPx.toFixed(3)}`,
+      ]),
+    ),
+  ];
+}
+
+/** @param {any} r @returns {string[]} */
+function tradeoff(r) {
+  const rows = Object.entries(r.rows);
+  const cheapest = Object.entries(r.cheapest ?? {});
+  const columns = cheapest.length ? Object.keys(cheapest[0][1]) : [];
+  /** @param {string} key `rmse≤1` or `silhouette≤0.5px` */
+  const target = (key) =>
+    key.replace(/^rmse≤/, 'RMSE ≤ ').replace(/^silhouette≤([\d.]+)px$/, 'silhouette ≤ $1 px');
+  const levels = [...r.levels, ...(r.smoothLevels ?? [])];
+  return [
+    '## Speed against accuracy',
+    '',
+    fromLine('tradeoff', r),
+    '',
+    `The lecture scene at ${r.width}×${r.height}, every option (\`ShadingMaterial\` flat on \`flatShadingGeometry\`, Gouraud and Phong on every base at levels ${r.levels.join(', ')}${r.smoothLevels?.length ? `, Gouraud and Phong also at ${r.smoothLevels.join(', ')}` : ''}, and \`SphereImpostor\`) scored against \`renderReference\` (rendered once, in ${r.referenceMs.toFixed(0)} ms): RMSE and max over the interior in 8-bit sRGB, silhouette error in px. Frame: median of ${r.frames} frames pooled over ${r.rounds} round-robin rounds, a 1×1 \`readPixels\` after each${r.gpuTimer ? '; GPU: the median of EXT_disjoint_timer_query_webgl2' : ''}. The bench's note: ${r.note}.`,
+    '',
+    ...table(
+      ['option', 'triangles', 'buffer bytes', 'RMSE', 'max', 'silhouette px', 'frame ms', 'GPU ms'],
+      'lrrrrrrr',
+      rows.map(([name, x]) => [
+        name === 'phong tetrahedron 6' ? `${name} (the lecture's)` : name,
+        int(x.triangles),
+        int(x.bytes),
+        x.error.rmse.toFixed(2),
+        x.error.max,
+        x.error.silhouettePx.toFixed(2),
+        x.frameMs ? x.frameMs.median.toFixed(1) : 'n/a',
+        x.gpuMs ? x.gpuMs.median.toFixed(1) : 'n/a',
+      ]),
+    ),
+    '',
+    `Levels measured: ${levels.join(', ')}.`,
+    '',
+    '### Pareto fronts',
+    '',
+    `Frame time against RMSE: ${(r.paretoRmse ?? []).join(' → ')}.`,
+    '',
+    `Frame time against silhouette error: ${(r.paretoSilhouette ?? []).join(' → ')}.`,
+    '',
+    '### Cheapest option for an error target',
+    '',
+    'The option with the shortest frame meeting both targets:',
+    '',
+    ...table(
+      ['cheapest meeting', ...columns.map(target)],
+      `l${'l'.repeat(columns.length)}`,
+      cheapest.map(([rk, cells]) => [
+        target(rk),
+        ...columns.map((c) => /** @type {any} */ (cells)[c] ?? '—'),
+      ]),
+    ),
+  ];
+}
+
+const MATERIAL_TARGETS = /** @type {const} */ ([
+  ['phongVsMeshPhong', 'phong × phong / MeshPhongMaterial ≤ 1'],
+  ['gouraudVsPhong', 'gouraud × phong / phong × phong < 1'],
+  ['flatVsPhong', 'flat × phong / phong × phong < 1'],
+  ['flatSoupVsPhong', 'flat (triangle soup) / phong × phong'],
+  ['twoLightsVsOne', '2 lights / 1 light < 2 (phong × phong)'],
+]);
+
+/** @param {any} r @returns {string[]} */
+function material(r) {
+  const levels = Object.keys(r.levels).sort((a, b) => Number(a) - Number(b));
+  const variants = [...new Set(levels.flatMap((l) => Object.keys(r.levels[l].rows)))];
+  /** @param {string} l @param {string} v */
+  const cell = (l, v) => r.levels[l].rows[v];
+  const out = [
+    '## Material frame time',
+    '',
+    fromLine('material', r),
+    '',
+    `Every \`ShadingMaterial\` variant against three's \`MeshPhongMaterial\` (point light with decay 0 plus an ambient light, shininess 32), \`MeshLambertMaterial\` and \`MeshToonMaterial\` on the same sphere in the same run, and \`MeshBasicMaterial\` (no lighting) as the floor: what transforming and rasterising the sphere costs by itself. ${r.width}×${r.height}, ${r.frames} frames per variant in ${r.rounds} interleaved rounds, a 1×1 \`readPixels\` after each. Gouraud, Phong and three's materials draw the indexed sphere, flat shading \`flatShadingGeometry\` of it, and the soup row the non-indexed sphere. Frame ms: median, the minimum in brackets${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}.`,
+    '',
+    ...table(
+      [
+        'variant',
+        ...levels.map((l) => `level ${l} (${int(r.levels[l].triangles)} tris) frame`),
+        ...levels.map((l) => `level ${l} GPU`),
+      ],
+      `l${'r'.repeat(levels.length * 2)}`,
+      variants.map((v) => [
+        v,
+        ...levels.map((l) => {
+          const c = cell(l, v);
+          return c ? `${c.frameMs.median.toFixed(1)} (${c.frameMs.min.toFixed(1)})` : '—';
+        }),
+        ...levels.map((l) => {
+          const c = cell(l, v);
+          return c?.gpuMs ? c.gpuMs.median.toFixed(1) : 'n/a';
+        }),
+      ]),
+    ),
+    '',
+    '### Material targets',
+    '',
+    'Ratios of the medians, and of the minima (the least disturbed frames) in brackets:',
+    '',
+    ...table(
+      ['target', ...levels.map((l) => `level ${l}`)],
+      `l${'r'.repeat(levels.length)}`,
+      MATERIAL_TARGETS.map(([key, label]) => [
+        label,
+        ...levels.map((l) => {
+          const t = r.levels[l].targets?.[key];
+          return t ? `${t.median.toFixed(2)} (min ${t.min.toFixed(2)})` : '—';
+        }),
+      ]),
+    ),
+  ];
+  const top = levels.at(-1);
+  const floor = top && cell(top, 'three MeshBasicMaterial (no lighting)');
+  if (top && floor) {
+    /** @param {string} v */
+    const above = (v) => {
+      const c = cell(top, v);
+      return c ? `${(c.frameMs.median - floor.frameMs.median).toFixed(0)} ms` : 'not measured';
+    };
+    out.push(
+      '',
+      `At level ${top} (${int(r.levels[top].triangles)} triangles) the unlit floor is ${floor.frameMs.median.toFixed(0)} ms a frame; above it gouraud × phong adds ${above('gouraud × phong')}, phong × phong ${above('phong × phong')}, flat × phong ${above('flat × phong')} and flat × phong on the triangle soup ${above('flat × phong (triangle soup)')} (medians).`,
+    );
+  }
+  out.push(
+    '',
+    '### Geometry each shading needs',
+    '',
+    ...table(
+      [
+        'level',
+        'triangles',
+        'flat (flatShadingGeometry): vertices, positions + corners + index',
+        'flat (soup): vertices, positions + face texture',
+        'gouraud/phong (indexed): vertices, positions + index',
+        "three's: + normals",
+      ],
+      'rrlllr',
+      levels.map((l) => {
+        const m = r.levels[l].memory;
+        return [
+          l,
+          int(r.levels[l].triangles),
+          `${int(m.flat.vertices)}: ${MB(m.flat.positionsBytes)} + ${MB(m.flat.cornersBytes)} + ${MB(m.flat.indexBytes)}`,
+          `${int(m.flatSoup.vertices)}: ${MB(m.flatSoup.positionsBytes)} + ${MB(m.flatSoup.flatTextureBytes)}`,
+          `${int(m.indexed.vertices)}: ${MB(m.indexed.positionsBytes)} + ${MB(m.indexed.indexBytes)}`,
+          `+ ${MB(m.indexed.normalsBytes)}`,
+        ];
+      }),
+    ),
+  );
+  return out;
+}
+
+/** @param {any} r @returns {string[]} */
+function cameraDepth(r) {
+  /** @type {any[]} */
+  const rows = r.rows;
+  const modes = [...new Set(rows.map((x) => x.mode))];
+  const ratios = [...new Set(rows.map((x) => x.ratio))].sort((a, b) => a - b);
+  const zs = [...new Set(rows.map((x) => x.z))].sort((a, b) => a - b);
+  /** @param {number} x */
+  const e = (x) => `1e${Math.round(Math.log10(x))}`;
+  /** @param {unknown} x */
+  const fmt = (x) =>
+    typeof x !== 'number' ? (x === 'lost' ? '> 1' : '—') : x <= 1e-9 ? '≤ 1e-9' : x.toExponential(1);
+  const out = [
+    '## Camera depth precision',
+    '',
+    fromLine('camera-depth', r),
+    '',
+    `The smallest relative separation Δz/z at which a red quad at distance z still hides a green one at z·(1 + Δz/z) drawn after it, per depth mode of \`@shadelab/camera\` (\`-float\` rows draw into a render target with a 32-bit float depth texture). The bench's method: ${r.method}. The _near_ row gives each cell's near plane.`,
+    '',
+    "SwiftShader stores every depth format as 32-bit float, the canvas's 24-bit depth buffer included, so the plain `reversed` row is float-depth reversed-Z. On a GPU with a true 24-bit fixed-point depth buffer, reversed-Z into the canvas keeps only about 2⁻²⁴ · z/near, like `standard` (not measured here): use a float depth target there. `reversed-or-logarithmic` runs reversed-Z here (SwiftShader has `EXT_clip_control`).",
+  ];
+  for (const z of zs) {
+    out.push(
+      '',
+      `**z = ${int(z)}**`,
+      '',
+      ...table(
+        ['mode', ...ratios.map((x, i) => (i === 0 ? `far/near ${e(x)}` : e(x)))],
+        `l${'l'.repeat(ratios.length)}`,
+        [
+          [
+            '_near_',
+            ...ratios.map((ratio) => {
+              const c = rows.find((x) => x.ratio === ratio && x.z === z);
+              return c ? `_${Number(c.near.toPrecision(2))}_` : '—';
+            }),
+          ],
+          ...modes.map((mode) => [
+            mode,
+            ...ratios.map((ratio) =>
+              fmt(rows.find((x) => x.mode === mode && x.ratio === ratio && x.z === z)?.minSeparation),
+            ),
+          ]),
+        ],
+      ),
+    );
+  }
+  if (r.frameTimes) {
+    out.push(
+      '',
+      '### Depth probe frame cost',
+      '',
+      'One probe frame (8×8 canvas, two quads, render and a 1×1 `readPixels`), milliseconds: too small to show the fill-rate cost of writing `gl_FragDepth`; it shows that no mode adds a per-frame overhead.',
+      '',
+      ...table(
+        ['mode', 'renderer reports', 'median', 'min', 'max'],
+        'llrrr',
+        Object.entries(r.frameTimes).map(([mode, t]) => [
+          mode,
+          rows.find((x) => x.mode === mode)?.active ?? '—',
+          /** @type {any} */ (t).median.toFixed(3),
+          /** @type {any} */ (t).min.toFixed(3),
+          /** @type {any} */ (t).max.toFixed(3),
+        ]),
+      ),
+    );
+  }
+  return out;
+}
+
+/** Ball radius of the trackball bench's feel table, px (bench/trackball.bench.mjs). */
+const BALL_RADIUS_PX = 250;
+
+/** @param {any} r @returns {string[]} */
+function trackball(r) {
+  /** @type {any[]} */
+  const feel = r.degreesPerRadialPixel;
+  /** @param {number} rPx */
+  const rLabel = (rPx) =>
+    rPx === BALL_RADIUS_PX
+      ? `${rPx} (rim)`
+      : Math.abs(rPx - BALL_RADIUS_PX / Math.SQRT2) < 1
+        ? `${rPx} (≈ R/√2)`
+        : String(rPx);
+  /** @param {number} deg @param {number} rPx */
+  const arc = (deg, rPx) => (deg === 0 ? (rPx === BALL_RADIUS_PX ? '0 (roll only)' : '0') : deg.toFixed(3));
+  const c = r.coreNsPerDragStep;
+  const p = r.pointerMoveUs;
+  return [
+    '## Trackball',
+    '',
+    fromLine('trackball', r),
+    '',
+    `Rotation of a one-pixel radial move at distance r from the centre of a ${BALL_RADIUS_PX} px-radius ball, degrees:`,
+    '',
+    ...table(['r (px)', ...feel.map((x) => rLabel(x.rPx))], `l${'r'.repeat(feel.length)}`, [
+      ['arcball (°)', ...feel.map((x) => arc(x.arcballDeg, x.rPx))],
+      ['Bell (°, the default)', ...feel.map((x) => x.bellDeg.toFixed(3))],
+    ]),
+    '',
+    `Angle of a tiny drag from the centre (${BALL_RADIUS_PX} px-radius ball), relative error against the exact 2·asin(x):`,
+    '',
+    ...table(
+      ['drag (px)', ...r.tinyDragAngle.map((/** @type {any} */ x) => String(x.dragPx))],
+      `l${'r'.repeat(r.tinyDragAngle.length)}`,
+      [
+        ['`atan2` (ours)', ...r.tinyDragAngle.map((/** @type {any} */ x) => exp1(x.atan2RelError))],
+        ['`acos(a·b)`', ...r.tinyDragAngle.map((/** @type {any} */ x) => exp1(x.acosRelError))],
+      ],
+    ),
+    '',
+    "Orthonormality error of the rotation accumulated with three's `Quaternion` after N random drags (double precision):",
+    '',
+    ...table(
+      ['drags', ...r.orthonormalityAfterDrags.map((/** @type {any} */ x) => power10(x.drags))],
+      `l${'r'.repeat(r.orthonormalityAfterDrags.length)}`,
+      [
+        [
+          'renormalised (ours)',
+          ...r.orthonormalityAfterDrags.map((/** @type {any} */ x) => exp1(x.renormalised)),
+        ],
+        [
+          'not renormalised',
+          ...r.orthonormalityAfterDrags.map((/** @type {any} */ x) => exp1(x.notRenormalised)),
+        ],
+      ],
+    ),
+    '',
+    '### Trackball speed',
+    '',
+    `Median and fastest of the timed runs after warm-up${r.quick ? ' (a `--quick` run: its numbers mean nothing)' : ''}:`,
+    '',
+    ...table(['step', 'median (arcball / Bell)', 'fastest (arcball / Bell)'], 'lrr', [
+      [
+        'one drag step of the core (2 × `projectToBall` + `arcRotation` + three `Quaternion` multiply + normalise)',
+        `${(c.arcball.medianNs / 1000).toFixed(2)} / ${(c.bell.medianNs / 1000).toFixed(2)} µs`,
+        `${(c.arcball.minNs / 1000).toFixed(2)} / ${(c.bell.minNs / 1000).toFixed(2)} µs`,
+      ],
+      [
+        'one `pointermove` through `Trackball`, with an object and a camera (handler work only)',
+        `${p.arcball.medianUs.toFixed(2)} / ${p.bell.medianUs.toFixed(2)} µs`,
+        `${p.arcball.minUs.toFixed(2)} / ${p.bell.minUs.toFixed(2)} µs`,
+      ],
+    ]),
+  ];
+}
+
+/** @param {any} r @returns {string[]} */
+function sizes(r) {
+  /** @type {any[]} */
+  const rows = r.rows;
+  const entries = [...new Set(rows.filter((x) => x.measure !== 'total').map((x) => x.entry))];
+  const totals = rows.filter((x) => x.measure === 'total');
+  return [
+    '## Package sizes',
+    '',
+    fromLine('size', r),
+    '',
+    'Minified and gzipped, without dependencies (three, a peer; `@shadelab/material` inside `@shadelab/reference`, which has its own row). A main entry is measured as a whole; a subpath entry also by what it adds to an app that already imports the main entry, and that is what its budget gates. `npm test` measures and checks them again on every run (`scripts/size.mjs`).',
+    '',
+    ...table(
+      ['entry point', 'minified', 'gzip', 'added to the main entry (gzip)', 'budget', 'within budget'],
+      'lrrrrl',
+      entries.map((entry) => {
+        const whole = rows.find((x) => x.entry === entry && x.measure === 'whole entry');
+        const added = rows.find((x) => x.entry === entry && x.measure === 'added to main');
+        const gated = added ?? whole;
+        return [
+          `\`${entry}\``,
+          whole ? B(whole.minified) : '—',
+          whole ? B(whole.gzipped) : '—',
+          added ? B(added.gzipped) : '',
+          gated?.budget ? B(gated.budget) : '—',
+          gated ? (gated.ok ? 'yes' : '**no**') : '—',
+        ];
+      }),
+    ),
+    ...(totals.length
+      ? [
+          '',
+          `All entries of a package together: ${totals.map((x) => `\`${x.package}\` ${B(x.gzipped)}`).join(', ')}.`,
+        ]
+      : []),
+  ];
+}
+
+/** @param {any} r @returns {string[]} */
+function tarballs(r) {
+  return [
+    '## Tarballs',
+    '',
+    fromLine('pack', r),
+    '',
+    'What `npm run pack` puts in each package tarball (README, changelog, licence, `dist/` with declarations and maps).',
+    '',
+    ...table(
+      ['package', 'version', 'tarball (gzip)', 'unpacked', 'files'],
+      'llrrr',
+      r.packages.map((/** @type {any} */ p) => [
+        `\`${p.name}\``,
+        p.version,
+        kB(p.size),
+        kB(p.unpackedSize),
+        p.entryCount,
+      ]),
+    ),
+  ];
+}
+
+/** @param {any} bundle @param {any} first @returns {string[]} */
+function playground(bundle, first) {
+  const out = ['## Playground', ''];
+  if (bundle) {
+    const labels = /** @type {Record<string, string>} */ ({
+      three: 'three.js',
+      app: 'React, react-dom, leva and the app',
+      shadelab: 'the @shadelab packages (their own chunks)',
+    });
+    out.push(
+      fromLine('playground-bundle', bundle),
+      '',
+      'What `playground/index.html` loads at start (`vite build`: its entry chunk and every chunk it imports statically); kB = 1000 B:',
+      '',
+      ...table(['what `index.html` loads', 'raw', 'gzip -9'], 'lrr', [
+        ...Object.entries(bundle.groups).map(([k, g]) => [
+          labels[k] ?? k,
+          kB(/** @type {any} */ (g).raw),
+          kB(/** @type {any} */ (g).gzip),
+        ]),
+        ['**total**', `**${kB(bundle.total.raw)}**`, `**${kB(bundle.total.gzip)}**`],
+      ]),
+    );
+  } else out.push(missing('playground-bundle'));
+  out.push('', '### First frame', '');
+  if (first) {
+    /** @type {number[] | null} */
+    const samples = first.samplesMs;
+    const sorted = samples ? [...samples].sort((a, b) => a - b) : null;
+    const median = sorted ? sorted[Math.floor(sorted.length / 2)] : first.medianMs;
+    const min = sorted ? sorted[0] : first.minMs;
+    const cold = samples ? samples[0] : first.firstMs;
+    const vp = first.viewport;
+    out.push(
+      fromLine('playground-first-frame', first),
+      '',
+      `Navigation to the first rendered frame of the built playground (\`${first.test}\`${vp ? `, ${vp.width}×${vp.height}` : ''}, ${first.loads} loads): median ${int(Math.round(median))} ms, fastest ${int(Math.round(min))} ms, first (cold) load ${int(Math.round(cold))} ms${samples ? ` (every load: ${samples.map((s) => int(Math.round(s))).join(', ')} ms)` : ''}.`,
+    );
+  } else out.push(missing('playground-first-frame'));
+  return out;
+}
+
+/** @param {any} r @returns {string[]} */
+function reliability(r) {
+  const s = r.session;
+  /** @param {any} c */
+  const counts = (c) => `${c.geometries} / ${c.textures} / ${c.programs} / ${c.listeners}`;
+  return [
+    '## Reliability',
+    '',
+    fromLine('reliability', r),
+    '',
+    `**A long session.** ${int(s.changes)} random option changes in the playground through its URL hash, as a pasted link does (seeded; \`npm test\` runs a short version): programs never above ${s.maxPrograms}; heap after a forced GC ${s.heapMiBAfterWarmUp.toFixed(1)} MiB after warm-up and ${s.heapMiBAtEnd.toFixed(1)} MiB at the end; ${s.consoleErrors} console errors; ${s.stalls} stalls; ${s.changeMs.median.toFixed(0)} ms median per change (${(s.seconds / 60).toFixed(0)} min in all).`,
+    '',
+    ...table(
+      ['after change', 'heap after GC (MiB)', 'programs'],
+      'rrr',
+      s.samples.map((/** @type {any} */ x) => [int(x.change), x.heapMiB.toFixed(1), x.programs]),
+    ),
+    '',
+    '**Create, render and dispose.** `renderer.info.memory`, `renderer.info.programs` and DOM listener counts (geometries / textures / programs / listeners) before, at the peak and after:',
+    '',
+    ...table(
+      ['kind', 'cycles', 'before', 'peak', 'after', 'back to baseline', 'ms'],
+      'lrlllll',
+      Object.values(r.leaks).map((/** @type {any} */ x) => [
+        x.kind,
+        int(x.cycles),
+        counts(x.before),
+        counts(x.peak),
+        counts(x.after),
+        x.backToBaseline ? 'yes' : '**no**',
+        int(Math.round(x.ms)),
+      ]),
+    ),
+    '',
+    "**What every `npm test` tries** (`tests/reliability.spec.ts`, `tests/playground-session.spec.ts` and every package's `fuzz.test.ts`, from fixed seeds):",
+    '',
+    '- hostile values (NaN, ±Infinity, ±0, 1e±308, subnormals, wrong types, missing fields) into every public constructor, option, setter and method: finite results (geometry arrays, camera matrices and frames, trackball matrices, every uniform) or a TypeError/RangeError naming the parameter;',
+    '- create, render and dispose each geometry, material and control 1,000 times: the counts above back to their baseline;',
+    '- WebGL context loss after several edits, and an edit while lost: a message, recovery by itself, the pixels of a fresh page with the same state;',
+    '- `__proto__`/`constructor`/`prototype` keys, script and `javascript:` strings, 1e999, deep nesting, 1 MB state and non-object roots through the URL hash and through storage: refused with a message, nothing executed, prototypes untouched;',
+    '- sphere levels 13–16 from the URL: refused with the byte estimate before allocating, and the page keeps rendering.',
+  ];
+}
+
+// ── The page ───────────────────────────────────────────────────────────────────────────────────────────────
+
+/**
+ * Render BENCHMARKS.md from results keyed by file name without `.json` (`sphere`, `tradeoff`, …). Pure: the
+ * same results give the same page.
+ * @param {Record<string, any>} results @returns {string}
+ */
+export function renderBenchmarks(results) {
+  /** @param {string} name @param {(r: any) => string[]} render */
+  const section = (name, render, title = '') =>
+    results[name] ? render(results[name]) : [`## ${title}`, '', missing(name)];
+  const parts = [
+    [
+      '# Benchmarks',
+      '',
+      '<!-- Generated by `npm run benchmarks` (scripts/benchmarks.mjs) from bench/results/*.json: do not edit. -->',
+      '',
+      'Every number below is rendered from the results files in [`bench/results/`](bench/results/), and so is how it was measured: the machine, date, load average, versions and commit of each run are in [Runs](#runs). `npm test` fails when this page differs from what `npm run benchmarks` renders from the committed results. Frame times come from headless Chromium with SwiftShader (WebGL on the CPU), so they compare options within one run rather than predict a GPU; errors, triangle counts and bytes are exact.',
+      '',
+      '- [Sphere build time](#sphere-build-time) · [Sphere error](#sphere-error) · [Automatic detail](#automatic-detail)',
+      '- [Speed against accuracy](#speed-against-accuracy) · [Material frame time](#material-frame-time)',
+      '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
+      '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
+    ],
+    runs(results),
+    section('sphere', sphereBuild, 'Sphere build time'),
+    section('sphere', sphereError, 'Sphere error'),
+    section('autodetail', autodetail, 'Automatic detail'),
+    section('tradeoff', tradeoff, 'Speed against accuracy'),
+    section('material', material, 'Material frame time'),
+    section('camera-depth', cameraDepth, 'Camera depth precision'),
+    section('trackball', trackball, 'Trackball'),
+    section('size', sizes, 'Package sizes'),
+    section('pack', tarballs, 'Tarballs'),
+    playground(results['playground-bundle'], results['playground-first-frame']),
+    section('reliability', reliability, 'Reliability'),
+  ];
+  return `${parts.map((p) => p.join('\n')).join('\n\n')}\n`;
+}
+
+/** Every `*.json` in `dir`, keyed by its name without `.json`. @param {string} dir @returns {Record<string, any>} */
+export function loadResults(dir) {
+  /** @type {Record<string, any>} */
+  const results = {};
+  for (const file of readdirSync(dir).sort()) {
+    if (file.endsWith('.json'))
+      results[file.slice(0, -5)] = JSON.parse(readFileSync(join(dir, file), 'utf8'));
+  }
+  return results;
+}
+
+if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  const page = renderBenchmarks(loadResults(join(root, 'bench', 'results')));
+  const path = join(root, OUTPUT);
+  if (process.argv.includes('--check')) {
+    /** @type {string | null} */
+    let current = null;
+    try {
+      current = readFileSync(path, 'utf8');
+    } catch {
+      current = null;
+    }
+    if (current !== page) {
+      const a = (current ?? '').split('\n');
+      const b = page.split('\n');
+      let line = 0;
+      while (line < Math.max(a.length, b.length) && a[line] === b[line]) line++;
+      console.error(
+        current === null
+          ? `${OUTPUT} is missing: run \`npm run benchmarks\` and commit it.`
+          : `${OUTPUT} differs from what bench/results/*.json renders (first at line ${line + 1}): it is generated, never edited; run \`npm run benchmarks\` and commit it.\n  in the file: ${a[line] ?? '(end of file)'}\n  rendered:    ${b[line] ?? '(end of file)'}`,
+      );
+      process.exit(1);
+    }
+    console.log(`${OUTPUT} matches bench/results/*.json`);
+  } else {
+    writeFileSync(path, page);
+    console.log(`wrote ${OUTPUT}`);
+  }
+}
