@@ -16,7 +16,11 @@ const stages = [
   ['type check (tests, playground, bench)', 'npx', ['tsc', '-p', 'tsconfig.test.json']],
   ['code in the docs type-checks (snippets)', 'node', ['scripts/snippets.mjs', '--check']],
   ['lint (biome)', 'npx', ['biome', 'ci', '.']],
-  ['BENCHMARKS.md rendered from bench/results (npm run benchmarks)', 'node', ['scripts/benchmarks.mjs', '--check']],
+  [
+    'BENCHMARKS.md rendered from bench/results (npm run benchmarks)',
+    'node',
+    ['scripts/benchmarks.mjs', '--check'],
+  ],
   [
     'size budget (minified + gzipped, without three)',
     'node',
