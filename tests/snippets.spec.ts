@@ -1,0 +1,143 @@
+// The code blocks of the Markdown marked ```ts run=SCENE (the README's Quick start and each package README's
+// first example) run as a user would run them: each block, verbatim, is the main.ts of a page (a generated
+// index.html), all bundled by one Vite build that resolves `three` and `@shadelab/*` through the workspace's
+// node_modules (the packages' built dist/, through their `exports`), and opened in Chromium. A page error or
+// console error fails the test (an option that throws shows as one), and the picture must be SCENE's: drawn
+// inside the silhouette computed from the scene's camera and model, the background outside, brighter towards
+// the light when lit (picture-helpers.ts). scripts/snippets.mjs type-checks the same blocks; see DEVELOPERS.md,
+// "Code in docs".
+import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { expect, test } from '@playwright/test';
+import { build } from 'vite';
+import { type Block, collectBlocks } from '../scripts/snippets.mjs';
+import {
+  collectPageErrors,
+  expectScenePicture,
+  LECTURE_VIEW,
+  type SceneView,
+  serveFiles,
+} from './picture-helpers';
+
+const repo = fileURLToPath(new URL('..', import.meta.url));
+
+/** What each `run=SCENE` block draws: its camera and model, as the block sets them. */
+const SCENES: Record<string, SceneView> = {
+  // README Quick start, material README: the (2, 1, 2) ellipsoid from (0, 0, 3), fovy 90°, light (−5, 10, 20).
+  lecture: LECTURE_VIEW,
+  // Camera README: the unit cube with MeshNormalMaterial, eye (0, 0, 3), fovy 90°.
+  'camera-cube': { shape: { box: [0.5, 0.5, 0.5] }, eye: 3, fovy: 90, normalColours: true },
+  // Trackball README: the unit cube with MeshNormalMaterial, eye (0, 0, 4), fovy 45°.
+  'trackball-cube': { shape: { box: [0.5, 0.5, 0.5] }, eye: 4, fovy: 45, normalColours: true },
+  // Sphere README: the unit sphere with MeshNormalMaterial, eye (0, 0, 4), fovy 50°.
+  'sphere-normals': { shape: { ellipsoid: [1, 1, 1] }, eye: 4, fovy: 50, normalColours: true },
+};
+
+/** The examples that must run: the README's Quick start and each package README's first code block. */
+const MUST_RUN = [
+  'README.md (Quick start)',
+  'packages/camera/README.md',
+  'packages/material/README.md',
+  'packages/sphere/README.md',
+  'packages/trackball/README.md',
+];
+/** First examples that draw nothing: type-checked only (scripts/snippets.mjs), with the reason. */
+const NOT_RUN: Record<string, string> = {
+  'packages/reference/README.md':
+    'scores a GPU render it does not make (partial: `pixels` is its context); the renderer is tested in tests/',
+};
+
+const blocks = collectBlocks();
+const runs = blocks.filter((b) => b.run);
+const port = process.env.SHADELAB_E2E_PORT ?? '4173';
+const out = join(repo, 'reports', `snippets-run-${port}`);
+/** The page of each runnable block: a folder named after its Markdown file and line. */
+const pageOf = (b: Block) => `${b.file.replace(/[^\w.-]+/g, '_')}-${b.line}`;
+let origin = '';
+let close: (() => Promise<void>) | undefined;
+
+// In order, in one worker (one build); a failed test does not skip the others.
+test.describe.configure({ mode: 'default' });
+
+test.beforeAll(async () => {
+  test.setTimeout(180_000);
+  rmSync(out, { recursive: true, force: true });
+  const input: Record<string, string> = {};
+  for (const b of runs) {
+    const dir = join(out, 'src', pageOf(b));
+    mkdirSync(dir, { recursive: true });
+    writeFileSync(join(dir, 'main.ts'), b.code);
+    // The block runs first; the mark says it ran to its end (a module that throws stops before it).
+    writeFileSync(
+      join(dir, 'entry.ts'),
+      "import './main.ts';\ndocument.documentElement.dataset.ran = 'true';\n",
+    );
+    writeFileSync(
+      join(dir, 'index.html'),
+      `<!doctype html>
+<html lang="en">
+  <head>
+    <meta charset="utf-8" />
+    <link rel="icon" href="data:," />
+    <title>${b.file}:${b.line}</title>
+    <style>html, body { margin: 0; } canvas { display: block; }</style>
+  </head>
+  <body>
+    <script type="module" src="./entry.ts"></script>
+  </body>
+</html>
+`,
+    );
+    input[pageOf(b)] = join(dir, 'index.html');
+  }
+  await build({
+    configFile: false,
+    root: join(out, 'src'),
+    base: './',
+    logLevel: 'warn',
+    build: {
+      outDir: join(out, 'dist'),
+      emptyOutDir: true,
+      chunkSizeWarningLimit: 4096,
+      rollupOptions: { input },
+    },
+  });
+  const dist = join(out, 'dist');
+  ({ origin, close } = await serveFiles((path) => {
+    const file = normalize(join(dist, path.endsWith('/') ? `${path}index.html` : path));
+    return file.startsWith(dist) ? file : undefined;
+  }));
+});
+
+test.afterAll(async () => {
+  await close?.();
+});
+
+test('the Quick start and each package README’s first example are marked to run, with a known scene', () => {
+  const first = new Map<string, Block>();
+  for (const b of blocks) {
+    if (b.file.startsWith('packages/') && !first.has(b.file)) first.set(b.file, b);
+  }
+  const quickStart = blocks.filter((b) => b.file === 'README.md' && /quick start/i.test(b.heading));
+  expect(quickStart.map((b) => b.run)).toEqual(['lecture']);
+  const marked = [
+    'README.md (Quick start)',
+    ...[...first.values()].filter((b) => b.run).map((b) => b.file),
+  ].sort();
+  expect(marked).toEqual([...MUST_RUN].sort());
+  for (const file of Object.keys(NOT_RUN)) expect(first.get(file)?.partial, file).toBeTruthy();
+  expect([...first.keys()].sort()).toEqual([...MUST_RUN.slice(1), ...Object.keys(NOT_RUN)].sort());
+  for (const b of runs) expect(Object.keys(SCENES), `${b.file}:${b.line} run=${b.run}`).toContain(b.run);
+});
+
+for (const b of runs) {
+  test(`${b.file}:${b.line} (${b.heading}) runs and draws the ${b.run} scene`, async ({ page }) => {
+    const errors = collectPageErrors(page);
+    // Larger than any canvas the examples make; a block sized to the window fills it.
+    await page.setViewportSize({ width: 900, height: 900 });
+    await page.goto(`${origin}/${pageOf(b)}/`);
+    await expectScenePicture(page, SCENES[b.run!], errors);
+    await expect(page.locator('html')).toHaveAttribute('data-ran', 'true');
+  });
+}
