@@ -1,28 +1,26 @@
 // Ready to `npm install`: the packed tarballs, installed into fresh apps made in a temporary folder (plain
-// three.js on the newest and on the oldest supported three, and react-three-fiber), type-check with the app's
-// own TypeScript 5 in strict mode, build with Vite and render the lecture's scene in Chromium. The three.js
-// apps check every declaration file too (skipLibCheck off: our .d.ts against @types/three old and new); the
-// r3f app keeps Vite's template default (skipLibCheck on). The app sources are tools/pack-apps/<app>/ (kept out
-// of the repo's own type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
+// three.js on the newest and on the oldest supported three, react-three-fiber, and a user's app whose main.ts
+// is the README's Quick start, extracted verbatim at test time), type-check with the app's own TypeScript 5 in
+// strict mode, build with Vite and render the lecture's scene in Chromium. The three.js apps check every
+// declaration file too (skipLibCheck off: our .d.ts against @types/three old and new); the r3f app keeps Vite's
+// template default (skipLibCheck on). The app sources are tools/pack-apps/<app>/ (kept out of the repo's own
+// type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
-import {
-  cpSync,
-  createReadStream,
-  existsSync,
-  mkdtempSync,
-  readFileSync,
-  rmSync,
-  statSync,
-  writeFileSync,
-} from 'node:fs';
-import { createServer, type Server } from 'node:http';
-import type { AddressInfo } from 'node:net';
+import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { extname, join, normalize } from 'node:path';
+import { join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, type Page, test } from '@playwright/test';
 import { type PackedPackage, packPackages } from '../scripts/pack.mjs';
+import { collectBlocks } from '../scripts/snippets.mjs';
+import {
+  collectPageErrors,
+  expectScenePicture,
+  LECTURE_VIEW,
+  canvasSamples as samples,
+  serveFiles,
+} from './picture-helpers';
 
 const repo = fileURLToPath(new URL('..', import.meta.url));
 
@@ -48,9 +46,21 @@ const oldest = (
     dependencies: { three: string; '@types/three': string };
   }
 ).dependencies;
-/** Each app: its source folder in tools/pack-apps and the dependencies it adds or overrides. */
+/** The README's Quick start, verbatim: the one code block under its "Quick start" heading. */
+function quickStart(): string {
+  const blocks = collectBlocks({ files: ['README.md'] }).filter((b) => /quick start/i.test(b.heading));
+  if (blocks.length !== 1)
+    throw new Error(`README.md: expected one code block under "Quick start", found ${blocks.length}`);
+  return blocks[0].code;
+}
+/**
+ * Each app: its source folder in tools/pack-apps, the dependencies it adds or overrides, and a src/main.ts
+ * that replaces the folder's.
+ */
 const apps = {
   vanilla: { template: 'vanilla', dependencies: {} },
+  // A user's fresh app with the README's Quick start pasted in as its main.ts.
+  quickstart: { template: 'vanilla', dependencies: {}, main: quickStart },
   oldest: {
     template: 'vanilla',
     dependencies: { three: oldest.three, '@types/three': oldest['@types/three'] },
@@ -65,12 +75,12 @@ const apps = {
       '@react-three/fiber': '^9.4.0',
     },
   },
-} satisfies Record<string, { template: string; dependencies: Record<string, string> }>;
+} satisfies Record<string, { template: string; dependencies: Record<string, string>; main?: () => string }>;
 type App = keyof typeof apps;
 
 let tmp = '';
 let packed: PackedPackage[] = [];
-let server: Server | undefined;
+let closeServer: (() => Promise<void>) | undefined;
 let origin = '';
 const timings: Record<string, number> = {};
 
@@ -104,6 +114,8 @@ async function timed<T>(label: string, work: () => Promise<T>): Promise<T> {
 async function makeApp(app: App): Promise<void> {
   const dir = join(tmp, app);
   cpSync(join(repo, 'tools', 'pack-apps', apps[app].template), dir, { recursive: true });
+  const spec = apps[app];
+  if ('main' in spec) writeFileSync(join(dir, 'src', 'main.ts'), spec.main());
   const tarballs = Object.fromEntries(packed.map((p) => [p.name, `file:${p.tarball}`]));
   const pkg = {
     name: `shadelab-pack-${app}`,
@@ -121,58 +133,15 @@ async function makeApp(app: App): Promise<void> {
   );
 }
 
-const types: Record<string, string> = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.svg': 'image/svg+xml',
-};
-
 /** Serve `<tmp>/<app>/dist` at `/<app>/`. */
-function serve(): Promise<string> {
-  server = createServer((req, res) => {
-    const url = new URL(req.url ?? '/', 'http://localhost');
-    const [, app, ...rest] = normalize(decodeURIComponent(url.pathname)).split('/');
+async function serve(): Promise<string> {
+  const served = await serveFiles((path) => {
+    const [, app, ...rest] = normalize(path).split('/');
     const file = join(tmp, app ?? '', 'dist', rest.join('/') || 'index.html');
-    if (!(app in apps) || !file.startsWith(tmp) || !existsSync(file) || !statSync(file).isFile()) {
-      res.writeHead(404).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(res);
+    return app in apps && file.startsWith(tmp) ? file : undefined;
   });
-  return new Promise((resolve) => {
-    server!.listen(0, '127.0.0.1', () =>
-      resolve(`http://127.0.0.1:${(server!.address() as AddressInfo).port}`),
-    );
-  });
-}
-
-/** RGB at fractions (x right, y down) of the canvas, read from a screenshot: what is on screen. */
-async function samples(page: Page, points: readonly (readonly [number, number])[]): Promise<number[][]> {
-  const png = await page.locator('canvas').screenshot();
-  return page.evaluate(
-    async ({ b64, points }) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${b64}`;
-      await img.decode();
-      const canvas = document.createElement('canvas');
-      canvas.width = img.width;
-      canvas.height = img.height;
-      const ctx = canvas.getContext('2d')!;
-      ctx.drawImage(img, 0, 0);
-      return points.map(([fx, fy]) => {
-        const data = ctx.getImageData(
-          Math.round(fx * (img.width - 1)),
-          Math.round(fy * (img.height - 1)),
-          1,
-          1,
-        );
-        return Array.from(data.data.slice(0, 3));
-      });
-    },
-    { b64: png.toString('base64'), points },
-  );
+  closeServer = served.close;
+  return served.origin;
 }
 
 const brightness = (rgb: number[]) => rgb[0] + rgb[1] + rgb[2];
@@ -199,11 +168,7 @@ const RIM = [
 const ABOVE = [0.5, 0.2] as const; // background until a vertical drag tilts the long z axis up
 
 async function checkLectureScene(page: Page, app: App): Promise<void> {
-  const errors: string[] = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-  });
+  const errors = collectPageErrors(page);
   await page.setViewportSize({ width: 400, height: 400 });
   await page.goto(`${origin}/${app}/`);
   const canvas = page.locator('canvas');
@@ -244,8 +209,8 @@ async function checkLectureScene(page: Page, app: App): Promise<void> {
 test.describe.configure({ mode: 'serial' });
 
 test.beforeAll(async () => {
-  // npm install of three apps, three strict type checks and three Vite builds on a 2-core machine.
-  test.setTimeout(420_000);
+  // npm install of four apps, four strict type checks and four Vite builds on a 2-core machine.
+  test.setTimeout(540_000);
   tmp = mkdtempSync(join(tmpdir(), 'shadelab-pack-'));
   packed = await timed('pack (tsc -b, npm pack)', async () => packPackages(join(tmp, 'tarballs')));
   await Promise.all((Object.keys(apps) as App[]).map(makeApp));
@@ -253,7 +218,7 @@ test.beforeAll(async () => {
 });
 
 test.afterAll(async () => {
-  await new Promise<void>((resolve) => (server ? server.close(() => resolve()) : resolve()));
+  await closeServer?.();
   if (tmp && !process.env.SHADELAB_PACK_KEEP) rmSync(tmp, { recursive: true, force: true });
   console.log(`pack test timings (ms): ${JSON.stringify(timings)}`);
 });
@@ -336,6 +301,15 @@ test(`the same app on the oldest supported three (${oldest.three}, @types/three 
   page,
 }) => {
   await checkLectureScene(page, 'oldest');
+});
+
+test("the README's Quick start, pasted into a fresh Vite app from the tarballs, renders the lit ellipsoid", async ({
+  page,
+}) => {
+  const errors = collectPageErrors(page);
+  await page.setViewportSize({ width: 900, height: 900 }); // the Quick start's canvas is 800 × 800
+  await page.goto(`${origin}/quickstart/`);
+  await expectScenePicture(page, LECTURE_VIEW, errors);
 });
 
 test('the packages import and work in Node (server-side code, tests): no DOM touched at import', async () => {
