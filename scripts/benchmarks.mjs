@@ -718,7 +718,7 @@ function tarballs(r) {
     '',
     fromLine('pack', r),
     '',
-    'What `npm run pack` puts in each package tarball (README, changelog, licence, `dist/` with declarations and maps).',
+    'What `npm run pack` puts in each package tarball (README, changelog, licence, `src/`, and `dist/` with declarations and source maps).',
     '',
     ...table(
       ['package', 'version', 'tarball (gzip)', 'unpacked', 'files'],
