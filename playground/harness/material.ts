@@ -14,15 +14,18 @@ import {
   ShadingMaterial,
   shade,
 } from '@shadelab/material';
+import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
 import { createOutline } from '@shadelab/material/outline';
 import {
   type Camera,
   Matrix3,
   Mesh,
+  type Object3D,
   OrthographicCamera,
   PerspectiveCamera,
   Raycaster,
   Scene,
+  type ShaderMaterial,
   Triangle,
   Vector2,
   Vector3,
@@ -30,6 +33,13 @@ import {
   WebGLRenderer,
 } from 'three';
 import { flatSphereGeometry, sphereGeometry } from './material-sphere';
+
+/** What three keeps of a compiled program (`renderer.properties.get(material).currentProgram`). */
+interface WebGLProgramInfo {
+  cacheKey: string;
+  vertexShader: WebGLShader;
+  fragmentShader: WebGLShader;
+}
 
 export interface CompareConfig {
   shading: Shading;
@@ -553,7 +563,108 @@ function outline(thickness: number): {
   return { ring, ringBlack, insideChanged, covered };
 }
 
-const api = { compare, flipPrograms, sharedMaterial, outline };
+/** A program as the GPU got it: three's cache key and the final GLSL of both stages. */
+export interface ProgramSource {
+  /** Which scene of {@link programSources} drew it. */
+  name: string;
+  /** three's program cache key without its last part, the material's `customProgramCacheKey()`. */
+  cacheKey: string;
+  vertex: string;
+  fragment: string;
+}
+
+/**
+ * The programs of the lecture's scenes without any of three's scene features (no instancing, skinning, morph
+ * targets, fog, clipping or tone mapping): every shading × lighting × cel variant on each geometry path, light
+ * counts 0 … 2 and attenuation, the outline and the impostor, with a standard and a logarithmic depth buffer.
+ * Each entry is the program the material used for that scene, with the GLSL three handed to WebGL.
+ */
+function programSources(): ProgramSource[] {
+  const out: ProgramSource[] = [];
+  const logCanvas = document.createElement('canvas');
+  const renderers: Array<[string, WebGLRenderer]> = [
+    ['standard', renderer],
+    ['logarithmic', new WebGLRenderer({ canvas: logCanvas, antialias: false, logarithmicDepthBuffer: true })],
+  ];
+  for (const [depth, r] of renderers) {
+    r.setSize(16, 16, false);
+    const gl = r.getContext();
+    const camera = makeCamera(false);
+    const lights = [0, 1, 2].map((i) => {
+      const light = new PhongLight();
+      light.position.set(-5 + 3 * i, 10, 20);
+      return light;
+    });
+    const attenuated = new PhongLight({ attenuation: { a: 1, b: 0.2, c: 0.05 } });
+    attenuated.position.set(1, 2, 4);
+    const draw = (name: string, mesh: Mesh, material: ShaderMaterial, extra: Object3D[] = []): void => {
+      const scene = new Scene();
+      scene.add(mesh, ...lights, attenuated, ...extra);
+      r.render(scene, camera);
+      const program = (r.properties.get(material) as { currentProgram?: WebGLProgramInfo }).currentProgram;
+      if (program === undefined) throw new Error(`no program for ${name}`);
+      // The key ends with material.customProgramCacheKey() (onBeforeCompile's source text): left out.
+      const custom = `,${material.customProgramCacheKey()}`;
+      if (!program.cacheKey.endsWith(custom)) throw new Error(`unexpected cache key for ${name}`);
+      out.push({
+        name: `${depth} ${name}`,
+        cacheKey: program.cacheKey.slice(0, -custom.length),
+        vertex: gl.getShaderSource(program.vertexShader) ?? '',
+        fragment: gl.getShaderSource(program.fragmentShader) ?? '',
+      });
+    };
+    const geometries = {
+      soup: sphereGeometry(2, false),
+      corners: flatSphereGeometry(2),
+      analytic: sphereGeometry(2, false),
+      normals: sphereGeometry(2, true),
+    };
+    for (const shading of ['flat', 'gouraud', 'phong'] as const) {
+      for (const lighting of ['phong', 'blinn-phong'] as const) {
+        for (const celBands of [0, 3]) {
+          const paths =
+            shading === 'flat' ? (['soup', 'corners'] as const) : (['analytic', 'normals'] as const);
+          for (const path of paths) {
+            const material = new ShadingMaterial({ shading, lighting, celBands, lights: [lights[0]] });
+            draw(
+              `${shading} ${lighting} cel ${celBands} ${path}`,
+              new Mesh(geometries[path], material),
+              material,
+            );
+          }
+        }
+      }
+      for (const [count, list] of [
+        [0, []],
+        [2, lights.slice(0, 2)],
+        ['attenuated', [lights[0], attenuated]],
+      ] as const) {
+        const material = new ShadingMaterial({ shading, lights: [...list] });
+        const geometry = shading === 'flat' ? geometries.corners : geometries.analytic;
+        draw(`${shading} lights ${count}`, new Mesh(geometry, material), material);
+      }
+    }
+    for (const path of ['analytic', 'normals'] as const) {
+      const material = new ShadingMaterial({ celBands: 3, lights: [lights[0]] });
+      const mesh = new Mesh(geometries[path], material);
+      const hull = createOutline(mesh, { thickness: 0.05 });
+      draw(`outline ${path}`, mesh, hull.material);
+    }
+    for (const [name, options] of [
+      ['impostor', { lights: [lights[0]] }],
+      [
+        'impostor blinn-phong cel 3 lights 2',
+        { lighting: 'blinn-phong', celBands: 3, lights: lights.slice(0, 2) },
+      ],
+    ] as const) {
+      const material = new SphereImpostorMaterial({ ...options, lights: [...options.lights] });
+      draw(name, new SphereImpostor(material), material);
+    }
+  }
+  return out;
+}
+
+const api = { compare, flipPrograms, sharedMaterial, outline, programSources };
 declare global {
   interface Window {
     materialHarness: typeof api;
