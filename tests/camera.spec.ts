@@ -159,7 +159,7 @@ test('ShadingMaterial keeps the same depth modes, alone and next to three materi
   });
 });
 
-test('far/near from 10 to 1e9 (DESIGN.md extremes): logarithmic and reversed keep Δz/z = 1e-5 at z = far/4', async ({
+test('far/near from 10 to 1e9 (docs/design.md extremes): logarithmic and reversed keep Δz/z = 1e-5 at z = far/4', async ({
   page,
 }) => {
   await open(page);

@@ -56,7 +56,7 @@ test.describe('impostor vs reference', () => {
     });
   }
 
-  // The DESIGN.md extremes rows that apply to the impostor, each within 1/255 inside and 0.5 px at the edge.
+  // The docs/design.md extremes rows that apply to the impostor, each within 1/255 inside and 0.5 px at the edge.
   const extremes: Array<[string, TradeView]> = [
     [
       'two lights, each with its own intensities',
@@ -217,7 +217,7 @@ test.describe('impostor vs reference', () => {
   test('a zero scale: every mesh shading draws the flattened disc as the reference does (normal towards the viewer)', async ({
     page,
   }) => {
-    // The DESIGN.md row "model matrix with a zero scale": face on, and rotated in an oblique view. (The
+    // The docs/design.md row "model matrix with a zero scale": face on, and rotated in an oblique view. (The
     // impostor draws nothing at a zero scale: its quad's inverse matrix is singular; see the material README.)
     for (const view of [
       { width: 320, height: 240, scale: [2, 1, 0] },

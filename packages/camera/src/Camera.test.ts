@@ -340,7 +340,7 @@ function withZoom(c: Camera, zoom: number): Camera {
   return c;
 }
 
-describe('Camera refuses bad input (DESIGN.md extremes)', () => {
+describe('Camera refuses bad input (docs/design.md extremes)', () => {
   const camera = new Camera();
   it.each([
     ['fovy', () => camera.setPerspective(0, 1, 0.1, 10)],

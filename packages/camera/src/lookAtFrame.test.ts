@@ -61,7 +61,7 @@ function sweepCamera(
   return { first: first!, last: last!, maxStep, limit: 1.05 * Math.PI * ((2 * span) / steps / POLE_CAP_RAD) };
 }
 
-describe('lookAt with up parallel to the gaze (DESIGN.md extremes)', () => {
+describe('lookAt with up parallel to the gaze (docs/design.md extremes)', () => {
   const gazes: [number, number, number][] = [
     [0, -1, 0],
     [0, 1, 0],
@@ -175,7 +175,7 @@ describe('lookAt with up parallel to the gaze (DESIGN.md extremes)', () => {
   });
 });
 
-describe('Camera.lookAt near the pole (DESIGN.md extremes, through the Camera and its pole memory)', () => {
+describe('Camera.lookAt near the pole (docs/design.md extremes, through the Camera and its pole memory)', () => {
   const gazes: [number, number, number][] = [
     [0, -1, 0],
     [0, 1, 0],

@@ -55,7 +55,7 @@ describe('computeNormalMatrix', () => {
     expect(computeNormalMatrix(m, new Matrix3()).elements).toEqual(new Matrix3().elements);
   });
 
-  // The DESIGN.md extremes rows: zero, 1e-20 and 1e20 scale, negative determinant.
+  // The docs/design.md extremes rows: zero, 1e-20 and 1e20 scale, negative determinant.
   const cases: Array<[string, [number, number, number]]> = [
     ['1e-20 on one axis', [1, 1e-20, 2]],
     ['1e-20 on all axes', [1e-20, 1e-20, 1e-20]],

@@ -319,7 +319,7 @@ describe('material fuzz (hostile values everywhere)', () => {
     );
   });
 
-  it('shade (CPU): finite colours for every sane sample, extremes of the DESIGN.md table included', () => {
+  it('shade (CPU): finite colours for every sane sample, extremes of the docs/design.md table included', () => {
     const unit = fc.tuple(
       fc.double({ min: -1, max: 1, noNaN: true }),
       fc.double({ min: -1, max: 1, noNaN: true }),

@@ -107,7 +107,7 @@ describe('shade: the lecture’s lighting equation', () => {
   });
 });
 
-describe('shade: extremes (DESIGN.md material rows)', () => {
+describe('shade: extremes (docs/design.md material rows)', () => {
   const sample = { position: [0, 0, 0], normal: [0, 0, 1], eye: [0, 0, 5, 1] };
 
   it('shininess 0: 0⁰ = 1, a uniform highlight over the lit side', () => {

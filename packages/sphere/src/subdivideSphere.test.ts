@@ -35,7 +35,7 @@ function referenceBase(base: SphereBase) {
   return unitTriangles(geometry.getAttribute('position').array) as never;
 }
 
-describe('subdivideSphere counts (DESIGN extremes: level 0 … 10, every base)', () => {
+describe('subdivideSphere counts (docs/design.md extremes: level 0 … 10, every base)', () => {
   for (const base of SPHERE_BASES) {
     for (let level = 0; level <= 10; level++) {
       it(`${base} level ${level}: T = ${F0[base]}·4^${level}, V = 2 + T/2, all vertices at the radius`, () => {
@@ -214,7 +214,7 @@ describe('subdivideSphere normals', () => {
   });
 });
 
-describe('subdivideSphere extremes (DESIGN table)', () => {
+describe('subdivideSphere extremes (docs/design.md extremes table)', () => {
   it.each([-1, 1.5, Number.NaN, Number.POSITIVE_INFINITY, -0.5])(
     'level %s is a RangeError naming it',
     (level) => {

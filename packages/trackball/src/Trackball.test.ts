@@ -335,7 +335,7 @@ describe('Trackball: rotation by pointer drags', () => {
   });
 });
 
-describe('Trackball: DESIGN.md extremes through the DOM', () => {
+describe('Trackball: docs/design.md extremes through the DOM', () => {
   it('stays finite with the pointer at the centre, on the rim, outside it and outside the element', () => {
     for (const mapping of ['arcball', 'bell'] as const) {
       const element = makeElement();

@@ -76,7 +76,7 @@ function fakeElement(size: number) {
   return { element: element as unknown as HTMLElement, onElement, onDocument };
 }
 
-describe('trackball extremes (DESIGN.md): 10⁶ drags through Trackball', () => {
+describe('trackball extremes (docs/design.md): 10⁶ drags through Trackball', () => {
   it('keeps the rotation and the object orthonormal within 1e-6 and never NaN over 10⁶ random drags', () => {
     const rand = random(20261123);
     const pick = pointerPicker(rand);
@@ -141,7 +141,7 @@ describe('trackball extremes (DESIGN.md): 10⁶ drags through Trackball', () => 
   });
 });
 
-describe('trackball extremes (DESIGN.md): the pure rotation core', () => {
+describe('trackball extremes (docs/design.md): the pure rotation core', () => {
   it.each(['arcball', 'bell'] as const)(
     '%s: centre, rim, beyond the rim and zero-length drags give finite unit rotations',
     (mapping) => {
