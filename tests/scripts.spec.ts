@@ -1,8 +1,8 @@
 // Node-only tests of the set-up scripts (no browser page): which Chromium is used, what `npm test` says when
-// there is none, and that `npm start` serves the playground at the URL it prints.
+// there is none, that `npm start` serves the playground at the URL it prints, and that a signal stops it.
 import { spawn, spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { createServer } from 'node:net';
+import { connect, createServer } from 'node:net';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
 import { DEBIAN_CHROMIUM, describeBrowserSearch, lookupChromium } from '../scripts/browser.mjs';
@@ -159,11 +159,28 @@ async function freePort(): Promise<number> {
   return address.port;
 }
 
-test('npm start (scripts/start.mjs --port) prints the 127.0.0.1 URL and serves the playground there', async () => {
-  test.setTimeout(240_000);
+/** Whether something accepts connections on 127.0.0.1:`port`. */
+function listening(port: number): Promise<boolean> {
+  return new Promise((resolve) => {
+    const socket = connect(port, '127.0.0.1');
+    socket.once('connect', () => {
+      socket.destroy();
+      resolve(true);
+    });
+    socket.once('error', () => resolve(false));
+  });
+}
+
+/**
+ * `npm start` on a free port, as `node scripts/start.mjs` (what npm runs) or through `npm start` itself, in a
+ * process group of its own; resolves once Vite prints the URL it serves.
+ */
+async function startPlayground(via: 'node' | 'npm') {
   const port = await freePort();
-  // Its own process group, so that npx and Vite under it are stopped with it.
-  const child = spawn(process.execPath, ['scripts/start.mjs', '--port', String(port)], {
+  const args = ['--port', String(port)];
+  const [command, commandArgs] =
+    via === 'node' ? [process.execPath, ['scripts/start.mjs', ...args]] : ['npm', ['start', '--', ...args]];
+  const child = spawn(command, commandArgs, {
     cwd: root,
     env: { ...process.env, CI: '1' },
     detached: true,
@@ -177,31 +194,78 @@ test('npm start (scripts/start.mjs --port) prints the 127.0.0.1 URL and serves t
     output += d;
   });
   const exited = new Promise<void>((resolve) => child.once('exit', () => resolve()));
+  const url = `http://127.0.0.1:${port}/`;
+  // Vite prints the port in bold: compare without terminal colour codes.
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: ANSI escape sequences
+  const plain = () => output.replace(/\u001b\[[0-9;]*m/g, '');
+  /** Whatever still runs in the group is killed (after a failure; the tests stop it by a signal first). */
+  const cleanUp = async () => {
+    try {
+      if (child.pid !== undefined) process.kill(-child.pid, 'SIGKILL');
+    } catch {
+      // The group is gone already.
+    }
+    if (child.exitCode === null && child.signalCode === null) await exited;
+  };
   try {
-    const url = `http://127.0.0.1:${port}/`;
-    // Vite prints the port in bold: compare without terminal colour codes.
-    // biome-ignore lint/suspicious/noControlCharactersInRegex: ANSI escape sequences
-    const plain = () => output.replace(/\u001b\[[0-9;]*m/g, '');
     await expect.poll(plain, { timeout: 200_000, intervals: [500] }).toContain(url);
-    const response = await fetch(url);
-    expect(response.status).toBe(200);
-    const html = await response.text();
-    const title = /<title>[^<]*<\/title>/.exec(
-      readFileSync(join(root, 'playground', 'index.html'), 'utf8'),
-    )![0];
-    expect(html).toContain(title);
-    expect(html).toContain('id="root"');
-  } finally {
-    if (child.exitCode === null && child.pid !== undefined) process.kill(-child.pid, 'SIGTERM');
-    await exited;
+  } catch (error) {
+    await cleanUp();
+    throw error;
   }
-  // The whole group is gone: nothing listens on the port any more.
+  return { child, port, url, exited, cleanUp };
+}
+
+/** Send `signal` to the process alone (not its group, as `kill PID` does): the port is free within 2 s. */
+async function expectStopsOn(started: Awaited<ReturnType<typeof startPlayground>>, signal: NodeJS.Signals) {
+  expect(await listening(started.port)).toBe(true);
+  started.child.kill(signal);
   await expect
-    .poll(async () =>
-      fetch(`http://127.0.0.1:${port}/`).then(
-        () => 'up',
-        () => 'down',
-      ),
-    )
-    .toBe('down');
+    .poll(() => listening(started.port), {
+      timeout: 2_000,
+      intervals: [50],
+      message: `the port still accepts connections 2 s after ${signal}`,
+    })
+    .toBe(false);
+  await started.exited;
+}
+
+test.describe('npm start', () => {
+  // One after another: each builds the packages (tsc -b) in the same tree.
+  test.describe.configure({ mode: 'default', timeout: 240_000 });
+
+  test('prints the 127.0.0.1 URL and serves the playground there; SIGTERM to its process frees the port within 2 s', async () => {
+    const started = await startPlayground('node');
+    try {
+      const response = await fetch(started.url);
+      expect(response.status).toBe(200);
+      const html = await response.text();
+      const title = /<title>[^<]*<\/title>/.exec(
+        readFileSync(join(root, 'playground', 'index.html'), 'utf8'),
+      )![0];
+      expect(html).toContain(title);
+      expect(html).toContain('id="root"');
+      await expectStopsOn(started, 'SIGTERM');
+    } finally {
+      await started.cleanUp();
+    }
+  });
+
+  test("SIGINT to its process (kill -INT PID, not the terminal's whole group) frees the port within 2 s", async () => {
+    const started = await startPlayground('node');
+    try {
+      await expectStopsOn(started, 'SIGINT');
+    } finally {
+      await started.cleanUp();
+    }
+  });
+
+  test('SIGTERM to the npm process itself (npm passes it to its shell only) frees the port within 2 s', async () => {
+    const started = await startPlayground('npm');
+    try {
+      await expectStopsOn(started, 'SIGTERM');
+    } finally {
+      await started.cleanUp();
+    }
+  });
 });
