@@ -9,7 +9,7 @@
 // DEVELOPERS.md ("Fuzzing") says how to turn a counterexample into a named regression test.
 import { spawnSync } from 'node:child_process';
 import { randomInt } from 'node:crypto';
-import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, relative } from 'node:path';
 import { ensureDependencies, root } from './setup.mjs';
@@ -62,14 +62,7 @@ function testFiles(/** @type {boolean} */ all) {
   const packages = join(root, 'packages');
   const fuzz = readdirSync(packages)
     .map((name) => join('packages', name, 'src', 'fuzz.test.ts'))
-    .filter((file) => {
-      try {
-        readFileSync(join(root, file));
-        return true;
-      } catch {
-        return false;
-      }
-    });
+    .filter((file) => existsSync(join(root, file)));
   if (!all) return fuzz;
   /** @type {string[]} */
   const files = [];
@@ -77,7 +70,7 @@ function testFiles(/** @type {boolean} */ all) {
     ...readdirSync(packages).map((name) => join('packages', name, 'src')),
     'playground/src',
     'bench',
-  ]) {
+  ].filter((dir) => existsSync(join(root, dir)))) {
     for (const entry of readdirSync(join(root, dir), { recursive: true, withFileTypes: true })) {
       if (!entry.isFile() || !entry.name.endsWith('.test.ts')) continue;
       const file = relative(root, join(entry.parentPath ?? entry.path, entry.name));
