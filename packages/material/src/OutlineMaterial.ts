@@ -8,6 +8,8 @@ import {
   type Object3D,
   type Scene,
   ShaderMaterial,
+  UniformsLib,
+  UniformsUtils,
   type WebGLRenderer,
 } from 'three';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
@@ -32,13 +34,22 @@ export interface OutlineMaterialOptions {
  * The inverted-hull outline for cel shading: draws the back faces of a mesh pushed out by `thickness`
  * along the (robust, world-space) normal, in one colour. Use it on a second mesh sharing the geometry, or
  * through `createOutline`. Reads the `normal` attribute, or the position on a sphere flagged like for
- * `ShadingMaterial` (`SubdivisionSphereGeometry` or `userData.isSphere`).
+ * `ShadingMaterial` (`SubdivisionSphereGeometry` or `userData.isSphere`). Clipped, fogged and tone-mapped
+ * like three's materials (`clippingPlanes`, `fog`, `toneMapped`); the outline of an instanced, batched, skinned
+ * or morphed mesh is not supported (it would be drawn undeformed, at the object's origin).
  */
 export class OutlineMaterial extends ShaderMaterial {
   /** Always true. */
   readonly isOutlineMaterial = true;
   /** three's type name: `'OutlineMaterial'`. */
   override type = 'OutlineMaterial';
+  /** Apply `scene.fog`, like the `ShadingMaterial` it outlines. @default true */
+  override fog = true;
+  /**
+   * Clip by `clippingPlanes` and the renderer's, like the mesh it outlines (`createOutline` shares the mesh
+   * material's planes). @default true
+   */
+  override clipping = true;
   readonly #color = new Color(0, 0, 0);
 
   constructor({ thickness = 0.03, color = 0 }: OutlineMaterialOptions = {}) {
@@ -49,11 +60,10 @@ export class OutlineMaterial extends ShaderMaterial {
         shadingNormalMatrix: { value: new Matrix3() },
         thickness: { value: 0.03 },
         outlineColor: { value: new Color() },
+        ...UniformsUtils.clone(UniformsLib.fog),
       },
       side: BackSide,
     });
-    this.toneMapped = false;
-    this.fog = false;
     this.thickness = thickness;
     this.color = color;
   }

@@ -7,12 +7,15 @@ import {
   type Object3D,
   type Scene,
   ShaderMaterial,
+  type SkinnedMesh,
+  UniformsLib,
+  UniformsUtils,
   Vector4,
   type WebGLRenderer,
 } from 'three';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { eyeOf } from './eyeOf.js';
-import { facePositionTexture } from './facePositionTexture.js';
+import { facePositionTexture, faceSkinTexture } from './facePositionTexture.js';
 import { PhongLight } from './PhongLight.js';
 import { fragmentShader, vertexShader, withLightCount } from './ShadingMaterial.glsl.js';
 import { LIGHTINGS, type Lighting } from './shade.js';
@@ -62,6 +65,12 @@ export const SPHERE_FLAG = 'isSphere';
 /** The attributes flat shading reads from a geometry made by `flatShadingGeometry`: a face's other two corners. */
 export const FLAT_CORNERS = ['flatCornerA', 'flatCornerB'] as const;
 
+/**
+ * The attribute of a `flatShadingGeometry` made from a skinned or morphed geometry: the vertex indices of a
+ * face's other two corners, so that flat shading moves them as three moves their vertices.
+ */
+export const FLAT_CORNER_INDEX = 'flatCornerIndex';
+
 const _normalMatrix = /* @__PURE__ */ new Matrix3();
 const _eye = /* @__PURE__ */ new Vector4();
 
@@ -80,11 +89,17 @@ const _eye = /* @__PURE__ */ new Vector4();
  * === true`), use the exact normal = position. Flat shading lights each face once, at its centroid with its
  * face normal, and takes either a {@link flatShadingGeometry} (indexed; each face's last vertex carries the
  * face: the cheaper way) or a non-indexed geometry (each triangle owns its three vertices; the vertex shader
- * fetches them from a float texture, 12 bytes per vertex, cached per geometry). Morph targets and skinning are
- * not supported.
+ * fetches them from a float texture, 12 bytes per vertex, cached per geometry).
  *
- * Colours are linear (three's working colour space) and written through three's output colour space
- * conversion; no tone mapping. The object's normal matrix is sign(det)·cof(M) of its world matrix (see
+ * In any three.js scene, through three's own program parameters and shader chunks, each compiled only when
+ * the scene uses it: `InstancedMesh` (its `instanceColor` multiplies ka and kd) and `BatchedMesh`,
+ * `SkinnedMesh` and morph targets (every shading; flat shading moves a face's corners as three moves its
+ * vertices), `scene.fog` (`fog`), clipping planes (`clippingPlanes`, the renderer's, `clipIntersection`), tone
+ * mapping (`toneMapped`) and the output colour space. Instance normals use the instance matrix's robust
+ * normal matrix, as the object's do.
+ *
+ * Colours are linear (three's working colour space), tone-mapped when the renderer asks for it and written
+ * through three's output colour space conversion. The object's normal matrix is sign(det)·cof(M) of its world matrix (see
  * `computeNormalMatrix`), finite for singular matrices; the view vector is right for perspective and
  * orthographic cameras alike (taken from the camera's projection: a point or a direction).
  *
@@ -99,6 +114,17 @@ export class ShadingMaterial extends ShaderMaterial {
   readonly isShadingMaterial = true;
   /** three's type name: `'ShadingMaterial'`. */
   override type = 'ShadingMaterial';
+  /**
+   * Apply `scene.fog` (three's `Fog` or `FogExp2`), as three's `MeshPhongMaterial` does: blended in the output
+   * colour space by three's fog factor (fog near = far is a step at that depth). Compiled only when the scene
+   * has fog. @default true
+   */
+  override fog = true;
+  /**
+   * Clip by `clippingPlanes` (with `clipIntersection`) and the renderer's `clippingPlanes`, as three's
+   * materials do; compiled only when some plane applies. @default true
+   */
+  override clipping = true;
 
   #shading: Shading = 'phong';
   #lighting: Lighting = 'phong';
@@ -136,10 +162,10 @@ export class ShadingMaterial extends ShaderMaterial {
         lightSpecular: { value: new Float32Array(0) },
         lightAttenuation: { value: new Float32Array(0) },
         facePositions: { value: null },
+        faceSkin: { value: null },
+        ...UniformsUtils.clone(UniformsLib.fog),
       },
     });
-    this.toneMapped = false;
-    this.fog = false;
     this.shading = shading;
     this.lighting = lighting;
     this.celBands = celBands;
@@ -271,7 +297,18 @@ export class ShadingMaterial extends ShaderMaterial {
           `ShadingMaterial: flat shading needs a flatShadingGeometry(geometry) or a non-indexed geometry (each triangle owns its vertices), got an indexed ${geometry.type}`,
         );
       }
+      const skinned = (object as SkinnedMesh).isSkinnedMesh === true;
+      if (
+        this.#flatCorners &&
+        (skinned || geometry.morphAttributes.position !== undefined) &&
+        geometry.getAttribute(FLAT_CORNER_INDEX) === undefined
+      ) {
+        throw new TypeError(
+          `ShadingMaterial: flat shading of a skinned or morphed mesh needs the flatShadingGeometry of its skinned or morphed geometry (with ${FLAT_CORNER_INDEX}), or a non-indexed geometry`,
+        );
+      }
       u.facePositions.value = this.#flatCorners ? null : facePositionTexture(geometry);
+      u.faceSkin.value = skinned ? faceSkinTexture(geometry) : null;
     } else {
       const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true;
       if (!hasNormal && !sphere) {
@@ -281,6 +318,7 @@ export class ShadingMaterial extends ShaderMaterial {
       }
       this.#sphereNormals = !hasNormal;
       u.facePositions.value = null;
+      u.faceSkin.value = null;
     }
     this.#attenuation = this.#lights.some((light) => light.attenuates);
     this.#syncDefines();

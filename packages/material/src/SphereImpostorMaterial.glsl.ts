@@ -1,25 +1,7 @@
 // GLSL of SphereImpostorMaterial: a screen-aligned quad whose fragments ray-cast the unit sphere in model
-// space. The lighting equation is ShadingMaterial's own (the same chunk, not a copy): see `lightingChunk`.
-import { fragmentShader as shadingFragmentShader } from './ShadingMaterial.glsl.js';
-
-const BEFORE = 'in vec3 vNormal;\n';
-const AFTER = '#endif\n\nvoid main()';
-
-/**
- * The lighting chunk (uniforms, `lightTerm`, `shadeColor`) of ShadingMaterial's fragment shader, which it
- * includes in its per-fragment (phong) variant between the `vNormal` input and `main`.
- * @throws Error when ShadingMaterial's shader no longer has that layout (caught by the tests).
- */
-export function lightingChunk(source: string): string {
-  const start = source.indexOf(BEFORE);
-  const end = source.indexOf(AFTER, start);
-  if (start < 0 || end < 0) {
-    throw new Error(
-      'SphereImpostorMaterial: cannot find the lighting chunk in ShadingMaterial.glsl fragmentShader',
-    );
-  }
-  return source.slice(start + BEFORE.length, end);
-}
+// space. The lighting equation is ShadingMaterial's own chunk (`lightingChunk` of shadingChunks.glsl.ts,
+// included by both), and the hit is clipped, tone-mapped, converted and fogged by the same chunks as a mesh.
+import { clippingFragment, lightingChunk, outputFragment } from './shadingChunks.glsl.js';
 
 /** Vertex stage: the quad's corners (position.xy = ±1) go to the projected ellipsoid's screen bounds. */
 export const impostorVertexShader = /* glsl */ `
@@ -40,7 +22,25 @@ uniform mat3 shadingNormalMatrix; // sign(det)·cof(M)
 #ifdef USE_LOGARITHMIC_DEPTH_BUFFER
 uniform float logDepthBufFC; // three's 2 / log2(far + 1)
 #endif
-${/* @__PURE__ */ lightingChunk(shadingFragmentShader)}
+#if defined( USE_FOG ) || NUM_CLIPPING_PLANES > 0
+uniform mat4 modelViewMatrix;
+#endif
+#ifdef USE_FOG
+// three's fog uniforms; the depth is the hit's (a mesh interpolates it from its vertices).
+uniform vec3 fogColor;
+float vFogDepth;
+#ifdef FOG_EXP2
+uniform float fogDensity;
+#else
+uniform float fogNear;
+uniform float fogFar;
+#endif
+#endif
+#if NUM_CLIPPING_PLANES > 0
+vec3 vClipPosition; // the hit in view space, negated (as three's clipping chunks read it)
+uniform vec4 clippingPlanes[ NUM_CLIPPING_PLANES ];
+#endif
+${lightingChunk}
 void main() {
   // The pixel's ray between the near and far planes, in model space (perspective and orthographic alike).
   // (P·V·M)⁻¹·(x, y, z, 1) = x·c0 + y·c1 + c3 + z·c2 with c the columns: one shared part, two points, at
@@ -72,6 +72,16 @@ void main() {
   float t0 = q == 0.0 ? 0.0 : min(c / q, q);
   if (t0 < 0.0 || t0 > len) discard; // front surface between the near and far planes only
   vec3 p = o + t0 * d; // model space; the exact normal is p itself
+#if defined( USE_FOG ) || NUM_CLIPPING_PLANES > 0
+  vec4 mvPosition = modelViewMatrix * vec4( p, 1.0 );
+#endif
+#if NUM_CLIPPING_PLANES > 0
+  vClipPosition = - mvPosition.xyz;
+#endif
+#ifdef USE_FOG
+  vFogDepth = - mvPosition.z;
+#endif
+${clippingFragment}
   // The exact depth of the hit, in the renderer's depth mode (as three's materials write theirs).
   vec4 clip = impostorMvp * vec4(p, 1.0);
 #if defined(USE_REVERSED_DEPTH_BUFFER)
@@ -84,6 +94,6 @@ void main() {
 #endif
   vec3 worldPosition = (impostorModelMatrix * vec4(p, 1.0)).xyz;
   gl_FragColor = vec4(shadeColor(worldPosition, shadingNormalMatrix * p), 1.0);
-  #include <colorspace_fragment>
+${outputFragment}
 }
 `;

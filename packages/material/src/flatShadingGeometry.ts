@@ -1,5 +1,5 @@
-import { BufferAttribute, BufferGeometry } from 'three';
-import { FLAT_CORNERS, SPHERE_FLAG } from './ShadingMaterial.js';
+import { BufferAttribute, BufferGeometry, type InterleavedBufferAttribute } from 'three';
+import { FLAT_CORNER_INDEX, FLAT_CORNERS, SPHERE_FLAG } from './ShadingMaterial.js';
 
 /**
  * An indexed geometry on which {@link ShadingMaterial}'s flat shading lights every face **once per vertex it
@@ -17,9 +17,14 @@ import { FLAT_CORNERS, SPHERE_FLAG } from './ShadingMaterial.js';
  * bytes per vertex (position and the two corners) plus the index, about 48 bytes per triangle (42 with Uint16
  * indices), against 72 for a soup (positions and the face-position texture).
  *
+ * A skinned or morphed source keeps what three needs to move it: `skinIndex` and `skinWeight`, the position
+ * morph targets (`morphAttributes.position`, `morphTargetsRelative`), and each vertex gets `flatCornerIndex`,
+ * the vertex indices of its two corners (8 more bytes per vertex), so that flat shading moves them too.
+ *
  * @param geometry - Any triangle geometry with a `position` attribute (indexed or not). Not modified.
  * @returns A new indexed geometry with `position`, `flatCornerA` and `flatCornerB` (Uint16 indices while V′
- *   fits, else Uint32), flagged as a sphere (`userData.isSphere`) when the source is one.
+ *   fits, else Uint32), and for a skinned or morphed source the attributes above; flagged as a sphere
+ *   (`userData.isSphere`) when the source is one.
  * @throws TypeError when `geometry` has no 3-component `position` attribute or its index count is not a
  *   multiple of 3.
  */
@@ -49,6 +54,9 @@ export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
   const b = new Float32Array(3 * capacity);
   const taken = new Uint8Array(capacity);
   const index = new Uint32Array(count);
+  const origin = new Uint32Array(capacity); // the source vertex of each vertex
+  const cornerIndex = new Float32Array(2 * capacity);
+  for (let i = 0; i < vertices; i++) origin[i] = i;
   let next = vertices;
   for (let k = 0; k < count; k += 3) {
     let i0 = corner(k);
@@ -67,6 +75,7 @@ export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
         i1 = t;
       } else {
         positions.copyWithin(3 * next, 3 * i2, 3 * i2 + 3);
+        origin[next] = i2;
         i2 = next++;
       }
     }
@@ -75,6 +84,8 @@ export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
       a[3 * i2 + c] = positions[3 * i0 + c];
       b[3 * i2 + c] = positions[3 * i1 + c];
     }
+    cornerIndex[2 * i2] = i0;
+    cornerIndex[2 * i2 + 1] = i1;
     index[k] = i0;
     index[k + 1] = i1;
     index[k + 2] = i2;
@@ -84,6 +95,29 @@ export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
   out.setAttribute('position', new BufferAttribute(positions.slice(0, 3 * next), 3));
   out.setAttribute(FLAT_CORNERS[0], new BufferAttribute(a.slice(0, 3 * next), 3));
   out.setAttribute(FLAT_CORNERS[1], new BufferAttribute(b.slice(0, 3 * next), 3));
+  // What three moves a vertex by, per new vertex (a duplicate copies its source vertex).
+  // Float32, denormalised: three reads skinIndex, skinWeight and morph targets as floats.
+  const copy = (source: BufferAttribute | InterleavedBufferAttribute): BufferAttribute => {
+    const n = source.itemSize;
+    const array = new Float32Array(n * next);
+    for (let i = 0; i < next; i++) {
+      for (let c = 0; c < n; c++) array[n * i + c] = source.getComponent(origin[i], c);
+    }
+    return new BufferAttribute(array, n);
+  };
+  const morphs = geometry.morphAttributes.position;
+  const skinned = geometry.getAttribute('skinIndex') !== undefined;
+  if (skinned || morphs !== undefined) {
+    for (const name of ['skinIndex', 'skinWeight']) {
+      const attribute = geometry.getAttribute(name);
+      if (attribute !== undefined) out.setAttribute(name, copy(attribute));
+    }
+    if (morphs !== undefined) {
+      out.morphAttributes.position = morphs.map(copy);
+      out.morphTargetsRelative = geometry.morphTargetsRelative;
+    }
+    out.setAttribute(FLAT_CORNER_INDEX, new BufferAttribute(cornerIndex.slice(0, 2 * next), 2));
+  }
   // Still a sphere centred at its origin when the source was one: ShadingMaterial and OutlineMaterial may use
   // the analytic normal = position.
   if (geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true) {

@@ -3,6 +3,7 @@
  * the same equations on the CPU. The cel outline is in `@shadelab/material/outline`, the ray-cast sphere in
  * `@shadelab/material/impostor`.
  * @module @shadelab/material
+ * @mergeModuleWith <project>
  */
 export { computeNormalMatrix } from './computeNormalMatrix.js';
 export { eyeOf } from './eyeOf.js';
@@ -10,6 +11,7 @@ export { flatShadingGeometry } from './flatShadingGeometry.js';
 export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
 export { PhongLight, type PhongLightOptions } from './PhongLight.js';
 export {
+  FLAT_CORNER_INDEX,
   FLAT_CORNERS,
   MAX_CEL_BANDS,
   SHADINGS,
@@ -22,6 +24,8 @@ export {
   type Attenuation,
   celDiffuse,
   celSpecular,
+  type FogParameters,
+  fogFactor,
   LIGHTINGS,
   type Lighting,
   MIN_ATTENUATION_DENOMINATOR,

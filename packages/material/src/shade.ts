@@ -72,6 +72,11 @@ export interface ShadeSample {
    * is taken as a position (w = 1).
    */
   readonly eye: Vec4Like;
+  /**
+   * A colour that multiplies ka and kd (not ks), linear RGB: what `ShadingMaterial` does with an
+   * `InstancedMesh`'s `instanceColor` or a `BatchedMesh`'s colour. @default [1, 1, 1]
+   */
+  readonly tint?: Vec3Like;
 }
 
 /**
@@ -97,13 +102,15 @@ export function celSpecular(power: number): number {
 }
 
 const AXIS_Z: Vec3Like = [0, 0, 1];
+const WHITE: Vec3Like = [1, 1, 1];
 
 /**
  * The lighting equation at one point, summed over `lights` (linear RGB, not clamped):
  *
  * I = Σ_L ka·Ia_L + att_L(t)·( kd·Id_L·max(l·n, 0) + ks·Is_L·spec ),  att(t) = 1 / max(a + b·t + c·t², 1e-6)
  *
- * with l the unit vector to the light, t its distance, v the unit vector to the eye, spec 0 where l·n ≤ 0.
+ * with l the unit vector to the light, t its distance, v the unit vector to the eye, spec 0 where l·n ≤ 0;
+ * a sample's `tint` (an instance colour) multiplies the ka and kd terms.
  * Degenerate inputs stay finite: a light at the point (t = 0) lights it head-on (l = n); an eye at the
  * point uses v = n; a zero normal uses n = v (or +z when the eye is at the point too); h = 0 (l = −v) gives
  * no Blinn-Phong highlight. The GPU shaders of `ShadingMaterial` implement exactly these rules.
@@ -119,7 +126,7 @@ export function shade(
   lights: readonly ShadeLight[],
   out: Vec3 = [0, 0, 0],
 ): Vec3 {
-  const { position: p, normal, eye } = sample;
+  const { position: p, normal, eye, tint = WHITE } = sample;
   const { ka, kd, ks, shininess, lighting = 'phong', celBands = 0 } = material;
   const eyeW = eye.length > 3 ? eye[3] : 1;
   const toEye: Vec3 = [eye[0] - p[0] * eyeW, eye[1] - p[1] * eyeW, eye[2] - p[2] * eyeW];
@@ -170,12 +177,29 @@ export function shade(
     }
     const dTerm = att * diffuse;
     const sTerm = att * spec;
-    r += ka[0] * ia[0] + dTerm * kd[0] * id[0] + sTerm * ks[0] * is[0];
-    g += ka[1] * ia[1] + dTerm * kd[1] * id[1] + sTerm * ks[1] * is[1];
-    b += ka[2] * ia[2] + dTerm * kd[2] * id[2] + sTerm * ks[2] * is[2];
+    r += tint[0] * (ka[0] * ia[0] + dTerm * kd[0] * id[0]) + sTerm * ks[0] * is[0];
+    g += tint[1] * (ka[1] * ia[1] + dTerm * kd[1] * id[1]) + sTerm * ks[1] * is[1];
+    b += tint[2] * (ka[2] * ia[2] + dTerm * kd[2] * id[2]) + sTerm * ks[2] * is[2];
   }
   out[0] = r;
   out[1] = g;
   out[2] = b;
   return out;
+}
+
+/** three's fog, as `fogFactor` reads it: a `Fog` (`near`, `far`) or a `FogExp2` (`density`). */
+export type FogParameters = { readonly near: number; readonly far: number } | { readonly density: number };
+
+/**
+ * How much of the fog colour a point at view depth `depth` (distance along the camera's axis) gets, in 0 … 1,
+ * as `ShadingMaterial` blends three's fog: `Fog` smoothstep(near, far, depth), and where near ≥ far (where
+ * smoothstep is undefined) a step: 0 before near, 1 from near on; `FogExp2` 1 − exp(−(density·depth)²). The
+ * blend is done in the output colour space, after tone mapping: out = mix(encoded colour, fog colour, factor).
+ */
+export function fogFactor(fog: FogParameters, depth: number): number {
+  if ('density' in fog) return 1 - Math.exp(-fog.density * fog.density * depth * depth);
+  const { near, far } = fog;
+  if (!(far > near)) return depth >= near ? 1 : 0;
+  const t = Math.min(Math.max((depth - near) / (far - near), 0), 1);
+  return t * t * (3 - 2 * t);
 }

@@ -1,0 +1,246 @@
+// The lecture's equation and the shading stages as named GLSL chunks, included by ShadingMaterial, the
+// impostor and the outline (as three's meshphong.glsl.js includes its chunks). three's own chunks
+// (`#include <…>`) do the standard parts: instancing, batching, skinning, morph targets, clipping, fog, tone
+// mapping and colour space, each compiled only when three's program parameters define its USE_* macro. Every
+// chunk here compiles to nothing unless its feature is on, so a scene without them compiles the same code as
+// before (tests/material-scene.spec.ts checks the active lines of every lecture program).
+
+/**
+ * Which of three's scene features this draw uses, from the USE_* macros three defines per program:
+ * - `SHADING_SCENE` (vertex): the vertex goes through three's chunks (`transformed`, `mvPosition`);
+ * - `SHADING_INSTANCE`: an InstancedMesh or BatchedMesh matrix moves the vertex (and its normal);
+ * - `SHADING_DEFORM`: morph targets or skinning move the vertex;
+ * - `SHADING_TINT`: an instance (or batch) colour multiplies ka and kd.
+ */
+export const sceneFeatures = /* glsl */ `
+#if defined( USE_INSTANCING ) || defined( USE_BATCHING ) || defined( USE_SKINNING ) || defined( USE_MORPHTARGETS ) || defined( USE_FOG ) || NUM_CLIPPING_PLANES > 0
+#define SHADING_SCENE
+#endif
+#if defined( USE_INSTANCING ) || defined( USE_BATCHING )
+#define SHADING_INSTANCE
+#endif
+#if defined( USE_MORPHTARGETS ) || defined( USE_SKINNING )
+#define SHADING_DEFORM
+#endif
+#if defined( USE_INSTANCING_COLOR ) || defined( USE_BATCHING_COLOR ) || defined( USE_COLOR ) || defined( USE_COLOR_ALPHA )
+#define SHADING_TINT
+#endif
+`;
+
+/**
+ * The lighting equation (uniforms, `lightTerm`, `shadeColor`), shared by the vertex (flat, gouraud) and
+ * fragment (phong, impostor) stages. `LIGHT_COUNT_LITERAL` is replaced by the number of lights.
+ */
+export const lightingChunk = /* glsl */ `
+uniform vec4 shadingEye; // homogeneous eye: (position, 1) perspective, (backward axis, 0) orthographic
+uniform vec3 ambientTerm; // Σ ka·Ia over the lights (ambient is never attenuated)
+uniform float shininess;
+#if NUM_LIGHTS > 0
+uniform vec3 lightPosition[NUM_LIGHTS];
+uniform vec3 lightDiffuse[NUM_LIGHTS]; // kd·Id
+uniform vec3 lightSpecular[NUM_LIGHTS]; // ks·Is
+#ifdef USE_ATTENUATION
+uniform vec3 lightAttenuation[NUM_LIGHTS]; // a, b, c
+#endif
+#endif
+#ifdef SHADING_TINT
+vec3 shadingTint = vec3( 1.0 ); // instance colour: multiplies ka and kd
+#endif
+
+#ifdef USE_ATTENUATION
+#define LIGHT_ATTENUATION(i) lightAttenuation[i]
+#else
+#define LIGHT_ATTENUATION(i) vec3(1.0, 0.0, 0.0)
+#endif
+
+// One light's attenuated diffuse + specular term (kdId = kd·Id, ksIs = ks·Is, k = (a, b, c)).
+vec3 lightTerm(vec3 p, vec3 n, vec3 v, vec3 lightPos, vec3 kdId, vec3 ksIs, vec3 k) {
+  // inversesqrt and multiplies instead of length and divisions (cheaper on every GPU); the selects keep
+  // the degenerate cases of shade(): a light at the point lights it head-on.
+  vec3 toLight = lightPos - p;
+  float t2 = dot(toLight, toLight);
+  float invT = inversesqrt(t2);
+  vec3 l = t2 > 0.0 ? toLight * invT : n;
+  float ndl = dot(n, l);
+  float diffuse = max(ndl, 0.0);
+#ifdef LIGHTING_BLINN
+  vec3 h = l + v;
+  float h2 = dot(h, h);
+  float x = h2 > 0.0 ? max(dot(n, h) * inversesqrt(h2), 0.0) : 0.0;
+#else
+  // v·r with r = 2(l·n)n − l
+  float x = max(2.0 * ndl * dot(v, n) - dot(v, l), 0.0);
+#endif
+  // pow(0, 0) is undefined in GLSL: 0^0 = 1 (shininess 0 lights the whole lit side), 0^α = 0 for α > 0.
+  float spec = x > 0.0 ? pow(x, shininess) : step(shininess, 0.0);
+  spec = ndl > 0.0 ? spec : 0.0;
+#if CEL_BANDS > 0
+  diffuse = min(floor(diffuse * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
+  spec = step(0.5, spec);
+#endif
+#ifdef USE_ATTENUATION
+  float t = t2 > 0.0 ? t2 * invT : 0.0;
+  float att = 1.0 / max(k.x + k.y * t + k.z * t2, 1e-6);
+  diffuse *= att;
+  spec *= att;
+#endif
+  return diffuse * kdId + spec * ksIs;
+}
+
+vec3 shadeColor(vec3 p, vec3 normal) {
+  vec3 toEye = shadingEye.xyz - p * shadingEye.w;
+  float e2 = dot(toEye, toEye);
+  vec3 v = e2 > 0.0 ? toEye * inversesqrt(e2) : vec3(0.0, 0.0, 1.0);
+  float n2 = dot(normal, normal);
+  vec3 n = n2 > 0.0 ? normal * inversesqrt(n2) : v;
+  v = e2 > 0.0 ? v : n;
+#ifdef SHADING_TINT
+  vec3 color = ambientTerm * shadingTint;
+#else
+  vec3 color = ambientTerm;
+#endif
+#if NUM_LIGHTS > 0
+  // Unrolled by three (LIGHT_COUNT_LITERAL is replaced by the number of lights before compiling).
+  #pragma unroll_loop_start
+  for ( int i = 0; i < LIGHT_COUNT_LITERAL; i ++ ) {
+#ifdef SHADING_TINT
+    color += lightTerm(p, n, v, lightPosition[ i ], lightDiffuse[ i ] * shadingTint, lightSpecular[ i ], LIGHT_ATTENUATION(UNROLLED_LOOP_INDEX));
+#else
+    color += lightTerm(p, n, v, lightPosition[ i ], lightDiffuse[ i ], lightSpecular[ i ], LIGHT_ATTENUATION(UNROLLED_LOOP_INDEX));
+#endif
+  }
+  #pragma unroll_loop_end
+#endif
+  return color;
+}
+`;
+
+/**
+ * Vertex declarations for instancing and batching: the instance's normal matrix, made as `computeNormalMatrix`
+ * makes the object's (sign(det A)·cof(A) of A / max|A|: finite for a singular or huge instance matrix, outward
+ * under mirroring, right under shear), and the rescaling that keeps a product of normal matrices in range.
+ */
+export const instanceChunk = /* glsl */ `
+#ifdef SHADING_INSTANCE
+vec3 shadingRescale( vec3 v ) {
+  float m = max( max( abs( v.x ), abs( v.y ) ), abs( v.z ) );
+  return m > 0.0 ? v / m : vec3( 0.0 );
+}
+mat3 shadingCofactor( mat3 a ) {
+  vec3 e = max( max( abs( a[ 0 ] ), abs( a[ 1 ] ) ), abs( a[ 2 ] ) );
+  float s = max( max( e.x, e.y ), e.z );
+  if ( ! ( s > 0.0 ) ) return mat3( 0.0 );
+  vec3 a0 = a[ 0 ] / s;
+  vec3 a1 = a[ 1 ] / s;
+  vec3 a2 = a[ 2 ] / s;
+  mat3 c = mat3( cross( a1, a2 ), cross( a2, a0 ), cross( a0, a1 ) );
+  return dot( a0, c[ 0 ] ) < 0.0 ? - c : c;
+}
+#endif
+`;
+
+/**
+ * Vertex stage, first lines of `main`: three's chunks move the vertex (batching, instanced morph weights,
+ * morph targets, skinning, instancing: `transformed`, `mvPosition`, `gl_Position`), then clipping and fog
+ * read its view position; the lecture's scene (none of them) keeps its one-line projection.
+ */
+export const projectVertex = /* glsl */ `
+#ifdef SHADING_SCENE
+  #include <batching_vertex>
+  #include <morphinstance_vertex>
+  #include <skinbase_vertex>
+  vec3 transformed = vec3( position );
+  #include <morphtarget_vertex>
+  #include <skinning_vertex>
+  #include <project_vertex>
+  #include <clipping_planes_vertex>
+  #include <fog_vertex>
+#else
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+#endif
+`;
+
+/**
+ * Vertex stage: the instance (or batch) matrix and its normal matrix (`shadingInstance`,
+ * `shadingInstanceNormal`), and the instance colour (`tint`).
+ */
+export const instanceVertex = /* glsl */ `
+#ifdef SHADING_INSTANCE
+  mat4 shadingInstance = mat4( 1.0 );
+#ifdef USE_BATCHING
+  shadingInstance = batchingMatrix;
+#endif
+#ifdef USE_INSTANCING
+  shadingInstance = instanceMatrix;
+#endif
+  mat3 shadingInstanceNormal = shadingCofactor( mat3( shadingInstance ) );
+#endif
+#ifdef SHADING_TINT
+  vec3 tint = vec3( 1.0 );
+#ifdef USE_INSTANCING_COLOR
+  tint *= instanceColor;
+#endif
+#ifdef USE_BATCHING_COLOR
+  tint *= getBatchingColor( getIndirectIndex( gl_DrawID ) ).rgb;
+#endif
+#endif
+`;
+
+/**
+ * Flat shading's corners moved like their vertices (morph targets, then skinning, as three's chunks move a
+ * vertex): `cornerIndex` holds their vertex indices, `faceSkin` their skin indices and weights.
+ */
+export const flatDeformVertex = /* glsl */ `
+#ifdef SHADING_DEFORM
+  vec3 corners[ 3 ] = vec3[ 3 ]( p0, p1, p2 );
+  for ( int k = 0; k < 3; k ++ ) {
+    vec3 c = corners[ k ];
+#ifdef USE_MORPHTARGETS
+    c *= morphTargetBaseInfluence;
+    for ( int i = 0; i < MORPHTARGETS_COUNT; i ++ ) {
+      if ( morphTargetInfluences[ i ] != 0.0 ) c += getMorph( cornerIndex[ k ], i, 0 ).xyz * morphTargetInfluences[ i ];
+    }
+#endif
+#ifdef USE_SKINNING
+    int t = 2 * cornerIndex[ k ];
+    int w = textureSize( faceSkin, 0 ).x;
+    vec4 bones = texelFetch( faceSkin, ivec2( t % w, t / w ), 0 );
+    vec4 weights = texelFetch( faceSkin, ivec2( t % w + 1, t / w ), 0 );
+    vec4 bound = bindMatrix * vec4( c, 1.0 );
+    vec4 skinned = getBoneMatrix( bones.x ) * bound * weights.x + getBoneMatrix( bones.y ) * bound * weights.y
+      + getBoneMatrix( bones.z ) * bound * weights.z + getBoneMatrix( bones.w ) * bound * weights.w;
+    c = ( bindMatrixInverse * skinned ).xyz;
+#endif
+    corners[ k ] = c;
+  }
+  p0 = corners[ 0 ];
+  p1 = corners[ 1 ];
+  p2 = corners[ 2 ];
+#endif
+`;
+
+/** Fragment declarations for three's clipping chunk (which scales `diffuseColor.a` with alpha to coverage). */
+export const clippingFragment = /* glsl */ `
+#if NUM_CLIPPING_PLANES > 0 && defined( ALPHA_TO_COVERAGE )
+  vec4 diffuseColor = vec4( 1.0 );
+#endif
+  #include <clipping_planes_fragment>
+`;
+
+/**
+ * Fragment stage, last lines: three's tone mapping and output colour space, then fog as three's
+ * `fog_fragment` blends it (in the output colour space), except that fog near = far (where `smoothstep` is
+ * undefined) is a step at that depth: no fog before it, all fog beyond.
+ */
+export const outputFragment = /* glsl */ `
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+#ifdef USE_FOG
+#ifdef FOG_EXP2
+  float fogFactor = 1.0 - exp( - fogDensity * fogDensity * vFogDepth * vFogDepth );
+#else
+  float fogFactor = fogFar > fogNear ? smoothstep( fogNear, fogFar, vFogDepth ) : step( fogNear, vFogDepth );
+#endif
+  gl_FragColor.rgb = mix( gl_FragColor.rgb, fogColor, fogFactor );
+#endif
+`;
