@@ -33,6 +33,7 @@ const stages = [
   ],
   ['unit (vitest) against the oldest supported three', 'node', ['scripts/three-compat.mjs']],
   ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],
+  ['links in the Markdown and the docs site resolve', 'node', ['scripts/check-links.mjs']],
   ['end-to-end and visual (playwright)', 'npx', ['playwright', 'test']],
 ];
 
