@@ -57,7 +57,7 @@ export function markdownFiles(dir = root) {
 
 /**
  * The text with code and comments blanked out (same length and line breaks, so offsets and lines hold):
- * fenced code blocks (``` or ~~~, any length), HTML comments and, unless `inline` is false, inline code spans.
+ * fenced code blocks (backtick or tilde fences of any length), HTML comments and, unless `inline` is false, inline code spans.
  * @param {string} text Markdown @param {boolean} [inline] blank inline code spans too
  * @returns {string}
  */
