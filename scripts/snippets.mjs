@@ -51,7 +51,8 @@ const LANGUAGES = /** @type {const} */ ({
 
 /**
  * The Markdown files whose code is checked: tracked (or new, not ignored) *.md, without CHANGELOG.md,
- * .changeset/ (future changelog entries) and generated pages (BENCHMARKS.md, docs/api/).
+ * .changeset/ (future changelog entries) and generated pages (BENCHMARKS.md, docs/api/, the packages' Markdown
+ * API references in packages/<name>/docs/api/, whose examples are the TSDoc's fragments).
  * @param {string} [dir] repository root
  * @returns {string[]} paths relative to `dir`, sorted
  */
@@ -67,7 +68,8 @@ export function markdownFiles(dir = root) {
         !/(^|\/)(node_modules|\.changeset)\//.test(f) &&
         !/(^|\/)CHANGELOG\.md$/.test(f) &&
         f !== 'BENCHMARKS.md' &&
-        !f.startsWith('docs/api/'),
+        !f.startsWith('docs/api/') &&
+        !/^packages\/[^/]+\/docs\/api\//.test(f),
     )
     .sort();
 }
