@@ -157,7 +157,8 @@ async function poll(
 ): Promise<{ look: Look; waitedMs: number; met: boolean }> {
   const start = Date.now();
   for (let i = 0; ; i++) {
-    const remaining = Math.max(timeout - (Date.now() - start), 1);
+    // A look may run past the deadline rather than fail for want of time (a screenshot takes a while).
+    const remaining = Math.max(timeout - (Date.now() - start), 1000);
     const last = await look(canvas, options, remaining);
     const met = (last.problem === undefined) === wanted;
     const waitedMs = Date.now() - start;
