@@ -1,6 +1,6 @@
 import { createHash } from 'node:crypto';
 import { expect, type Page, test } from '@playwright/test';
-import type { ProgramSource } from '../playground/harness/material';
+import type { ProgramSource, SceneConfig, SceneInstance, SceneStats } from '../playground/harness/material';
 import { activeGlsl, withoutUseFog } from './glsl-active';
 
 // ShadingMaterial in an ordinary three.js scene (issue 14, phase 1): three's program parameters (instancing,
@@ -12,6 +12,50 @@ async function open(page: Page): Promise<void> {
   await page.goto('/harness/material.html');
   await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
 }
+
+function scene(page: Page, config: SceneConfig): Promise<SceneStats> {
+  return page.evaluate((c) => window.materialHarness.sceneCompare(c), config);
+}
+
+/** Drawn exactly where three's MeshPhongMaterial draws (every pixel whose 3 × 3 neighbourhood is uniform there). */
+function expectOracleCoverage(stats: SceneStats, minCovered: number): void {
+  const info = JSON.stringify(stats);
+  expect(stats.covered, info).toBeGreaterThan(minCovered);
+  expect(stats.coverageCompared, info).toBeGreaterThan(30000);
+  expect(stats.coverageMismatches, info).toBe(0);
+}
+
+/** Colours within 2/255 of shade() away from edges, on enough pixels, and no NaN (black) pixel. */
+function expectShade(stats: SceneStats, minCompared: number): void {
+  const info = JSON.stringify(stats);
+  expect(stats.compared, info).toBeGreaterThan(minCompared);
+  expect(stats.maxError, info).toBeLessThanOrEqual(2);
+  expect(stats.mismatches, info).toBe(0);
+  expect(stats.darkPixels, info).toBe(0);
+}
+
+/** The colours of three's own material (its emissive = ka·Ia) on every pixel both draw, away from edges. */
+function expectOracleColours(stats: SceneStats, minCompared: number, tolerance = 0): void {
+  const info = JSON.stringify(stats);
+  expect(stats.oracleCompared, info).toBeGreaterThan(minCompared);
+  expect(stats.oracleMaxError, info).toBeLessThanOrEqual(tolerance);
+  expect(stats.darkPixels, info).toBe(0);
+}
+
+const SHADINGS = [
+  ['phong', {}],
+  ['phong (analytic sphere normals)', { analytic: true }],
+  ['gouraud', { shading: 'gouraud' }],
+  ['flat (triangle soup)', { shading: 'flat' }],
+  ['flat (flatShadingGeometry)', { shading: 'flat', flatCorners: true }],
+] as const;
+
+/** Three instances at x = −2, 0, 2, each with its instanceColor. */
+const THREE_INSTANCES: SceneInstance[] = [
+  { position: [-2, 0, 0], scale: [0.8, 0.8, 0.8], color: [1, 0.5, 0.25] },
+  { position: [0, 0, 0], scale: [0.8, 0.8, 0.8], color: [0.25, 1, 0.5] },
+  { position: [2, 0, 0], scale: [0.8, 0.8, 0.8], color: [0.5, 0.25, 1] },
+];
 
 const sha = (text: string) => createHash('sha256').update(text).digest('hex').slice(0, 16);
 
@@ -37,4 +81,335 @@ test('a scene without the new features compiles the same programs as before (act
   expect(
     `${activeGlsl(lecture?.vertex ?? '')}\n----\n${activeGlsl(lecture?.fragment ?? '')}\n`,
   ).toMatchSnapshot('lecture-program.glsl');
+});
+
+for (const [name, variant] of SHADINGS) {
+  const config = { shading: 'phong', ...variant } as const;
+  const flat = config.shading === 'flat';
+  test(`InstancedMesh, ${name}: 3 instances at x = −2, 0, 2 where MeshPhongMaterial draws them; instanceColor × ka, kd = shade()`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { ...config, object: 'instanced', instances: THREE_INSTANCES });
+    expectOracleCoverage(stats, 7000);
+    expectShade(stats, flat ? 4500 : 6500);
+  });
+
+  test(`BatchedMesh, ${name}: 3 instances with colours, where MeshPhongMaterial draws them, colours = shade()`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { ...config, object: 'batched', instances: THREE_INSTANCES });
+    expectOracleCoverage(stats, 7000);
+    expectShade(stats, flat ? 4500 : 6500);
+  });
+}
+
+// Deformed meshes carry normals (the analytic sphere normal is the rest sphere's, documented).
+for (const [name, variant] of SHADINGS.filter(([n]) => !n.includes('analytic'))) {
+  const config = { shading: 'phong', ...variant } as const;
+  const flat = config.shading === 'flat';
+  test(`SkinnedMesh with a moved bone, ${name}: MeshPhongMaterial's silhouette, colours = shade() of three's CPU skinning`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { ...config, object: 'skinned', bone: 0.7 });
+    expectOracleCoverage(stats, 3000);
+    expectShade(stats, flat ? 2500 : 3000);
+  });
+
+  test(`morph targets at full influence (positions and normals), ${name}: MeshPhongMaterial's silhouette, shade() colours`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { ...config, object: 'morphed' });
+    expectOracleCoverage(stats, 4500);
+    expectShade(stats, flat ? 3000 : 4000);
+  });
+}
+
+test('per-instance morph weights (InstancedMesh.setMorphAt) move every instance', async ({ page }) => {
+  await open(page);
+  const instances: SceneInstance[] = [
+    { position: [-1.5, 0, 0], scale: [0.7, 0.7, 0.7] },
+    { position: [1.5, 0, 0], scale: [0.7, 0.7, 0.7] },
+  ];
+  for (const config of [{ shading: 'phong' }, { shading: 'flat', flatCorners: true }] as const) {
+    const stats = await scene(page, { ...config, object: 'instanced-morphed', instances });
+    expectOracleCoverage(stats, 4000);
+    expectShade(stats, 2500);
+  }
+});
+
+test('instancing × skinning × flat shading: a skinned mesh with instance matrices (three combines both chunks)', async ({
+  page,
+}) => {
+  await open(page);
+  const instances: SceneInstance[] = [
+    { position: [-1.5, 0, 0] },
+    { position: [1.5, 0.2, 0], rotation: [0, 0.4, 0.5], scale: [0.8, 1.1, 0.9] },
+  ];
+  for (const config of [
+    { shading: 'flat', flatCorners: true },
+    { shading: 'flat' },
+    { shading: 'phong' },
+    { shading: 'gouraud' },
+  ] as const) {
+    const stats = await scene(page, { ...config, object: 'instanced-skinned', instances });
+    expectOracleCoverage(stats, 6000);
+    expectShade(stats, 4500);
+  }
+});
+
+test('non-uniform and sheared instance matrices: normals through the instance matrix (sign(det)·cofactor), = shade()', async ({
+  page,
+}) => {
+  await open(page);
+  const instances: SceneInstance[] = [
+    { position: [-1.8, 0, 0], scale: [0.4, 1.4, 0.8], rotation: [0.3, 0.5, 0.2], color: [1, 0.8, 0.6] },
+    { position: [0.2, 0, 0], scale: [1.2, 0.5, 0.9], shear: 0.8 },
+    { position: [2, 0, 0], scale: [0.6, 0.6, 1.5], rotation: [-0.4, 0.9, 0], shear: -0.5 },
+  ];
+  for (const variant of [
+    { shading: 'phong', analytic: true },
+    { shading: 'gouraud' },
+    { shading: 'flat', flatCorners: true },
+  ] as const) {
+    const stats = await scene(page, { ...variant, object: 'instanced', instances });
+    expectOracleCoverage(stats, 5000);
+    expectShade(stats, 3500);
+  }
+});
+
+test('extremes: a mirrored instance (negative determinant) keeps outward normals (lit as shade() lights them)', async ({
+  page,
+}) => {
+  await open(page);
+  // three sets the front face per object, not per instance: a mirrored instance shows its inner side (for
+  // MeshPhongMaterial too); its outward normals face away from the eye and the light, as shade() says.
+  const instances: SceneInstance[] = [
+    { position: [-1.5, 0, 0], scale: [-0.9, 0.9, 0.9] },
+    { position: [1.5, 0, 0], scale: [0.9, 0.9, 0.9], rotation: [0, 0, 0.3] },
+  ];
+  for (const variant of [
+    { shading: 'phong', analytic: true },
+    { shading: 'gouraud' },
+    { shading: 'flat' },
+  ] as const) {
+    const stats = await scene(page, { ...variant, object: 'instanced', instances });
+    expectOracleCoverage(stats, 4000);
+    expectShade(stats, 3000);
+  }
+});
+
+test('extremes: an instance with a zero scale draws the flattened disc with finite normals, = shade()', async ({
+  page,
+}) => {
+  await open(page);
+  const instances: SceneInstance[] = [
+    { position: [-1.5, 0, 0], scale: [0.9, 0.9, 0] },
+    { position: [1.5, 0, 0], scale: [0.9, 0.9, 0.9] },
+  ];
+  for (const variant of [
+    { shading: 'phong', analytic: true },
+    { shading: 'flat', flatCorners: true },
+  ] as const) {
+    const stats = await scene(page, { ...variant, object: 'instanced', instances });
+    expectOracleCoverage(stats, 4000);
+    expectShade(stats, 3000);
+  }
+});
+
+test('extremes: instances with 1e20 and 1e-20 scales render without NaN (no black pixel)', async ({
+  page,
+}) => {
+  await open(page);
+  for (const scale of [
+    [1e20, 0.8, 0.8],
+    [0.8, 1e-20, 0.8],
+    [1e-20, 1e-20, 1e-20],
+  ] as Array<[number, number, number]>) {
+    for (const variant of [
+      { shading: 'phong', analytic: true },
+      { shading: 'flat', flatCorners: true },
+    ] as const) {
+      const stats = await scene(page, {
+        ...variant,
+        object: 'instanced',
+        instances: [
+          { position: [0, 0, 0], scale },
+          { position: [-2, 0, 0], scale: [0.8, 0.8, 0.8] },
+        ],
+      });
+      expect(stats.darkPixels, `${variant.shading} ${scale}: ${JSON.stringify(stats)}`).toBe(0);
+      expect(stats.covered).toBeGreaterThan(2000);
+    }
+  }
+});
+
+const FOGS = [
+  ['Fog(1.5, 4)', { near: 1.5, far: 4 }],
+  ['FogExp2(0.3)', { density: 0.3 }],
+] as const;
+
+for (const [name, fog] of FOGS) {
+  test(`scene.fog ${name}: the fog blend of MeshPhongMaterial at every depth, and shade() blended by fogFactor()`, async ({
+    page,
+  }) => {
+    await open(page);
+    // Constant colour (ka·Ia only) against MeshPhongMaterial's emissive: the same fog factor at every pixel.
+    expectOracleColours(
+      await scene(page, { shading: 'phong', fog, scale: [2, 1, 2], constant: true }),
+      10000,
+    );
+    for (const [, variant] of SHADINGS) {
+      const stats = await scene(page, { shading: 'phong', ...variant, fog, scale: [2, 1, 2] });
+      expectOracleCoverage(stats, 11000);
+      expectShade(stats, 8000);
+    }
+  });
+}
+
+test('fog × logarithmic depth: the same fog as MeshPhongMaterial with a logarithmic depth buffer', async ({
+  page,
+}) => {
+  await open(page);
+  for (const [, fog] of FOGS) {
+    const config = { shading: 'phong', fog, scale: [2, 1, 2], logarithmic: true } as const;
+    expectOracleColours(await scene(page, { ...config, constant: true }), 10000);
+    const stats = await scene(page, config);
+    expectOracleCoverage(stats, 11000);
+    expectShade(stats, 10000);
+    const flat = await scene(page, { ...config, shading: 'flat', flatCorners: true });
+    expectShade(flat, 7000);
+  }
+});
+
+test('extremes: fog near = far is a step at that depth, density 0 no fog, density 1e6 all fog: finite, = fogFactor()', async ({
+  page,
+}) => {
+  await open(page);
+  for (const fog of [{ near: 2.2, far: 2.2 }, { density: 0 }, { density: 1e6 }]) {
+    const stats = await scene(page, { shading: 'phong', fog, scale: [2, 1, 2] });
+    expectOracleCoverage(stats, 11000);
+    expectShade(stats, 8000);
+  }
+});
+
+const CLIPS = [
+  ['a material plane (x ≥ 0 kept)', { planes: [[1, 0, 0, 0]] }],
+  ["the renderer's global plane", { planes: [[0, -1, 0, 0.3]], global: true }],
+  [
+    'two planes, union',
+    {
+      planes: [
+        [1, 0, 0, 0],
+        [0, 1, 0, 0],
+      ],
+    },
+  ],
+  [
+    'two planes, clipIntersection',
+    {
+      planes: [
+        [1, 0, 0, 0],
+        [0, 1, 0, 0],
+      ],
+      intersection: true,
+    },
+  ],
+] as const;
+
+for (const [name, clip] of CLIPS) {
+  test(`clipping: ${name} cuts where MeshPhongMaterial is cut, colours = shade()`, async ({ page }) => {
+    await open(page);
+    for (const [, variant] of SHADINGS) {
+      const stats = await scene(page, {
+        shading: 'phong',
+        ...variant,
+        clip: { ...clip, planes: clip.planes.map((p) => [...p] as [number, number, number, number]) },
+        scale: [2, 1, 2],
+      });
+      expectOracleCoverage(stats, 2500);
+      expectShade(stats, 2000);
+    }
+  });
+}
+
+test('clipping × outline: createOutline shares the planes, the hull is cut with the mesh', async ({
+  page,
+}) => {
+  await open(page);
+  for (const clip of [{ planes: [[1, 0, 0, 0]] }, { planes: [[1, 0, 0, 0]], global: true }] as Array<
+    SceneConfig['clip']
+  >) {
+    const stats = await scene(page, { shading: 'phong', analytic: true, clip, outline: 0.08 });
+    expectOracleCoverage(stats, 1500);
+    expectShade(stats, 1200);
+    expect(stats.black, JSON.stringify(stats)).toBeGreaterThan(60); // the ring on the kept side
+    expect(stats.clippedBlack, JSON.stringify(stats)).toBe(0);
+  }
+});
+
+test("tone mapping (ACES, exposure 2) and toneMapped: three's own tone mapping, as MeshPhongMaterial's", async ({
+  page,
+}) => {
+  await open(page);
+  for (const level of [0.05, 0.3, 1, 4]) {
+    const ka: [number, number, number] = [level, level * 0.6, level * 0.3];
+    const stats = await scene(page, {
+      shading: 'phong',
+      toneMapping: 2,
+      constant: true,
+      ka,
+      scale: [2, 1, 2],
+    });
+    expectOracleColours(stats, 10000);
+  }
+  // toneMapped = false: untouched by the renderer's tone mapping, the colours of shade().
+  const off = { shading: 'phong', toneMapping: 2, toneMapped: false, scale: [2, 1, 2] } as const;
+  expectOracleColours(await scene(page, { ...off, constant: true, ka: [4, 2.4, 1.2] }), 10000);
+  expectShade(await scene(page, off), 10000);
+});
+
+test('output colour space: a linear-sRGB canvas gets the linear colours of shade()', async ({ page }) => {
+  await open(page);
+  for (const [, variant] of SHADINGS) {
+    const stats = await scene(page, { shading: 'phong', ...variant, linearOutput: true, scale: [2, 1, 2] });
+    expectOracleCoverage(stats, 11000);
+    expectShade(stats, 7000);
+  }
+});
+
+test('the impostor is fogged and clipped like a mesh (the same chunks): MeshPhongMaterial on a fine sphere', async ({
+  page,
+}) => {
+  await open(page);
+  for (const extra of [
+    { fog: { near: 1.5, far: 4 } },
+    { clip: { planes: [[1, 0, 0, 0]] } },
+    { toneMapping: 2 },
+  ] as Array<Partial<SceneConfig>>) {
+    const stats = await scene(page, {
+      shading: 'phong',
+      object: 'impostor',
+      scale: [2, 1, 2],
+      constant: true,
+      ...extra,
+    });
+    expectOracleCoverage(stats, 5000);
+    // The oracle is a level-7 mesh: its interpolated depth differs from the exact sphere's by a hair.
+    expectOracleColours(stats, 5000, 1);
+  }
+});
+
+test('flipping the object kind, fog, clipping and tone mapping 1,000 times keeps renderer.info.programs bounded', async ({
+  page,
+}) => {
+  await open(page);
+  const result = await page.evaluate(() => window.materialHarness.flipFeatures(1000));
+  // 5 object kinds × fog × clipping × tone mapping: at most 40 variants, each compiled once.
+  expect(result.variants).toBe(40);
+  expect(result.max).toBeLessThanOrEqual(result.before + result.variants);
+  expect(result.after).toBeLessThanOrEqual(result.before + result.variants);
 });

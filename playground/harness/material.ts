@@ -5,6 +5,8 @@
 import {
   computeNormalMatrix,
   eyeOf,
+  flatShadingGeometry,
+  fogFactor,
   type Lighting,
   linearToSrgb8,
   PhongLight,
@@ -17,16 +19,40 @@ import {
 import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
 import { createOutline } from '@shadelab/material/outline';
 import {
+  ACESFilmicToneMapping,
+  BackSide,
+  BatchedMesh,
+  Bone,
+  type BufferGeometry,
   type Camera,
+  Color,
+  CylinderGeometry,
+  Euler,
+  Float32BufferAttribute,
+  Fog,
+  FogExp2,
+  InstancedBufferAttribute,
+  InstancedMesh,
+  LinearSRGBColorSpace,
   Matrix3,
+  Matrix4,
   Mesh,
+  MeshBasicMaterial,
+  MeshPhongMaterial,
+  NoToneMapping,
   type Object3D,
   OrthographicCamera,
   PerspectiveCamera,
+  Plane,
+  Quaternion,
   Raycaster,
   Scene,
   type ShaderMaterial,
+  Skeleton,
+  SkinnedMesh,
+  SRGBColorSpace,
   Triangle,
+  Uint16BufferAttribute,
   Vector2,
   Vector3,
   Vector4,
@@ -664,7 +690,736 @@ function programSources(): ProgramSource[] {
   return out;
 }
 
-const api = { compare, flipPrograms, sharedMaterial, outline, programSources };
+// ---- ShadingMaterial in any three.js scene (tests/material-scene.spec.ts) ----------------------------------
+
+/** One instance of an InstancedMesh or BatchedMesh (or the hybrid instanced SkinnedMesh). */
+export interface SceneInstance {
+  position: readonly [number, number, number];
+  scale?: readonly [number, number, number];
+  rotation?: readonly [number, number, number];
+  /** Shear of the instance matrix: x += shear · y. @default 0 */
+  shear?: number;
+  /** instanceColor (linear). */
+  color?: readonly [number, number, number];
+}
+
+export interface SceneConfig {
+  shading: Shading;
+  lighting?: Lighting;
+  /** What draws. @default 'mesh' */
+  object?:
+    | 'mesh'
+    | 'instanced'
+    | 'batched'
+    | 'skinned'
+    | 'morphed'
+    | 'instanced-skinned'
+    | 'instanced-morphed'
+    | 'impostor';
+  /** Flat shading of flatShadingGeometry(geometry) instead of the triangle soup. */
+  flatCorners?: boolean;
+  /** Sphere without a normal attribute (analytic normals; spheres only). @default false */
+  analytic?: boolean;
+  /** Sphere level. @default 5 */
+  level?: number;
+  instances?: readonly SceneInstance[];
+  /** Object scale. @default [1, 1, 1] */
+  scale?: readonly [number, number, number];
+  /** Rotation of the skinned mesh's second bone about z, radians. @default 0.7 */
+  bone?: number;
+  fog?: { near: number; far: number } | { density: number };
+  /** Planes (normal x, y, z, constant) kept where normal·p + constant ≥ 0. */
+  clip?: {
+    planes: ReadonlyArray<readonly [number, number, number, number]>;
+    global?: boolean;
+    intersection?: boolean;
+  };
+  /** Inverted-hull outline of this thickness (createOutline). */
+  outline?: number;
+  logarithmic?: boolean;
+  /** ACES filmic tone mapping with this exposure. */
+  toneMapping?: number;
+  /** The materials' toneMapped (ShadingMaterial's and the oracle's). @default true */
+  toneMapped?: boolean;
+  /** renderer.outputColorSpace = LinearSRGBColorSpace. */
+  linearOutput?: boolean;
+  /** ka·Ia only (kd = ks = 0, Ia = 1): colours compared exactly with MeshPhongMaterial's emissive. */
+  constant?: boolean;
+  ka?: readonly [number, number, number];
+  size?: number;
+}
+
+export interface SceneStats {
+  /** Pixels drawn by ShadingMaterial / by the oracle (MeshPhongMaterial). */
+  covered: number;
+  oracleCovered: number;
+  /** Pixels whose 3 × 3 neighbourhood is all drawn or all clear in the oracle, and how many differ. */
+  coverageCompared: number;
+  coverageMismatches: number;
+  /** Constant mode: covered pixels compared with the oracle's colour, and the largest difference. */
+  oracleCompared: number;
+  oracleMaxError: number;
+  /** Pixels compared with shade() (away from silhouettes, clipped surfaces and flat faces' edges). */
+  compared: number;
+  maxError: number;
+  mismatches: number;
+  /** Covered pixels darker than any lit colour: NaN. */
+  darkPixels: number;
+  /** Outline (pure black) pixels, and those where the planes clip. */
+  black: number;
+  clippedBlack: number;
+  worst: unknown;
+}
+
+const WHITE_LIGHT: [number, number, number] = [1, 1, 1];
+let logRenderer: WebGLRenderer | null = null;
+
+/** The bone-weighted cylinder: 3 high, radius 0.5, bones at y = −1.5 (root) and y = 0, blended over |y| < 0.5. */
+function skinnedCylinder(): BufferGeometry {
+  const g = new CylinderGeometry(0.5, 0.5, 3, 16, 12);
+  const position = g.getAttribute('position');
+  const index = new Uint16Array(4 * position.count);
+  const weight = new Float32Array(4 * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const y = position.getY(i);
+    const t = Math.min(Math.max(y + 0.5, 0), 1);
+    const w = t * t * (3 - 2 * t);
+    index.set([0, 1, 0, 0], 4 * i);
+    weight.set([1 - w, w, 0, 0], 4 * i);
+  }
+  g.setAttribute('skinIndex', new Uint16BufferAttribute(index, 4));
+  g.setAttribute('skinWeight', new Float32BufferAttribute(weight, 4));
+  return g;
+}
+
+/** The sphere with one morph target at full influence: stretched to (1.6, 0.8, 1.2), normals to match. */
+function morphedSphere(level: number): BufferGeometry {
+  const g = sphereGeometry(level, true).clone();
+  const position = g.getAttribute('position');
+  const k = [1.6, 0.8, 1.2];
+  const p = new Float32Array(3 * position.count);
+  const n = new Float32Array(3 * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const x = position.getX(i);
+    const y = position.getY(i);
+    const z = position.getZ(i);
+    p.set([x * k[0], y * k[1], z * k[2]], 3 * i);
+    const nx = x / k[0];
+    const ny = y / k[1];
+    const nz = z / k[2];
+    const l = Math.hypot(nx, ny, nz);
+    n.set([nx / l, ny / l, nz / l], 3 * i);
+  }
+  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
+  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
+  return g;
+}
+
+function instanceMatrix(instance: SceneInstance): Matrix4 {
+  const m = new Matrix4().compose(
+    new Vector3(...instance.position),
+    new Quaternion().setFromEuler(new Euler(...(instance.rotation ?? [0, 0, 0]))),
+    new Vector3(...(instance.scale ?? [1, 1, 1])),
+  );
+  if (instance.shear) m.multiply(new Matrix4().makeShear(0, 0, instance.shear, 0, 0, 0));
+  return m;
+}
+
+interface SceneSetup {
+  scene: Scene;
+  object: Mesh;
+  geometry: BufferGeometry;
+  material: ShadingMaterial;
+  light: PhongLight;
+  instances: Matrix4[];
+  tints: Array<readonly [number, number, number]>;
+  hull: Mesh | null;
+  dispose: () => void;
+}
+
+function buildScene(config: SceneConfig): SceneSetup {
+  const kind = config.object ?? 'mesh';
+  const level = config.level ?? 5;
+  const light = new PhongLight(
+    config.constant
+      ? { ambient: 1, diffuse: 0, specular: 0 }
+      : { ambient: [0.2, 0.2, 0.2], diffuse: WHITE_LIGHT, specular: [0.8, 0.8, 0.8] },
+  );
+  light.position.set(-5, 10, 20);
+  const material = new (kind === 'impostor' ? SphereImpostorMaterial : ShadingMaterial)({
+    ...(kind === 'impostor' ? {} : { shading: config.shading }),
+    lighting: config.lighting ?? 'phong',
+    lights: [light],
+    ...(config.ka ? { ka: config.ka } : {}),
+    ...(config.constant ? { kd: 0, ks: 0 } : {}),
+  });
+  if (config.toneMapped === false) material.toneMapped = false;
+  const flat = config.shading === 'flat';
+  let geometry: BufferGeometry;
+  const skinned = kind === 'skinned' || kind === 'instanced-skinned';
+  if (skinned) {
+    const cylinder = skinnedCylinder();
+    geometry = flat
+      ? config.flatCorners
+        ? flatShadingGeometry(cylinder)
+        : cylinder.toNonIndexed()
+      : cylinder;
+  } else if (kind === 'morphed' || kind === 'instanced-morphed') {
+    const sphere = morphedSphere(level);
+    geometry = flat ? (config.flatCorners ? flatShadingGeometry(sphere) : sphere) : sphere;
+  } else if (flat) {
+    geometry = config.flatCorners ? flatSphereGeometry(level) : sphereGeometry(level, false);
+  } else {
+    geometry = sphereGeometry(level, !(config.analytic ?? false));
+  }
+  const specs = config.instances ?? [{ position: [0, 0, 0] }];
+  const instances = specs.map(instanceMatrix);
+  const tints = specs.map((s) => s.color ?? WHITE_LIGHT);
+  const colored = specs.some((s) => s.color !== undefined);
+  let object: Mesh;
+  if (kind === 'instanced' || kind === 'instanced-morphed') {
+    const mesh = new InstancedMesh(geometry, material, instances.length);
+    instances.forEach((m, i) => {
+      mesh.setMatrixAt(i, m);
+      if (colored) mesh.setColorAt(i, new Color(...tints[i]));
+    });
+    if (kind === 'instanced-morphed') {
+      // Per-instance morph weights (InstancedMesh.setMorphAt), all at full influence.
+      mesh.morphTargetInfluences = [1];
+      for (let i = 0; i < instances.length; i++) mesh.setMorphAt(i, mesh);
+      if (mesh.morphTexture) mesh.morphTexture.needsUpdate = true;
+    }
+    object = mesh;
+  } else if (kind === 'impostor') {
+    object = new SphereImpostor(material as SphereImpostorMaterial);
+  } else if (kind === 'batched') {
+    const index = geometry.index;
+    const mesh = new BatchedMesh(
+      instances.length,
+      geometry.getAttribute('position').count,
+      index === null ? 0 : index.count,
+      material,
+    );
+    const id = mesh.addGeometry(geometry);
+    // A BatchedMesh draws its own geometry: flag it as spheres (centred at their origins) like any geometry.
+    if (geometry.userData.isSphere === true || geometry.type === 'SubdivisionSphereGeometry')
+      mesh.geometry.userData.isSphere = true;
+    instances.forEach((m, i) => {
+      const instance = mesh.addInstance(id);
+      mesh.setMatrixAt(instance, m);
+      if (colored) mesh.setColorAt(instance, new Color(...tints[i]));
+    });
+    object = mesh as unknown as Mesh;
+  } else if (skinned) {
+    const mesh = new SkinnedMesh(geometry, material);
+    const root = new Bone();
+    root.position.set(0, -1.5, 0);
+    const joint = new Bone();
+    joint.position.set(0, 1.5, 0);
+    root.add(joint);
+    mesh.add(root);
+    mesh.bind(new Skeleton([root, joint]));
+    joint.rotation.z = config.bone ?? 0.7;
+    if (kind === 'instanced-skinned') {
+      // three has no InstancedSkinnedMesh class; its program parameters and chunks combine both when an
+      // object is a SkinnedMesh with an InstancedMesh's instanceMatrix (what such classes in apps do).
+      const attribute = new InstancedBufferAttribute(new Float32Array(16 * instances.length), 16);
+      instances.forEach((m, i) => {
+        m.toArray(attribute.array, 16 * i);
+      });
+      Object.assign(mesh, {
+        isInstancedMesh: true,
+        instanceMatrix: attribute,
+        instanceColor: null,
+        morphTexture: null,
+        count: instances.length,
+      });
+    }
+    object = mesh;
+  } else {
+    object = new Mesh(geometry, material);
+    if (kind === 'morphed') object.morphTargetInfluences = [1];
+  }
+  object.frustumCulled = false;
+  object.scale.set(...(config.scale ?? [1, 1, 1]));
+  if (kind === 'mesh' || kind === 'morphed' || kind === 'skinned' || kind === 'impostor') {
+    // A single object stands where instance 0 would.
+    object.applyMatrix4(instances[0]);
+    instances[0] = new Matrix4();
+  }
+  const scene = new Scene();
+  scene.add(object, light);
+  if (config.fog) {
+    scene.fog =
+      'density' in config.fog
+        ? new FogExp2(0x8080c0, config.fog.density)
+        : new Fog(0x8080c0, config.fog.near, config.fog.far);
+  }
+  let hull: Mesh | null = null;
+  if (config.clip && !config.clip.global) {
+    material.clippingPlanes = config.clip.planes.map(([x, y, z, c]) => new Plane(new Vector3(x, y, z), c));
+    material.clipIntersection = config.clip.intersection ?? false;
+  }
+  if (config.outline !== undefined) hull = createOutline(object, { thickness: config.outline, color: 0 });
+  scene.updateMatrixWorld();
+  return {
+    scene,
+    object,
+    geometry,
+    material,
+    light,
+    instances,
+    tints,
+    hull,
+    dispose: () => {
+      material.dispose();
+      (hull?.material as ShaderMaterial | undefined)?.dispose();
+    },
+  };
+}
+
+/** The renderer for `config`, set up as it asks (restored by the returned function). */
+function sceneRenderer(config: SceneConfig, size: number): [WebGLRenderer, () => void] {
+  let r = renderer;
+  if (config.logarithmic) {
+    logRenderer ??= new WebGLRenderer({
+      canvas: document.createElement('canvas'),
+      antialias: false,
+      preserveDrawingBuffer: true,
+      logarithmicDepthBuffer: true,
+    });
+    logRenderer.setPixelRatio(1);
+    logRenderer.setClearColor(0x0000ff, 1);
+    r = logRenderer;
+  }
+  r.setSize(size, size, false);
+  if (config.toneMapping !== undefined) {
+    r.toneMapping = ACESFilmicToneMapping;
+    r.toneMappingExposure = config.toneMapping;
+  }
+  if (config.linearOutput) r.outputColorSpace = LinearSRGBColorSpace;
+  r.localClippingEnabled = config.clip !== undefined && !config.clip.global;
+  if (config.clip?.global)
+    r.clippingPlanes = config.clip.planes.map(([x, y, z, c]) => new Plane(new Vector3(x, y, z), c));
+  return [
+    r,
+    () => {
+      r.toneMapping = NoToneMapping;
+      r.toneMappingExposure = 1;
+      r.outputColorSpace = SRGBColorSpace;
+      r.localClippingEnabled = false;
+      r.clippingPlanes = [];
+    },
+  ];
+}
+
+function readPixels(r: WebGLRenderer, scene: Scene, camera: Camera, size: number): Uint8Array {
+  r.render(scene, camera);
+  const gl = r.getContext();
+  const pixels = new Uint8Array(4 * size * size);
+  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  return pixels;
+}
+
+/** three's sRGB transfer (linearToOutputTexel), not clamped above (three's fog mixes before the write clamps). */
+const srgb = (x: number) => (x <= 0.0031308 ? Math.max(x, 0) * 12.92 : 1.055 * x ** (1 / 2.4) - 0.055);
+
+/** The deformed object-space position of `vertex` as three's CPU helpers compute it (morph targets, bones). */
+function objectPosition(object: Mesh, geometry: BufferGeometry, vertex: number, target: Vector3): Vector3 {
+  if ((object as SkinnedMesh).isSkinnedMesh || geometry.morphAttributes.position !== undefined)
+    return object.getVertexPosition(vertex, target);
+  return target.fromBufferAttribute(geometry.getAttribute('position'), vertex);
+}
+
+/** The object-space normal of `vertex` as the vertex stage computes it (attribute or position, morphs, skin). */
+function objectNormal(
+  object: Mesh,
+  geometry: BufferGeometry,
+  analytic: boolean,
+  vertex: number,
+  target: Vector3,
+): Vector3 {
+  if (analytic) target.fromBufferAttribute(geometry.getAttribute('position'), vertex);
+  else target.fromBufferAttribute(geometry.getAttribute('normal'), vertex);
+  const morphs = geometry.morphAttributes.normal;
+  const influences = object.morphTargetInfluences;
+  if (!analytic && morphs !== undefined && influences !== undefined) {
+    const sum = influences.reduce((a, b) => a + b, 0);
+    target.multiplyScalar(geometry.morphTargetsRelative ? 1 : 1 - sum);
+    const m = new Vector3();
+    morphs.forEach((attribute, i) => {
+      if (influences[i] !== 0)
+        target.addScaledVector(m.fromBufferAttribute(attribute, vertex), influences[i]);
+    });
+  }
+  const skinned = object as SkinnedMesh;
+  if (skinned.isSkinnedMesh) {
+    const index = geometry.getAttribute('skinIndex');
+    const weight = geometry.getAttribute('skinWeight');
+    const sum = new Matrix4().set(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
+    const bone = new Matrix4();
+    for (let j = 0; j < 4; j++) {
+      const w = weight.getComponent(vertex, j);
+      if (w === 0) continue;
+      const b = index.getComponent(vertex, j);
+      bone.multiplyMatrices(skinned.skeleton.bones[b].matrixWorld, skinned.skeleton.boneInverses[b]);
+      for (let e = 0; e < 16; e++) sum.elements[e] += w * bone.elements[e];
+    }
+    const skin = new Matrix4().multiplyMatrices(skinned.bindMatrixInverse, sum).multiply(skinned.bindMatrix);
+    target.transformDirection(skin).multiplyScalar(1); // direction (w = 0), then normalised by shade()
+  }
+  return target;
+}
+
+/**
+ * Render `config` with ShadingMaterial and with three's MeshPhongMaterial (the oracle of where and whether
+ * something is drawn: same objects, instances, bones, morphs, fog, clipping, depth buffer), compare the
+ * coverage away from the oracle's edges, and compare every interior pixel with shade() on the CPU (three's
+ * CPU deformation: Mesh.getVertexPosition with morph targets and bones; instance matrices; fog in the output
+ * colour space) or, for `constant`, with the oracle's colour (its emissive is ka·Ia).
+ */
+function sceneCompare(config: SceneConfig): SceneStats {
+  const size = config.size ?? 192;
+  const setup = buildScene(config);
+  const { scene, object, geometry, material, light, instances, tints, hull } = setup;
+  const camera = makeCamera(false);
+  const [r, restore] = sceneRenderer(config, size);
+  const ours = readPixels(r, scene, camera, size);
+  // The oracle: three's own material on the same objects.
+  const oracle = new MeshPhongMaterial(
+    config.constant
+      ? { color: 0x000000, specular: 0x000000, emissive: new Color().copy(material.ka), shininess: 0 }
+      : { color: new Color().copy(material.kd) },
+  );
+  oracle.clippingPlanes = material.clippingPlanes;
+  oracle.clipIntersection = material.clipIntersection;
+  oracle.toneMapped = material.toneMapped;
+  object.material = oracle;
+  // The impostor's oracle is a fine sphere mesh (level 7) with the same transform.
+  if (config.object === 'impostor') object.geometry = sphereGeometry(7, true);
+  let oracleHull: MeshBasicMaterial | null = null;
+  if (hull !== null) {
+    // The hull of a unit sphere with normals = positions is the sphere scaled by 1 + thickness.
+    oracleHull = new MeshBasicMaterial({ color: 0x000000, side: BackSide });
+    oracleHull.clippingPlanes = material.clippingPlanes;
+    oracleHull.clipIntersection = material.clipIntersection;
+    hull.material = oracleHull;
+    hull.scale.setScalar(1 + (config.outline ?? 0));
+    hull.updateMatrixWorld();
+  }
+  const theirs = readPixels(r, scene, camera, size);
+  restore();
+  oracle.dispose();
+  oracleHull?.dispose();
+  const isClear = (p: Uint8Array, i: number) => p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 255;
+  const stats: SceneStats = {
+    covered: 0,
+    oracleCovered: 0,
+    coverageCompared: 0,
+    coverageMismatches: 0,
+    oracleCompared: 0,
+    oracleMaxError: 0,
+    compared: 0,
+    maxError: 0,
+    mismatches: 0,
+    darkPixels: 0,
+    black: 0,
+    clippedBlack: 0,
+    worst: null,
+  };
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      const i = y * size + x;
+      const a = !isClear(ours, i);
+      const b = !isClear(theirs, i);
+      if (a) stats.covered++;
+      if (b) stats.oracleCovered++;
+      if (a && Math.max(ours[4 * i], ours[4 * i + 1], ours[4 * i + 2]) < 24) {
+        if (hull === null) stats.darkPixels++;
+      }
+      let uniform = x > 0 && y > 0 && x < size - 1 && y < size - 1;
+      for (let dy = -1; uniform && dy <= 1; dy++)
+        for (let dx = -1; uniform && dx <= 1; dx++)
+          if (!isClear(theirs, i + dy * size + dx) !== b) uniform = false;
+      if (!uniform) continue;
+      stats.coverageCompared++;
+      if (a !== b) stats.coverageMismatches++;
+      if (config.constant && a && b) {
+        stats.oracleCompared++;
+        const err = Math.max(
+          Math.abs(ours[4 * i] - theirs[4 * i]),
+          Math.abs(ours[4 * i + 1] - theirs[4 * i + 1]),
+          Math.abs(ours[4 * i + 2] - theirs[4 * i + 2]),
+        );
+        stats.oracleMaxError = Math.max(stats.oracleMaxError, err);
+      }
+    }
+  }
+  // Outline pixels on the clipped side (where every plane, or with clipIntersection some plane, clips).
+  const planes = (config.clip?.planes ?? []).map(([px, py, pz, c]) => new Plane(new Vector3(px, py, pz), c));
+  const clipped = (p: Vector3): boolean => {
+    if (planes.length === 0) return false;
+    const out = planes.map((plane) => plane.distanceToPoint(p) < 0);
+    return config.clip?.intersection ? out.every(Boolean) : out.some(Boolean);
+  };
+  if (config.constant) {
+    setup.dispose();
+    return stats;
+  }
+  // The world-space soup of every instance: corners, their normals, each face's centroid, normal and tint.
+  const index = geometry.index;
+  const corners = index === null ? geometry.getAttribute('position').count : index.count;
+  const triangles = (corners / 3) * instances.length;
+  const world = new Float64Array(9 * triangles);
+  const normals = new Float64Array(9 * triangles);
+  const centroids = new Float64Array(3 * triangles);
+  const faceNormals = new Float64Array(3 * triangles);
+  const faceTint = new Float64Array(3 * triangles);
+  const analytic = geometry.getAttribute('normal') === undefined;
+  const p = [new Vector3(), new Vector3(), new Vector3()];
+  const n = new Vector3();
+  const e1 = new Vector3();
+  const e2 = new Vector3();
+  const nm = new Matrix3();
+  const model = new Matrix4();
+  let t = 0;
+  for (let k = 0; k < instances.length; k++) {
+    model.multiplyMatrices(object.matrixWorld, instances[k]);
+    computeNormalMatrix(model, nm);
+    for (let c = 0; c < corners; c += 3, t++) {
+      for (let j = 0; j < 3; j++) {
+        const vertex = index === null ? c + j : index.getX(c + j);
+        objectPosition(object, geometry, vertex, p[j]);
+        const w = p[j].clone().applyMatrix4(model);
+        world.set([w.x, w.y, w.z], 9 * t + 3 * j);
+        if (config.shading !== 'flat') {
+          objectNormal(object, geometry, analytic, vertex, n).applyMatrix3(nm);
+          const l = n.length();
+          if (l > 0) n.divideScalar(l);
+          normals.set([n.x, n.y, n.z], 9 * t + 3 * j);
+        }
+      }
+      const centroid = p[0].clone().add(p[1]).add(p[2]).divideScalar(3).applyMatrix4(model);
+      centroids.set([centroid.x, centroid.y, centroid.z], 3 * t);
+      e1.subVectors(p[1], p[0]);
+      e2.subVectors(p[2], p[0]);
+      const face = e1.cross(e2).applyMatrix3(nm);
+      faceNormals.set([face.x, face.y, face.z], 3 * t);
+      faceTint.set(tints[k], 3 * t);
+    }
+  }
+  const hits = raycastPixels(world, camera, size, object.matrixWorld.determinant() < 0);
+  const screen = new Float64Array(6 * triangles);
+  const v = new Vector3();
+  for (let q = 0; q < 3 * triangles; q++) {
+    v.fromArray(world, 3 * q).project(camera);
+    screen[2 * q] = ((v.x + 1) / 2) * size;
+    screen[2 * q + 1] = ((v.y + 1) / 2) * size;
+  }
+  const edgeDistance = (tri: number, x: number, y: number): number => {
+    let d = Number.POSITIVE_INFINITY;
+    for (let k = 0; k < 3; k++) {
+      const i0 = 3 * tri + k;
+      const i1 = 3 * tri + ((k + 1) % 3);
+      const ex = screen[2 * i1] - screen[2 * i0];
+      const ey = screen[2 * i1 + 1] - screen[2 * i0 + 1];
+      const len = Math.hypot(ex, ey);
+      if (!(len > 0)) return 0;
+      d = Math.min(d, Math.abs((x - screen[2 * i0]) * ey - (y - screen[2 * i0 + 1]) * ex) / len);
+    }
+    return d;
+  };
+  const e = eyeOf(camera, new Vector4());
+  const eye = [e.x, e.y, e.z, e.w];
+  const m: ShadeMaterial = {
+    ka: material.ka.toArray(),
+    kd: material.kd.toArray(),
+    ks: material.ks.toArray(),
+    shininess: material.shininess,
+    lighting: material.lighting,
+  };
+  const lights: ShadeLight[] = [
+    {
+      position: light.getWorldPosition(new Vector3()).toArray(),
+      ambient: light.ambient.toArray(),
+      diffuse: light.diffuse.toArray(),
+      specular: light.specular.toArray(),
+    },
+  ];
+  const fogColor = new Color(0x8080c0);
+  const fogOut = config.linearOutput ? fogColor.toArray() : fogColor.toArray().map(srgb);
+  const view = camera.matrixWorldInverse;
+  const linear: [number, number, number] = [0, 0, 0];
+  const corner: [number, number, number] = [0, 0, 0];
+  const normal = [0, 0, 0];
+  const hit = new Vector3();
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      const i = y * size + x;
+      const tri = hits.triangle[i];
+      if (tri < 0) continue;
+      // Away from silhouettes and clipped surfaces: all 8 neighbours hit an unclipped surface too.
+      let interior = x > 0 && y > 0 && x < size - 1 && y < size - 1;
+      for (let dy = -1; interior && dy <= 1; dy++)
+        for (let dx = -1; interior && dx <= 1; dx++) {
+          const j = i + dy * size + dx;
+          if (hits.triangle[j] < 0 || clipped(hit.fromArray(hits.point, 3 * j))) interior = false;
+        }
+      if (!interior) continue;
+      const [b0, b1, b2] = hits.bary.subarray(3 * i, 3 * i + 3);
+      const position = hits.point.subarray(3 * i, 3 * i + 3);
+      const tint = faceTint.subarray(3 * tri, 3 * tri + 3);
+      if (config.shading === 'phong') {
+        for (let k = 0; k < 3; k++)
+          normal[k] =
+            b0 * normals[9 * tri + k] + b1 * normals[9 * tri + 3 + k] + b2 * normals[9 * tri + 6 + k];
+        shade({ position, normal, eye, tint }, m, lights, linear);
+      } else if (config.shading === 'gouraud') {
+        linear.fill(0);
+        for (let j = 0; j < 3; j++) {
+          shade(
+            {
+              position: world.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3),
+              normal: normals.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3),
+              eye,
+              tint,
+            },
+            m,
+            lights,
+            corner,
+          );
+          const bj = j === 0 ? b0 : j === 1 ? b1 : b2;
+          for (let k = 0; k < 3; k++) linear[k] += bj * corner[k];
+        }
+      } else {
+        if (edgeDistance(tri, x + 0.5, y + 0.5) < 0.1) continue;
+        shade(
+          {
+            position: centroids.subarray(3 * tri, 3 * tri + 3),
+            normal: faceNormals.subarray(3 * tri, 3 * tri + 3),
+            eye,
+            tint,
+          },
+          m,
+          lights,
+          linear,
+        );
+      }
+      // Output: the colour space's transfer, then three's fog blend (in the output space), then the 8-bit write.
+      const depth = -hit.fromArray(position).applyMatrix4(view).z;
+      const f = config.fog ? fogFactor(config.fog, depth) : 0;
+      if (
+        config.fog &&
+        'near' in config.fog &&
+        Math.abs(depth - config.fog.near) < 0.02 &&
+        !(config.fog.far > config.fog.near)
+      )
+        continue; // a step fog: either side at its depth
+      let err = 0;
+      const expected = [0, 0, 0];
+      for (let k = 0; k < 3; k++) {
+        const out = config.linearOutput ? Math.max(linear[k], 0) : srgb(linear[k]);
+        const mixed = out + (fogOut[k] - out) * f;
+        expected[k] = Math.round(Math.min(Math.max(mixed, 0), 1) * 255);
+        err = Math.max(err, Math.abs(expected[k] - ours[4 * i + k]));
+      }
+      stats.compared++;
+      if (err > stats.maxError) {
+        stats.maxError = err;
+        stats.worst = {
+          x,
+          y,
+          gpu: [ours[4 * i], ours[4 * i + 1], ours[4 * i + 2]],
+          cpu: expected,
+          triangle: tri,
+        };
+      }
+      if (err > 2) stats.mismatches++;
+    }
+  }
+  if (hull !== null) {
+    // Pure black (the outline's colour) where the planes clip the world point under the pixel's ray at the
+    // sphere's depth plane z = 0 … the ring lies at |p| ≈ 1 + thickness: test the ray's point nearest the origin.
+    const ray = new Raycaster();
+    const ndc = new Vector2();
+    for (let y = 0; y < size; y++) {
+      for (let x = 0; x < size; x++) {
+        const i = y * size + x;
+        if (!(ours[4 * i] === 0 && ours[4 * i + 1] === 0 && ours[4 * i + 2] === 0)) continue;
+        stats.black++;
+        ndc.set(((x + 0.5) / size) * 2 - 1, ((y + 0.5) / size) * 2 - 1);
+        ray.setFromCamera(ndc, camera);
+        ray.ray.closestPointToPoint(new Vector3(), hit);
+        if (clipped(hit)) stats.clippedBlack++;
+      }
+    }
+  }
+  setup.dispose();
+  return stats;
+}
+
+/**
+ * Turn three's scene features on and off `flips` times at random (fixed seed), rendering after each flip, with
+ * one ShadingMaterial: the object (a Mesh, InstancedMesh, BatchedMesh, SkinnedMesh or morphed Mesh), fog,
+ * clipping and tone mapping; report the live program count.
+ */
+function flipFeatures(flips: number): { before: number; after: number; max: number; variants: number } {
+  const size = 32;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const material = new ShadingMaterial({ lights: [light] });
+  const geometry = sphereGeometry(2, true);
+  const mesh = new Mesh(geometry, material);
+  const instanced = new InstancedMesh(geometry, material, 2);
+  instanced.setMatrixAt(1, new Matrix4().makeTranslation(1, 0, 0));
+  const batched = new BatchedMesh(1, geometry.getAttribute('position').count, 0, material);
+  batched.addInstance(batched.addGeometry(geometry));
+  const skinned = new SkinnedMesh(skinnedCylinder(), material);
+  const bone = new Bone();
+  skinned.add(bone);
+  skinned.bind(new Skeleton([bone, new Bone()]));
+  const morphed = new Mesh(morphedSphere(2), material);
+  morphed.morphTargetInfluences = [0.5];
+  const objects = [mesh, instanced, batched, skinned, morphed];
+  const scene = new Scene();
+  scene.add(light, ...objects);
+  const fog = new Fog(0x8080c0, 1, 5);
+  const plane = [new Plane(new Vector3(1, 0, 0), 0)];
+  renderer.localClippingEnabled = true;
+  const camera = makeCamera(false);
+  const show = (k: number) =>
+    objects.forEach((o, i) => {
+      o.visible = i === k;
+    });
+  show(0);
+  renderer.render(scene, camera);
+  const before = renderer.info.programs?.length ?? 0;
+  let max = before;
+  const variants = new Set<string>();
+  let seed = 20261123;
+  const random = () => {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    return seed / 2147483648;
+  };
+  for (let i = 0; i < flips; i++) {
+    const k = Math.floor(random() * objects.length);
+    show(k);
+    scene.fog = random() < 0.5 ? fog : null;
+    material.clippingPlanes = random() < 0.5 ? plane : [];
+    renderer.toneMapping = random() < 0.5 ? ACESFilmicToneMapping : NoToneMapping;
+    renderer.render(scene, camera);
+    variants.add(`${k} ${scene.fog !== null} ${material.clippingPlanes.length} ${renderer.toneMapping}`);
+    max = Math.max(max, renderer.info.programs?.length ?? 0);
+  }
+  const after = renderer.info.programs?.length ?? 0;
+  renderer.toneMapping = NoToneMapping;
+  renderer.localClippingEnabled = false;
+  material.dispose();
+  return { before, after, max, variants: variants.size };
+}
+
+const api = { compare, flipPrograms, sharedMaterial, outline, programSources, sceneCompare, flipFeatures };
 declare global {
   interface Window {
     materialHarness: typeof api;
