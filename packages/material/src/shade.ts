@@ -188,7 +188,17 @@ export function shade(
 }
 
 /** three's fog, as `fogFactor` reads it: a `Fog` (`near`, `far`) or a `FogExp2` (`density`). */
-export type FogParameters = { readonly near: number; readonly far: number } | { readonly density: number };
+export type FogParameters =
+  | {
+      /** Fog: the view depth where the fog starts, world units. */
+      readonly near: number;
+      /** Fog: the view depth where everything is fog colour, world units. */
+      readonly far: number;
+    }
+  | {
+      /** FogExp2: the density, per world unit. */
+      readonly density: number;
+    };
 
 /**
  * How much of the fog colour a point at view depth `depth` (distance along the camera's axis) gets, in 0 … 1,
