@@ -12,6 +12,7 @@ export default defineConfig({
       '@shadelab/trackball': src('trackball'),
       '@shadelab/material': src('material'),
       '@shadelab/reference': src('reference'),
+      '@shadelab/playwright': src('playwright'),
     },
   },
   test: {

@@ -3,6 +3,7 @@
  * config preset that names baselines without the platform. The matchers are in `@shadelab/playwright/test`
  * (`toHaveRendered`, `toMatchScreenshotAcrossGpus`) and `@shadelab/playwright/reference` (`toMatchReference`).
  * @module @shadelab/playwright
+ * @mergeModuleWith <project>
  */
 export {
   type ChromiumChecks,

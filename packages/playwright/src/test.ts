@@ -21,7 +21,7 @@ import { toMatchScreenshotAcrossGpus } from './toMatchScreenshotAcrossGpus.js';
 export type { CanvasState } from './canvasContexts.js';
 export { recordCanvasContexts } from './canvasContexts.js';
 export { compareNeighbourhood, type NeighbourhoodComparison } from './compareNeighbourhood.js';
-export { GPU_TOLERANCE, type GpuTolerance } from './gpuTolerance.js';
+export { GPU_TOLERANCE, GPU_TOLERANCE_HARD_EDGES, type GpuTolerance } from './gpuTolerance.js';
 export { type PictureSummary, summarisePicture } from './picture.js';
 export { decodePng, encodePng, flipRows, type RgbaImage } from './png.js';
 export { type RenderedFrame, type RenderedOptions, readCanvas, waitForFirstFrame } from './toHaveRendered.js';

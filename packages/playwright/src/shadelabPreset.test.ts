@@ -1,0 +1,58 @@
+import { describe, expect, it } from 'vitest';
+import { chromiumArgs, DEBIAN_CHROMIUM, webgpuArgs } from './chromium.js';
+import { SNAPSHOT_PATH_TEMPLATE, shadelabPreset, shadelabUse } from './shadelabPreset.js';
+
+const OWN = '/home/u/.cache/ms-playwright/chromium-1/chrome-linux/chrome';
+
+/** The lookup's checks with a fake file system: `present` files exist. */
+const checks = (env: Record<string, string | undefined>, present: string[]) => ({
+  env,
+  exists: (path: string) => present.includes(path),
+  playwrightPath: () => OWN,
+});
+
+describe('shadelabUse', () => {
+  it("launches Debian's Chromium with the deterministic flags, one device pixel per CSS pixel", () => {
+    expect(shadelabUse({ checks: checks({}, [DEBIAN_CHROMIUM, OWN]) })).toEqual({
+      browserName: 'chromium',
+      launchOptions: { executablePath: DEBIAN_CHROMIUM, args: chromiumArgs },
+      deviceScaleFactor: 1,
+    });
+    expect(chromiumArgs).toContain('--use-angle=swiftshader');
+    expect(chromiumArgs).toContain('--enable-unsafe-swiftshader');
+  });
+
+  it("SHADELAB_CHROMIUM first; Playwright's own browser (no executablePath: Playwright finds it) last", () => {
+    const named = shadelabUse({
+      checks: checks({ SHADELAB_CHROMIUM: '/opt/chrome' }, ['/opt/chrome', DEBIAN_CHROMIUM]),
+    });
+    expect(named.launchOptions.executablePath).toBe('/opt/chrome');
+    const own = shadelabUse({ checks: checks({}, [OWN]) });
+    expect(own.launchOptions).toEqual({ args: chromiumArgs });
+  });
+
+  it('adds the WebGPU flag and the flags given, after the deterministic ones', () => {
+    const use = shadelabUse({ webgpu: true, args: ['--lang=fr'], checks: checks({}, [DEBIAN_CHROMIUM]) });
+    expect(use.launchOptions.args).toEqual([...chromiumArgs, ...webgpuArgs, '--lang=fr']);
+    expect(webgpuArgs).toEqual(['--enable-unsafe-webgpu']);
+  });
+
+  it("throws the lookup's messages: a SHADELAB_CHROMIUM that does not exist, or no Chromium anywhere", () => {
+    expect(() =>
+      shadelabUse({ checks: checks({ SHADELAB_CHROMIUM: '/opt/missing' }, [DEBIAN_CHROMIUM]) }),
+    ).toThrow('SHADELAB_CHROMIUM is set to /opt/missing, which does not exist');
+    expect(() => shadelabUse({ checks: checks({}, []) })).toThrow(
+      `no Chromium for Playwright. Looked at $SHADELAB_CHROMIUM (not set), ${DEBIAN_CHROMIUM}, Playwright's own browser (${OWN}). Install one (apt-get install chromium, or npx playwright install chromium) or set SHADELAB_CHROMIUM to a Chromium binary.`,
+    );
+  });
+});
+
+describe('shadelabPreset', () => {
+  it('names baselines without the platform, compares screenshots exactly and uses shadelabUse', () => {
+    const config = shadelabPreset({ checks: checks({}, [DEBIAN_CHROMIUM]) });
+    expect(config.snapshotPathTemplate).toBe('{testDir}/__screenshots__/{testFilePath}/{arg}{ext}');
+    expect(SNAPSHOT_PATH_TEMPLATE).not.toMatch(/platform|projectName/);
+    expect(config.expect).toEqual({ toHaveScreenshot: { maxDiffPixels: 0, threshold: 0 } });
+    expect(config.use).toEqual(shadelabUse({ checks: checks({}, [DEBIAN_CHROMIUM]) }));
+  });
+});
