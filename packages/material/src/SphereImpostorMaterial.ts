@@ -36,7 +36,10 @@ const _viewport = /* @__PURE__ */ new Vector4();
  * of P·V·M and D = diag(1, 1, 1, −1)), widened by one pixel; when the eye plane touches the ellipsoid (camera
  * inside or beside it) the quad covers the whole viewport. Only the front surface is drawn, clipped by the
  * near and far planes like a mesh (no caps). Depth is written in the renderer's depth mode (standard,
- * logarithmic or reversed-Z), as three's materials write theirs. A singular model matrix (a zero scale) draws nothing
+ * logarithmic or reversed-Z), as three's materials write theirs. The hit is clipped (`clippingPlanes`, the
+ * renderer's), fogged (`scene.fog`, `fog`) and tone-mapped (`toneMapped`) by the same chunks as a mesh, at its
+ * exact view position; an `InstancedMesh` of impostors is not supported (one sphere per object). A singular
+ * model matrix (a zero scale) draws nothing
  * (unlike a mesh, which draws the flattened shape). Writing depth disables early depth tests, so
  * overdraw costs a full fragment each.
  *
