@@ -1,7 +1,7 @@
 // What a canvas draws with, seen from the page. Both functions run in the browser (Playwright serialises them):
 // they use nothing from this module's scope.
 
-/** The context of a canvas, as {@link inspectCanvas} sees it. */
+/** The context of a canvas, as `toHaveRendered` sees it in the page. */
 export interface CanvasState {
   /** The element's tag name, lower case (`'canvas'` for a canvas). */
   readonly tag: string;

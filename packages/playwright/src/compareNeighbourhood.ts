@@ -66,8 +66,12 @@ function neighbourhoodRange(
  * antialiased edge (a blend of the two sides) all pass; a colour off by more than `maxChannelDiff` codes, or
  * geometry moved farther, fails.
  *
- * @param radiusPx neighbourhood radius in pixels, an integer 0 … 8. @default 1
- * @param maxChannelDiff codes a pixel may lie outside the range, 0 … 255 (only counts `failingPixels`). @default 0
+ * @param a - One picture.
+ * @param b - The other picture, of the same size.
+ * @param options - The comparison's tolerances.
+ * @param options.radiusPx - Neighbourhood radius in pixels, an integer 0 … 8. Default 1.
+ * @param options.maxChannelDiff - Codes a pixel may lie outside the range, 0 … 255 (only counts `failingPixels`).
+ *   Default 0.
  * @throws RangeError when the sizes differ or a parameter is out of range.
  */
 export function compareNeighbourhood(
