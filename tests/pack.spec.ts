@@ -9,9 +9,10 @@
 import { spawn } from 'node:child_process';
 import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, normalize } from 'node:path';
+import { join, normalize, posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, type Page, test } from '@playwright/test';
+import { markdownLinks } from '../scripts/check-links.mjs';
 import { type PackedPackage, packPackages } from '../scripts/pack.mjs';
 import { collectBlocks } from '../scripts/snippets.mjs';
 import {
@@ -231,9 +232,26 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
     );
     for (const f of p.files) {
       expect(f, p.name).toMatch(
-        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.ts)$/,
+        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.ts|docs\/(api\/)?[\w.@-]+\.md)$/,
       );
       expect(f, p.name).not.toMatch(/\.test\.|test-util|tsbuildinfo/);
+    }
+    // The guide and the generated API reference ship in the package, and every link the README and the guide
+    // make inside the package resolves in the tarball (links out of it, such as BENCHMARKS.md, are the
+    // repository's: scripts/check-links.mjs checks those).
+    expect(p.files, p.name).toEqual(expect.arrayContaining(['docs/guide.md', 'docs/api/README.md']));
+    for (const page of p.files.filter((f) => f === 'README.md' || f.startsWith('docs/'))) {
+      const folder = posix.dirname(page);
+      const text = readFileSync(join(repo, 'packages', p.name.split('/')[1], page), 'utf8');
+      for (const { target } of markdownLinks(text)) {
+        if (/^[a-z][a-z\d+.-]*:/i.test(target) || target.startsWith('#')) continue;
+        const path = posix.normalize(posix.join(folder, decodeURI(target.replace(/[#?].*$/, ''))));
+        if (path.startsWith('../')) continue;
+        expect(
+          p.files.some((f) => f === path || f.startsWith(`${path.replace(/\/$/, '')}/`)),
+          `${p.name}: ${page} → ${target}`,
+        ).toBe(true);
+      }
     }
     // Dependencies between our packages are plain ranges that the sibling being released satisfies.
     const manifest = JSON.parse(

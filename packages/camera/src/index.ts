@@ -1,3 +1,9 @@
+/**
+ * The lecture's camera, `lookAt(eye, at, up)`, `setPerspective`, `setOrthographic` and the frame e, u, v, w,
+ * as a three.js `Camera`; `CameraMovement`, its keyboard and pointer handlers; the renderer's depth modes.
+ * @module @shadelab/camera
+ * @mergeModuleWith <project>
+ */
 export type { CameraOptions, ProjectionType } from './Camera.js';
 export { Camera } from './Camera.js';
 export type { CameraFrame } from './CameraFrame.js';

@@ -42,6 +42,9 @@ export interface ImageError {
  * Measure an image (e.g. `gl.readPixels` of a GPU render, RGBA, rows bottom-up) against a
  * {@link ReferenceImage} of the same size: colour error (RMSE and max, 8-bit sRGB) over the interior and
  * silhouette error in pixels.
+ * @param pixels - The image under test: RGBA, 8-bit sRGB, rows bottom-up, width·height pixels.
+ * @param reference - What {@link renderReference} returned for the same scene and size.
+ * @param options - The background colour and the interior margin.
  *
  * @throws RangeError when `pixels` does not hold width·height RGBA pixels, or for a bad option.
  */

@@ -1,3 +1,9 @@
+/**
+ * The exact answer: a CPU ray-cast renderer of the lit analytic sphere (an ellipsoid under the model matrix)
+ * and the image metrics that score a render against it. Three-free.
+ * @module @shadelab/reference
+ * @mergeModuleWith <project>
+ */
 export {
   type CompareToReferenceOptions,
   compareToReference,

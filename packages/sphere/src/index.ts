@@ -4,6 +4,7 @@
  * memory estimate. Detail from an error budget is in `@shadelab/sphere/detail`, vertex normals of any indexed
  * mesh in `@shadelab/sphere/normals`.
  * @module @shadelab/sphere
+ * @mergeModuleWith <project>
  */
 export { estimateSphereBytes } from './estimateSphereBytes.js';
 export { SPHERE_BASES, type SphereBase } from './SphereBase.js';

@@ -43,6 +43,7 @@ function checkSizes(fn: string, viewportHeightPx: unknown, radius: unknown): voi
  * changes faster than the radius near the camera (the radius grows like 1/√(d² − R²), its error like
  * d²/(d² − R²)^{3/2}). Choose detail with {@link silhouetteErrorScalePx}, which bounds the error.
  *
+ * @param options - The camera, the sphere's world matrix, the viewport height (pixels) and the radius.
  * @returns pixels ≥ 0; `Infinity` when the eye is inside or on the sphere (d ≤ R).
  * @throws RangeError naming the option for a non-positive or non-finite `viewportHeightPx` or `radius`.
  */
@@ -93,6 +94,7 @@ const _view = /* @__PURE__ */ new Matrix4();
  * on-screen radius with respect to R: 1/cos² of the tangent cone's half-angle larger than the radius. For an
  * orthographic camera it is (H/2)·P₁₁ times the ellipsoid's largest radius across the view (exact).
  *
+ * @param options - The camera, the sphere's world matrix, the viewport height (pixels) and the radius.
  * @returns pixels ≥ 0; `Infinity` when the eye is inside or on the ellipsoid, or when part of the ellipsoid's
  * outline is at or behind the eye plane (its image is unbounded); 0 when all of it is behind the eye.
  * @throws RangeError naming the option for a non-positive or non-finite `viewportHeightPx` or `radius`.
