@@ -52,6 +52,7 @@ export class OutlineMaterial extends ShaderMaterial {
   override clipping = true;
   readonly #color = new Color(0, 0, 0);
 
+  /** @param options - The thickness and the colour (see {@link OutlineMaterialOptions}). */
   constructor({ thickness = 0.03, color = 0 }: OutlineMaterialOptions = {}) {
     super({
       vertexShader,

@@ -47,6 +47,10 @@ export class PhongLight extends Object3D {
   readonly #specular = new Color(0.8, 0.8, 0.8);
   #attenuation: Attenuation = NO_ATTENUATION;
 
+  /**
+   * @param options - Ia, Id, Is and the attenuation; each one omitted is the lecture's (see
+   *   {@link PhongLightOptions}).
+   */
   constructor({ ambient, diffuse, specular, attenuation }: PhongLightOptions = {}) {
     super();
     if (ambient !== undefined) this.ambient = ambient;

@@ -139,6 +139,10 @@ export class ShadingMaterial extends ShaderMaterial {
   #flatCorners = false;
   #attenuation = false;
 
+  /**
+   * @param options - Shading, lighting, reflectances and lights; each one omitted takes its default (see
+   *   {@link ShadingMaterialOptions}).
+   */
   constructor({
     shading = 'phong',
     lighting = 'phong',
