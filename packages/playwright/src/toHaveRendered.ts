@@ -38,15 +38,31 @@ interface Look {
   problem?: string;
 }
 
+/** The attribute that marks the canvas being read, for the screenshot's style. */
+const CAPTURE = 'data-shadelab-capture';
+
 /**
- * The canvas's picture as it is on screen: a screenshot of the element, decoded (RGBA, rows top-down). With
- * `deviceScaleFactor: 1` and a canvas whose CSS size is its drawing buffer's, one pixel per canvas pixel.
+ * The canvas's picture as it is on screen: a screenshot of the element, decoded (RGBA, rows top-down). Every
+ * other element is hidden while it is taken (`visibility: hidden`, which keeps the layout), so text or controls
+ * drawn over the canvas are not in it. With `deviceScaleFactor: 1` and a canvas whose CSS size is its drawing
+ * buffer's, one pixel per canvas pixel.
  */
 export async function readCanvas(
   canvas: Locator,
   { timeout }: { timeout?: number } = {},
 ): Promise<RgbaImage> {
-  return decodePng(await canvas.screenshot({ timeout, animations: 'allow', caret: 'initial' }));
+  await canvas.evaluate((element, name) => element.setAttribute(name, ''), CAPTURE, { timeout });
+  try {
+    const png = await canvas.screenshot({
+      timeout,
+      animations: 'allow',
+      caret: 'initial',
+      style: `*{visibility:hidden!important}[${CAPTURE}]{visibility:visible!important}`,
+    });
+    return decodePng(png);
+  } finally {
+    await canvas.evaluate((element, name) => element.removeAttribute(name), CAPTURE).catch(() => undefined);
+  }
 }
 
 const CONTEXT_NAMES: Record<string, string> = {
