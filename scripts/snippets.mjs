@@ -9,6 +9,8 @@
 //   ```ts partial         needs the context in the `<!-- context … -->` comment right above the fence
 //   ```ts partial=NAME    needs the context in a `<!-- context=NAME … -->` comment anywhere in the same file
 //   ```ts run=SCENE       complete, and run in Chromium by tests/snippets.spec.ts, its picture checked as SCENE
+//   ```ts file=PATH       a file of an app the Markdown builds (src/scene.ts): checked at PATH beside the other
+//                         file= blocks of the same Markdown, so that relative imports between them resolve
 // A context is code (imports, `declare const` lines) put before the block for the type check only.
 // See DEVELOPERS.md, "Code in docs". tests/snippets.spec.ts and tests/pack.spec.ts import `collectBlocks`.
 import { spawnSync } from 'node:child_process';
@@ -45,6 +47,7 @@ const LANGUAGES = /** @type {const} */ ({
  * @property {number} indent columns of indentation removed from each line
  * @property {string | true | undefined} partial `true` for `partial`, NAME for `partial=NAME`
  * @property {string | undefined} run SCENE of `run=SCENE`
+ * @property {string | undefined} path PATH of `file=PATH`: the block is that file of an app (relative, with `/`)
  * @property {string} heading the nearest Markdown heading above the block ('' if none)
  * @property {Context | undefined} context the context it is checked with
  */
@@ -122,6 +125,7 @@ export function extractBlocks(text, file) {
           indent: pad.length,
           partial: undefined,
           run: undefined,
+          path: undefined,
           heading,
           context: undefined,
         };
@@ -130,9 +134,16 @@ export function extractBlocks(text, file) {
           if (key === 'partial' && value === undefined) block.partial = true;
           else if (key === 'partial' && value) block.partial = value;
           else if (key === 'run' && value) block.run = value;
+          else if (
+            key === 'file' &&
+            value &&
+            /^[\w.-]+(\/[\w.-]+)*$/.test(value) &&
+            !/(^|\/)\.\.?(\/|$)/.test(value)
+          )
+            block.path = value;
           else
             problems.push(
-              `${file}:${i + 1}: unknown mark '${word}' in \`\`\`${info.trim()} (allowed: partial, partial=NAME, run=SCENE)`,
+              `${file}:${i + 1}: unknown mark '${word}' in \`\`\`${info.trim()} (allowed: partial, partial=NAME, run=SCENE, file=PATH)`,
             );
         }
         if (block.run && block.partial)
@@ -220,7 +231,10 @@ export function collectBlocks({ dir = root, files = markdownFiles(dir) } = {}) {
  * @param {Block} block
  */
 export function moduleName(block) {
-  return `${block.file.replace(/^(\.\.\/)+/, '')}-${block.line}.${block.ext}`;
+  const md = block.file.replace(/^(\.\.\/)+/, '');
+  // A file= block sits at its path in a folder of its Markdown's own, beside the others of that Markdown.
+  if (block.path !== undefined) return `${md}.files/${block.path}`;
+  return `${md}-${block.line}.${block.ext}`;
 }
 
 /** Compiler options: what a fresh Vite + TypeScript app has that matters here, with every check on. */
@@ -254,6 +268,7 @@ export function checkBlocks(blocks, outDir) {
   const byModule = new Map();
   for (const block of blocks) {
     const name = moduleName(block);
+    if (byModule.has(name)) throw new Error(`${block.file}:${block.line}: a second block for ${name}`);
     byModule.set(name, block);
     const path = join(outDir, name);
     mkdirSync(dirname(path), { recursive: true });
@@ -312,7 +327,7 @@ export function checkBlocks(blocks, outDir) {
 
 /** @param {Block} b */
 export const describeBlock = (b) =>
-  `${b.file}:${b.line} \`\`\`${b.lang}${b.partial === true ? ' partial' : b.partial ? ` partial=${b.partial}` : ''}${b.run ? ` run=${b.run}` : ''}`;
+  `${b.file}:${b.line} \`\`\`${b.lang}${b.partial === true ? ' partial' : b.partial ? ` partial=${b.partial}` : ''}${b.run ? ` run=${b.run}` : ''}${b.path ? ` file=${b.path}` : ''}`;
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
   const args = process.argv.slice(2);

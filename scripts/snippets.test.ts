@@ -121,4 +121,26 @@ describe('checkBlocks', () => {
     const blocks = extractBlocks('```ts\nexport const a: number = Math.PI;\n```\n', 'ok.md');
     expect(checkBlocks(blocks, out).errors).toEqual([]);
   });
+
+  test('file=PATH blocks are the files of one app: relative imports between them resolve; errors keep their lines', () => {
+    const app = [
+      '```ts file=src/scene.ts',
+      'export const size: number = 400;',
+      '```',
+      '',
+      '```ts file=tests/scene.spec.ts',
+      "import { size } from '../src/scene';",
+      'const label: string = size;',
+      '```',
+      '',
+    ].join('\n');
+    const blocks = extractBlocks(app, 'app.md');
+    expect(blocks.map((b) => b.path)).toEqual(['src/scene.ts', 'tests/scene.spec.ts']);
+    expect(checkBlocks(blocks, out).errors).toEqual([
+      expect.stringMatching(/^app\.md:7:7: error TS2322: Type 'number' is not assignable to type 'string'/),
+    ]);
+    expect(() => extractBlocks('```ts file=../outside.ts\na;\n```\n', 'f.md')).toThrow(
+      "f.md:1: unknown mark 'file=../outside.ts'",
+    );
+  });
 });
