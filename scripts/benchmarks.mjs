@@ -49,6 +49,7 @@ export const SOURCES = [
       'SHADELAB_FIRST_FRAME_JSON=bench/results/playground-first-frame.json CI=1 npx playwright test tests/playground-perf.spec.ts',
   },
   { name: 'reliability', writer: 'bench/reliability.bench.mjs', command: 'npm run bench -- reliability' },
+  { name: 'rasterisers', writer: 'bench/rasterisers.bench.mjs', command: 'npm run bench -- rasterisers' },
 ];
 
 // ── Formatting ─────────────────────────────────────────────────────────────────────────────────────────────
@@ -820,6 +821,44 @@ function reliability(r) {
   ];
 }
 
+/** @param {any} r @returns {string[]} */
+function rasterisers(r) {
+  /** @param {any} t */
+  const tol = (t) =>
+    `${t.maxChannelDiff} codes beyond the ${2 * t.radiusPx + 1} × ${2 * t.radiusPx + 1} range, ${t.maxDiffPixels} pixels beyond`;
+  return [
+    '## Rasteriser variation',
+    '',
+    fromLine('rasterisers', r),
+    '',
+    `How far pictures of one scene differ between rasterisers: the measurement behind \`@shadelab/playwright\`'s \`toMatchScreenshotAcrossGpus\` tolerance (a real GPU is not measured: these are the variations that can be produced here). The kit's lecture scene at ${r.size.width} × ${r.size.height}, each pair scored exactly (the largest channel difference, in 8-bit codes, and the pixels that differ) and within a neighbourhood (how far a pixel lies outside the range its 3 × 3 or 5 × 5 neighbourhood spans in the other picture). "Same settings" pairs stand for another GPU drawing the app as it is; the others show what the tolerance does not cover. WebGPURenderer's backends: ${(r.backends ?? []).join(' and ')}, rows ${r.webgpuRows ?? 'not recorded'}. The bench's note: ${r.note}`,
+    '',
+    ...table(
+      [
+        'scene',
+        'pair',
+        'same settings',
+        'max difference',
+        'pixels differing',
+        '3 × 3 excess',
+        '5 × 5 excess',
+      ],
+      'lllrrrr',
+      r.pairs.map((/** @type {any} */ p) => [
+        p.scene,
+        p.pair,
+        p.sameSettings ? 'yes' : 'no',
+        p.maxChannelDiff,
+        int(p.differingPixels),
+        p.maxExcess3x3,
+        p.maxExcess5x5,
+      ]),
+    ),
+    '',
+    `**Tolerances** (the largest 3 × 3 excess of the same-settings pairs): smooth shading (\`GPU_TOLERANCE\`): ${tol(r.tolerance.smooth)}; pictures with hard edges inside them, flat facets and cel bands (\`GPU_TOLERANCE_HARD_EDGES\`): ${tol(r.tolerance.hardEdges)}.`,
+  ];
+}
+
 // ── The page ───────────────────────────────────────────────────────────────────────────────────────────────
 
 /**
@@ -843,6 +882,7 @@ export function renderBenchmarks(results) {
       '- [Speed against accuracy](#speed-against-accuracy) · [Material frame time](#material-frame-time)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
+      '- [Rasteriser variation](#rasteriser-variation)',
     ],
     runs(results),
     section('sphere', sphereBuild, 'Sphere build time'),
@@ -856,6 +896,7 @@ export function renderBenchmarks(results) {
     section('pack', tarballs, 'Tarballs'),
     playground(results['playground-bundle'], results['playground-first-frame']),
     section('reliability', reliability, 'Reliability'),
+    section('rasterisers', rasterisers, 'Rasteriser variation'),
   ];
   return `${parts.map((p) => p.join('\n')).join('\n\n')}\n`;
 }

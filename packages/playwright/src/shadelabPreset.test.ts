@@ -37,6 +37,16 @@ describe('shadelabUse', () => {
     expect(webgpuArgs).toEqual(['--enable-unsafe-webgpu']);
   });
 
+  it('gpu: true leaves SwiftShader out and the GPU block list off, keeping the other flags', () => {
+    const use = shadelabUse({ gpu: true, checks: checks({}, [DEBIAN_CHROMIUM]) });
+    expect(use.launchOptions.args).toEqual([
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--no-first-run',
+      '--ignore-gpu-blocklist',
+    ]);
+  });
+
   it("throws the lookup's messages: a SHADELAB_CHROMIUM that does not exist, or no Chromium anywhere", () => {
     expect(() =>
       shadelabUse({ checks: checks({ SHADELAB_CHROMIUM: '/opt/missing' }, [DEBIAN_CHROMIUM]) }),

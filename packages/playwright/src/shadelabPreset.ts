@@ -14,8 +14,17 @@ import {
  */
 export const SNAPSHOT_PATH_TEMPLATE = '{testDir}/__screenshots__/{testFilePath}/{arg}{ext}';
 
+/** The flags that select SwiftShader, left out with `gpu: true`. */
+const SWIFTSHADER_ARGS = ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'];
+
 /** Options of {@link shadelabUse} and {@link shadelabPreset}. */
 export interface ShadelabPresetOptions {
+  /**
+   * Render on the machine's GPU instead of SwiftShader: the two SwiftShader flags are left out and
+   * `--ignore-gpu-blocklist` is added. Pictures then vary by GPU: compare them with
+   * `toMatchScreenshotAcrossGpus`. @default false
+   */
+  gpu?: boolean;
   /**
    * Also launch Chromium with WebGPU ({@link webgpuArgs}): a WebGPU adapter (SwiftShader's on a machine
    * without a GPU). @default false
@@ -40,20 +49,27 @@ export interface ShadelabUse {
 /**
  * The `use` block for deterministic pictures: Chromium found as {@link lookupChromium} finds it
  * (`$SHADELAB_CHROMIUM`, then `/usr/bin/chromium`, then Playwright's own browser), launched with
- * {@link chromiumArgs} (WebGL on SwiftShader), one device pixel per CSS pixel.
+ * {@link chromiumArgs} (WebGL on SwiftShader; `gpu: true` for the machine's GPU), one device pixel per CSS
+ * pixel.
  *
  * @throws Error when `$SHADELAB_CHROMIUM` names a missing file, or when no Chromium is found (the message
  * lists what was searched and how to install one).
  */
-export function shadelabUse({ webgpu = false, args = [], checks }: ShadelabPresetOptions = {}): ShadelabUse {
+export function shadelabUse({
+  gpu = false,
+  webgpu = false,
+  args = [],
+  checks,
+}: ShadelabPresetOptions = {}): ShadelabUse {
   const browser = lookupChromium(checks);
   if (browser.problem !== undefined) throw new Error(browser.problem);
   if (browser.executable === null) {
     throw new Error(`no Chromium for Playwright. ${describeBrowserSearch(browser)}`);
   }
-  const launchOptions: LaunchOptions = {
-    args: [...chromiumArgs, ...(webgpu ? webgpuArgs : []), ...args],
-  };
+  const base = gpu
+    ? [...chromiumArgs.filter((a) => !SWIFTSHADER_ARGS.includes(a)), '--ignore-gpu-blocklist']
+    : chromiumArgs;
+  const launchOptions: LaunchOptions = { args: [...base, ...(webgpu ? webgpuArgs : []), ...args] };
   // undefined: Playwright's own browser, which Playwright finds by itself.
   if (browser.executable !== undefined) launchOptions.executablePath = browser.executable;
   return { browserName: 'chromium', launchOptions, deviceScaleFactor: 1 };

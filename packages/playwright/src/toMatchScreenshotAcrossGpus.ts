@@ -42,8 +42,9 @@ function write(path: string, image: RgbaImage): void {
  * where `toHaveScreenshot` would keep it, so the preset names it without the platform) within the rasteriser
  * tolerance {@link GPU_TOLERANCE} (or the one given): each pixel within `maxChannelDiff` codes of the range its
  * `radiusPx` neighbourhood spans in the other picture. Made for baselines recorded under SwiftShader and
- * checked on a real GPU. A missing baseline is written and the test fails (`--update-snapshots` rewrites a
- * failing one and passes). On failure the expected, actual and diff pictures are attached to the report.
+ * checked on a real GPU. Baselines are kept as `toHaveScreenshot` keeps them: a missing one is written and the
+ * test fails, unless `--update-snapshots` is given (then it passes); `--update-snapshots` (changed) rewrites a
+ * failing one, `--update-snapshots=all` every one. On failure the expected, actual and diff pictures are attached to the report.
  */
 export async function toMatchScreenshotAcrossGpus(
   this: ExpectMatcherState,
@@ -78,10 +79,11 @@ export async function toMatchScreenshotAcrossGpus(
         message: () => `${hint}\n\nNo baseline at ${path}.`,
       };
     }
+    // As toHaveScreenshot does: written; the test fails unless --update-snapshots asked for it.
     write(path, actual);
     await attachImage(`${base}-actual.png`, actual);
     return {
-      pass: update === 'all' || update === 'changed',
+      pass: update !== 'default',
       name: 'toMatchScreenshotAcrossGpus',
       message: () =>
         `${hint}\n\nThere was no baseline at ${path}: written from this run. Check it and run again.`,
