@@ -30,7 +30,6 @@ const _m = /* @__PURE__ */ new Matrix4();
 const _p = /* @__PURE__ */ new Matrix4();
 const _pi = /* @__PURE__ */ new Matrix4();
 const _q = /* @__PURE__ */ new Quaternion();
-const _target = /* @__PURE__ */ new Vector3();
 const _eye = /* @__PURE__ */ new Vector3();
 const _change = { type: 'change' } as const;
 
@@ -163,14 +162,9 @@ export class Camera extends ThreeCamera {
   override lookAt(a: Vec3Input | number, b?: Vec3Input | number, c?: Vec3Input | number): this {
     // three's forms look from the current world position with this.up.
     let eye: Vec3Input = this.getWorldPosition(_eye);
-    // lookAt(x, y, z) takes three numbers: three's Vector3.set keeps the old component for an undefined one,
-    // so a missing or non-number y or z would aim at a point nobody asked for.
-    if (typeof a === 'number' && (typeof b !== 'number' || typeof c !== 'number')) {
-      throw new TypeError(
-        `at must have numeric x, y, z in lookAt(x, y, z), got (${typeof a}, ${typeof b}, ${typeof c})`,
-      );
-    }
-    let at: Vec3Input = typeof a === 'number' ? _target.set(a, b as number, c as number) : a;
+    // lookAt(x, y, z) is read as the vector [x, y, z], so a missing or non-number component is refused naming
+    // `at` (three's Vector3.set would keep the old component and aim at a point nobody asked for).
+    let at = (typeof a === 'number' ? [a, b, c] : a) as Vec3Input;
     let up: Vec3Input = this.up;
     if (typeof a !== 'number' && b !== undefined) {
       eye = a;

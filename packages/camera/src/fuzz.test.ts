@@ -471,7 +471,7 @@ describe('camera fuzz counterexamples (regression tests)', () => {
     ] as const) {
       expect(() => camera.lookAt(...(args as unknown as [number, number, number])), String(args)).toThrow(
         new TypeError(
-          `at must have numeric x, y, z in lookAt(x, y, z), got (${[0, 1, 2].map((i) => typeof args[i]).join(', ')})`,
+          `at must have numeric x, y, z, got (${[0, 1, 2].map((i) => typeof args[i]).join(', ')})`,
         ),
       );
       expect(camera.matrixWorld.elements).toEqual(before.elements);
