@@ -18,9 +18,11 @@ import { root } from './setup.mjs';
 const packages = ['sphere', 'camera', 'trackball', 'material', 'reference', 'playwright'];
 /**
  * Target per entry, gzipped bytes. @shadelab/playwright runs in Node beside Playwright, never in an app's
- * bundle, and its failure messages are much of it: 10 kB.
+ * bundle, and its failure messages are much of it: 10 kB. @shadelab/material ships the GLSL of every scene
+ * feature three's chunks bring (instancing, batching, skinning, morphing, clipping, fog, tone mapping): a program
+ * compiles only what its scene uses, but the text is in the entry (+2.2 kB over the lecture-only 8 kB): 10.5 kB.
  */
-const budgetOf = (/** @type {string} */ pkg) => ({ material: 8192, playwright: 10240 })[pkg] ?? 4096;
+const budgetOf = (/** @type {string} */ pkg) => ({ material: 10752, playwright: 10240 })[pkg] ?? 4096;
 
 const tmp = join(root, 'node_modules', '.shadelab-size');
 mkdirSync(tmp, { recursive: true });
