@@ -7,9 +7,9 @@
 // type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
-import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, normalize, posix } from 'node:path';
+import { dirname, join, normalize, posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, type Page, test } from '@playwright/test';
 import { markdownLinks } from '../scripts/check-links.mjs';
@@ -47,6 +47,13 @@ const oldest = (
     dependencies: { three: string; '@types/three': string };
   }
 ).dependencies;
+/** The version range of a root devDependency (the repository's own Playwright, for the testing guide's app). */
+function rootDevDependency(name: string): string {
+  const pkg = JSON.parse(readFileSync(join(repo, 'package.json'), 'utf8')) as {
+    devDependencies: Record<string, string>;
+  };
+  return pkg.devDependencies[name];
+}
 /** The README's Quick start, verbatim: the one code block under its "Quick start" heading. */
 function quickStart(): string {
   const blocks = collectBlocks({ files: ['README.md'] }).filter((b) => /quick start/i.test(b.heading));
@@ -55,8 +62,35 @@ function quickStart(): string {
   return blocks[0].code;
 }
 /**
+ * The app of docs/testing.md: each ```ts file=PATH block of the guide, verbatim, at PATH, and a test that must
+ * fail (the exact image of a shininess the page does not draw).
+ */
+function testingGuideApp(): Record<string, string> {
+  const blocks = collectBlocks({ files: ['docs/testing.md'] }).filter((b) => b.path !== undefined);
+  const files = Object.fromEntries(blocks.map((b) => [b.path as string, b.code]));
+  for (const path of ['src/scene.ts', 'src/main.ts', 'playwright.config.ts', 'tests/scene.spec.ts']) {
+    if (!(path in files)) throw new Error(`docs/testing.md: no \`\`\`ts file=${path} block`);
+  }
+  files['tests/deliberately-failing.spec.ts'] =
+    `// Deliberately failing: the page draws the material's shininess; this test's scene says 4.
+import { expect, referenceSceneOf, test } from '@shadelab/playwright/reference';
+import { buildScene } from '../src/scene';
+
+test('deliberately failing: the exact image of another shininess', async ({ page }) => {
+  await page.goto('/');
+  const canvas = page.locator('canvas');
+  await expect(canvas).toHaveRendered({ timeout: 30_000 });
+  const { camera, sphere, material } = buildScene(400, 400);
+  material.shininess = 4;
+  await expect(canvas).toMatchReference(referenceSceneOf({ camera, sphere }), { rmse: 0.5, max: 4, silhouettePx: 1 });
+});
+`;
+  return files;
+}
+
+/**
  * Each app: its source folder in tools/pack-apps, the dependencies it adds or overrides, and a src/main.ts
- * that replaces the folder's.
+ * that replaces the folder's (or every file, for the testing guide's app).
  */
 const apps = {
   vanilla: { template: 'vanilla', dependencies: {} },
@@ -76,7 +110,21 @@ const apps = {
       '@react-three/fiber': '^9.4.0',
     },
   },
-} satisfies Record<string, { template: string; dependencies: Record<string, string>; main?: () => string }>;
+  // docs/testing.md's app: its scene tested with @shadelab/playwright, from the tarball, with Playwright itself.
+  playwright: {
+    template: 'playwright',
+    dependencies: { '@playwright/test': rootDevDependency('@playwright/test'), '@types/node': '^20.19.43' },
+    files: testingGuideApp,
+  },
+} satisfies Record<
+  string,
+  {
+    template: string;
+    dependencies: Record<string, string>;
+    main?: () => string;
+    files?: () => Record<string, string>;
+  }
+>;
 type App = keyof typeof apps;
 
 let tmp = '';
@@ -117,7 +165,18 @@ async function makeApp(app: App): Promise<void> {
   cpSync(join(repo, 'tools', 'pack-apps', apps[app].template), dir, { recursive: true });
   const spec = apps[app];
   if ('main' in spec) writeFileSync(join(dir, 'src', 'main.ts'), spec.main());
-  const tarballs = Object.fromEntries(packed.map((p) => [p.name, `file:${p.tarball}`]));
+  if ('files' in spec) {
+    for (const [path, text] of Object.entries(spec.files())) {
+      mkdirSync(dirname(join(dir, path)), { recursive: true });
+      writeFileSync(join(dir, path), text);
+    }
+  }
+  // The test kit only where it is used: the other apps are the three.js apps users ship.
+  const tarballs = Object.fromEntries(
+    packed
+      .filter((p) => app === 'playwright' || p.name !== '@shadelab/playwright')
+      .map((p) => [p.name, `file:${p.tarball}`]),
+  );
   const pkg = {
     name: `shadelab-pack-${app}`,
     private: true,
@@ -210,8 +269,8 @@ async function checkLectureScene(page: Page, app: App): Promise<void> {
 test.describe.configure({ mode: 'serial' });
 
 test.beforeAll(async () => {
-  // npm install of four apps, four strict type checks and four Vite builds on a 2-core machine.
-  test.setTimeout(540_000);
+  // npm install of five apps, five strict type checks and five Vite builds on a 2-core machine.
+  test.setTimeout(720_000);
   tmp = mkdtempSync(join(tmpdir(), 'shadelab-pack-'));
   packed = await timed('pack (tsc -b, npm pack)', async () => packPackages(join(tmp, 'tarballs')));
   await Promise.all((Object.keys(apps) as App[]).map(makeApp));
@@ -232,9 +291,10 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
     );
     for (const f of p.files) {
       expect(f, p.name).toMatch(
-        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.ts|docs\/(api\/)?[\w.@-]+\.md)$/,
+        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.(ts|js)|docs\/(api\/)?[\w.@-]+\.md)$/,
       );
-      expect(f, p.name).not.toMatch(/\.test\.|test-util|tsbuildinfo/);
+      // (Not a test: docs/api/@shadelab.playwright.test.md, the reference of the @shadelab/playwright/test entry.)
+      expect(f, p.name).not.toMatch(/\.test\.(ts|js|d\.ts)(\.map)?$|test-util|tsbuildinfo/);
     }
     // The guide and the generated API reference ship in the package, and every link the README and the guide
     // make inside the package resolves in the tarball (links out of it, such as BENCHMARKS.md, are the
@@ -262,11 +322,14 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
       if (sibling) expect(range, `${p.name} → ${dep}`).toBe(`^${sibling.version}`);
     }
     // Every module has its declaration beside it, and its source: no stale build of a removed module ships.
-    for (const js of p.files.filter((f) => f.endsWith('.js'))) {
+    // (A source may be JavaScript: @shadelab/playwright's Chromium lookup, which set-up scripts import unbuilt.)
+    for (const js of p.files.filter((f) => f.startsWith('dist/') && f.endsWith('.js'))) {
       expect(p.files, `${p.name}: ${js}`).toContain(js.replace(/\.js$/, '.d.ts'));
-      expect(p.files, `${p.name}: ${js} has no source`).toContain(
-        js.replace(/^dist\/(.*)\.js$/, 'src/$1.ts'),
-      );
+      const source = js.replace(/^dist\/(.*)\.js$/, 'src/$1');
+      expect(
+        p.files.includes(`${source}.ts`) || p.files.includes(`${source}.js`),
+        `${p.name}: ${js} has no source`,
+      ).toBe(true);
     }
   }
 });
@@ -398,4 +461,89 @@ test("a fresh react-three-fiber app renders the lecture's scene from the tarball
   page,
 }) => {
   await checkLectureScene(page, 'r3f');
+});
+
+/**
+ * Run the app's own Playwright in `dir`: not inside this run (the variables Playwright gives its workers are
+ * left out), with no browser of Playwright's own (PLAYWRIGHT_BROWSERS_PATH names an empty folder), so that
+ * only the kit's lookup can find one. Resolves with the exit code and the output.
+ */
+function runAppPlaywright(dir: string, args: string[], env: Record<string, string> = {}) {
+  const clean = Object.fromEntries(
+    Object.entries(process.env).filter(([k]) => !/^(PW_|PLAYWRIGHT_|TEST_|NODE_OPTIONS$)/.test(k)),
+  );
+  const noBrowsers = join(tmp, 'no-playwright-browsers');
+  mkdirSync(noBrowsers, { recursive: true });
+  return new Promise<{ code: number | null; out: string }>((resolve, reject) => {
+    const child = spawn('npx', ['--no-install', 'playwright', 'test', ...args], {
+      cwd: dir,
+      env: { ...clean, CI: '1', PLAYWRIGHT_BROWSERS_PATH: noBrowsers, ...env },
+    });
+    let out = '';
+    child.stdout.on('data', (d) => {
+      out += d;
+    });
+    child.stderr.on('data', (d) => {
+      out += d;
+    });
+    child.on('error', reject);
+    child.on('close', (code) => resolve({ code, out }));
+  });
+}
+
+interface ReportTest {
+  title: string;
+  status: string;
+  results: { status: string; attachments: { name: string }[]; errors: { message?: string }[] }[];
+}
+
+/** Every test of a Playwright JSON report, with its spec file. */
+function reportTests(report: { suites: unknown[] }): (ReportTest & { file: string })[] {
+  const out: (ReportTest & { file: string })[] = [];
+  const walk = (suite: {
+    file?: string;
+    specs?: { title: string; tests: ReportTest[] }[];
+    suites?: unknown[];
+  }) => {
+    for (const spec of suite.specs ?? []) {
+      for (const t of spec.tests) out.push({ ...t, title: spec.title, file: suite.file ?? '' });
+    }
+    for (const child of suite.suites ?? []) walk(child as typeof suite);
+  };
+  for (const suite of report.suites) walk(suite as Parameters<typeof walk>[0]);
+  return out;
+}
+
+test("docs/testing.md's app, from the tarballs, runs its visual tests with its own Playwright: the guide's passes, a deliberately failing one fails with the diff attached", async () => {
+  test.setTimeout(300_000);
+  const dir = join(tmp, 'playwright');
+  // The guide's first run writes the baseline of toMatchScreenshotAcrossGpus (and passes).
+  const first = await timed('playwright app: first run', () =>
+    runAppPlaywright(dir, ['tests/scene.spec.ts', '--update-snapshots=missing', '--reporter=line']),
+  );
+  expect(first.code, first.out).toBe(0);
+  expect(
+    readFileSync(join(dir, 'tests', '__screenshots__', 'scene.spec.ts', 'lecture.png')).length,
+  ).toBeGreaterThan(0);
+  // Then every test, as CI runs them: the failing one fails the run.
+  const report = join(dir, 'report.json');
+  const all = await timed('playwright app: second run', () =>
+    runAppPlaywright(dir, ['--reporter=json'], { PLAYWRIGHT_JSON_OUTPUT_NAME: report }),
+  );
+  expect(all.code, all.out).toBe(1);
+  const tests = reportTests(JSON.parse(readFileSync(report, 'utf8')));
+  const guide = tests.find((t) => t.file === 'scene.spec.ts');
+  const failing = tests.find((t) => t.file === 'deliberately-failing.spec.ts');
+  expect(guide?.status, JSON.stringify(guide?.results[0]?.errors)).toBe('expected');
+  expect(failing?.status).toBe('unexpected');
+  const result = failing!.results[0];
+  expect(result.errors[0].message).toContain('The canvas differs from the exact reference beyond the budget');
+  expect(result.attachments.map((a) => a.name)).toEqual(
+    expect.arrayContaining([
+      'reference-expected.png',
+      'reference-actual.png',
+      'reference-diff.png',
+      'reference-error.json',
+    ]),
+  );
 });
