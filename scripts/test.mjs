@@ -29,7 +29,13 @@ const stages = [
   [
     'unit (vitest)',
     'npx',
-    ['vitest', 'run', '--reporter=default', '--reporter=json', '--outputFile.json=reports/vitest.json'],
+    [
+      'vitest',
+      'run',
+      '--reporter=./scripts/vitestReporter.mjs',
+      '--reporter=json',
+      '--outputFile.json=reports/vitest.json',
+    ],
   ],
   ['unit (vitest) against the oldest supported three', 'node', ['scripts/three-compat.mjs']],
   ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],

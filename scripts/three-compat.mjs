@@ -21,7 +21,10 @@ if (run('npx', ['tsc', '-p', join('tools', 'three-compat', 'tsconfig.json')]) !=
   failed.push('type check');
 console.log('\n── unit tests against the oldest supported three ──');
 const vitestArgs = ['vitest', 'run', '--config', join('tools', 'three-compat', 'vitest.config.ts')];
-if (run('npx', [...vitestArgs, ...process.argv.slice(2)]) !== 0) failed.push('unit tests');
+// The same text on every run of the same code (scripts/vitestReporter.mjs), unless a reporter is given.
+const args = process.argv.slice(2);
+if (!args.some((a) => a.startsWith('--reporter'))) vitestArgs.push('--reporter=./scripts/vitestReporter.mjs');
+if (run('npx', [...vitestArgs, ...args]) !== 0) failed.push('unit tests');
 
 console.log(failed.length ? `\nthree-compat: failed: ${failed.join(', ')}` : '\nthree-compat: ok');
 process.exit(failed.length ? 1 : 0);
