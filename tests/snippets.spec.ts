@@ -46,6 +46,8 @@ const MUST_RUN = [
 const NOT_RUN: Record<string, string> = {
   'packages/reference/README.md':
     'scores a GPU render it does not make (partial: `pixels` is its context); the renderer is tested in tests/',
+  'packages/playwright/README.md':
+    "a Playwright test, run in Node (partial: the app's buildScene is its context); docs/testing.md's app, which tests/pack.spec.ts runs, is the whole of it",
 };
 
 const blocks = collectBlocks();
@@ -117,7 +119,8 @@ test.afterAll(async () => {
 test('the Quick start and each package README’s first example are marked to run, with a known scene', () => {
   const first = new Map<string, Block>();
   for (const b of blocks) {
-    if (b.file.startsWith('packages/') && !first.has(b.file)) first.set(b.file, b);
+    // Each package README's (the guides in packages/<name>/docs/ are not front doors).
+    if (/^packages\/[^/]+\/README\.md$/.test(b.file) && !first.has(b.file)) first.set(b.file, b);
   }
   const quickStart = blocks.filter((b) => b.file === 'README.md' && /quick start/i.test(b.heading));
   expect(quickStart.map((b) => b.run)).toEqual(['lecture']);
