@@ -413,3 +413,25 @@ test('flipping the object kind, fog, clipping and tone mapping 1,000 times keeps
   expect(result.max).toBeLessThanOrEqual(result.before + result.variants);
   expect(result.after).toBeLessThanOrEqual(result.before + result.variants);
 });
+
+test('a colour edited in place is one console error, not one per frame; drawn with the last good values, reported again after a fix', async ({
+  page,
+}) => {
+  await open(page);
+  // Counted from here (after the page's own loading, e.g. a missing favicon).
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+  const frames = 60;
+  const centre = await page.evaluate((n) => window.materialHarness.inPlaceEdits(n), frames);
+  // 5 phases × 60 frames: good, kd = (NaN, -1, 0), fixed, a PhongLight's Is.b = Infinity, fixed.
+  expect(errors).toEqual([
+    'ShadingMaterial.kd must have finite channels ≥ 0 (linear RGB), got Color(NaN, -1, 0) (edited in place; drawing with the last valid values)',
+    'ShadingMaterial.lights[0]: PhongLight.specular must have finite channels ≥ 0 (linear RGB), got Color(0.8, 0.8, Infinity) (edited in place; drawing with the last valid values)',
+  ]);
+  // Every phase draws the sphere lit as in the first (the last good uniforms while bad), never black or missing.
+  expect(centre[0].some((c) => c > 40)).toBe(true);
+  for (const c of centre) expect(c).toEqual(centre[0]);
+});

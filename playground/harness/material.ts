@@ -1419,7 +1419,51 @@ function flipFeatures(flips: number): { before: number; after: number; max: numb
   return { before, after, max, variants: variants.size };
 }
 
-const api = { compare, flipPrograms, sharedMaterial, outline, programSources, sceneCompare, flipFeatures };
+/**
+ * A colour edited in place (as React Three Fiber writes `kd={[NaN, -1, 0]}` into the Color): `frames` frames
+ * good, `frames` with a bad kd, `frames` fixed, `frames` with a bad PhongLight colour, `frames` fixed again.
+ * Returns the centre pixel after each phase (the console errors are counted by the test).
+ */
+function inPlaceEdits(frames: number): number[][] {
+  const size = 32;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const material = new ShadingMaterial({ lights: [light] });
+  const scene = new Scene();
+  scene.add(light, new Mesh(sphereGeometry(2, true), material));
+  const camera = makeCamera(false);
+  const centre: number[][] = [];
+  const run = (edit: () => void) => {
+    edit();
+    let pixels: Uint8Array = new Uint8Array(0);
+    for (let i = 0; i < frames; i++) pixels = readPixels(renderer, scene, camera, size);
+    const j = 4 * ((size / 2) * size + size / 2);
+    centre.push(Array.from(pixels.slice(j, j + 3)));
+  };
+  run(() => {});
+  run(() => material.kd.setRGB(Number.NaN, -1, 0));
+  run(() => material.kd.setRGB(0.6, 0.35, 0.2));
+  run(() => {
+    light.specular.b = Number.POSITIVE_INFINITY;
+  });
+  run(() => {
+    light.specular.b = 0.8;
+  });
+  material.dispose();
+  return centre;
+}
+
+const api = {
+  inPlaceEdits,
+  compare,
+  flipPrograms,
+  sharedMaterial,
+  outline,
+  programSources,
+  sceneCompare,
+  flipFeatures,
+};
 declare global {
   interface Window {
     materialHarness: typeof api;

@@ -15,7 +15,7 @@ import {
   Vector4,
   type WebGLRenderer,
 } from 'three';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 
 const renderer = {} as WebGLRenderer;
 
@@ -224,14 +224,59 @@ describe('ShadingMaterial per-draw uniforms', () => {
     expect(m.uniformsNeedUpdate).toBe(true);
   });
 
-  it('a colour edited in place to NaN is refused before it reaches a uniform', () => {
-    const light = new PhongLight();
-    const m = new ShadingMaterial({ lights: [light] });
-    light.diffuse.r = Number.NaN;
-    expect(() => draw(m, new Mesh(sphere(), m))).toThrow(/PhongLight\.diffuse must have finite channels/);
-    light.diffuse.r = 1;
-    m.kd.g = -1;
-    expect(() => draw(m, new Mesh(sphere(), m))).toThrow(/ShadingMaterial\.kd/);
+  it('a colour edited in place is reported once (console.error), drawn with the last good uniforms, again after a fix', () => {
+    const errors: string[] = [];
+    const spy = vi.spyOn(console, 'error').mockImplementation((message: string) => {
+      errors.push(message);
+    });
+    try {
+      const light = new PhongLight();
+      light.updateMatrixWorld();
+      const m = new ShadingMaterial({ lights: [light] });
+      const mesh = new Mesh(sphere(), m);
+      draw(m, mesh);
+      const good = Array.from(m.uniforms.lightDiffuse.value as Float32Array);
+      const goodAmbient = Array.from(m.uniforms.ambientTerm.value as Float32Array);
+      // React Three Fiber's kd={[NaN, -1, 0]} writes into the Color: the setter never sees it.
+      m.kd.setRGB(Number.NaN, -1, 0);
+      for (let frame = 0; frame < 190; frame++) expect(() => draw(m, mesh)).not.toThrow();
+      expect(errors).toEqual([
+        'ShadingMaterial.kd must have finite channels ≥ 0 (linear RGB), got Color(NaN, -1, 0) (edited in place; drawing with the last valid values)',
+      ]);
+      expect(Array.from(m.uniforms.lightDiffuse.value as Float32Array)).toEqual(good);
+      expect(Array.from(m.uniforms.ambientTerm.value as Float32Array)).toEqual(goodAmbient);
+      // Fixed: drawn with the new values, silently.
+      m.kd.setRGB(0.5, 0.5, 0.5);
+      draw(m, mesh);
+      expect(Array.from(m.uniforms.lightDiffuse.value as Float32Array)).toEqual([0.5, 0.5, 0.5]);
+      expect(errors).toHaveLength(1);
+      // A PhongLight colour edited in place: reported once, naming the light.
+      light.diffuse.r = Number.NaN;
+      for (let frame = 0; frame < 10; frame++) draw(m, mesh);
+      expect(errors).toHaveLength(2);
+      expect(errors[1]).toMatch(
+        /^ShadingMaterial\.lights\[0\]: PhongLight\.diffuse must have finite channels ≥ 0 \(linear RGB\), got Color\(NaN, 1, 1\)/,
+      );
+      expect(Array.from(m.uniforms.lightDiffuse.value as Float32Array)).toEqual([0.5, 0.5, 0.5]);
+      light.diffuse.r = 1;
+      draw(m, mesh);
+      // The same bad value again after a fix is a new problem: reported again.
+      light.diffuse.r = Number.NaN;
+      draw(m, mesh);
+      draw(m, mesh);
+      expect(errors).toHaveLength(3);
+      // Too large and non-finite positions too; lights added while bad are off (zeros), never NaN.
+      light.diffuse.r = 1;
+      m.ks.g = 1e30;
+      const late = new PhongLight();
+      late.updateMatrixWorld();
+      m.phongLights = [light, late];
+      draw(m, mesh);
+      expect(errors[3]).toMatch(/ShadingMaterial\.ks must have channels at most 1e18/);
+      expect(Array.from(m.uniforms.lightDiffuse.value as Float32Array)).toEqual([0, 0, 0, 0, 0, 0]);
+    } finally {
+      spy.mockRestore();
+    }
   });
 
   it('the normal matrix is the robust one of the world matrix (finite for a zero scale)', () => {

@@ -138,6 +138,8 @@ export class ShadingMaterial extends ShaderMaterial {
   #sphereNormals = false;
   #flatCorners = false;
   #attenuation = false;
+  // The message of the in-place problem last reported (null once the values are valid again).
+  #reported: string | null = null;
 
   /**
    * @param options - Shading, lighting, reflectances and lights; each one omitted takes its default (see
@@ -353,19 +355,62 @@ export class ShadingMaterial extends ShaderMaterial {
     this.needsUpdate = true;
   }
 
+  /**
+   * Checks what may have been edited in place (ka, kd, ks, the lights' colours, their world positions); the
+   * first problem as a RangeError, or null.
+   */
+  #checkInPlace(): RangeError | null {
+    try {
+      checkColorChannels('ShadingMaterial.ka', this.#ka);
+      checkColorChannels('ShadingMaterial.kd', this.#kd);
+      checkColorChannels('ShadingMaterial.ks', this.#ks);
+      this.#lights.forEach((light, i) => {
+        try {
+          light.validate();
+        } catch (error) {
+          throw error instanceof RangeError
+            ? new RangeError(`ShadingMaterial.lights[${i}]: ${error.message}`)
+            : error;
+        }
+        const e = light.matrixWorld.elements;
+        // Finite in float32, as uploaded (|coordinate| < 3.4e38).
+        if (![e[12], e[13], e[14]].every((c) => Number.isFinite(Math.fround(c)))) {
+          throw new RangeError(
+            `ShadingMaterial.lights[${i}] world position must be finite (in float32), got (${e[12]}, ${e[13]}, ${e[14]})`,
+          );
+        }
+      });
+    } catch (error) {
+      if (error instanceof RangeError) return error;
+      throw error;
+    }
+    return null;
+  }
+
   #updateLightUniforms(): void {
-    checkColorChannels('ShadingMaterial.ka', this.#ka);
-    checkColorChannels('ShadingMaterial.kd', this.#kd);
-    checkColorChannels('ShadingMaterial.ks', this.#ks);
     const lights = this.#lights;
     const n = lights.length;
     const u = this.uniforms;
-    if (u.lightPosition.value.length !== 3 * n) {
+    const resized = u.lightPosition.value.length !== 3 * n;
+    if (resized) {
       u.lightPosition.value = new Float32Array(3 * n);
       u.lightDiffuse.value = new Float32Array(3 * n);
       u.lightSpecular.value = new Float32Array(3 * n);
       u.lightAttenuation.value = new Float32Array(3 * n);
     }
+    // A value edited in place (bypassing the setters, as React Three Fiber does) is reported once, with
+    // console.error as three reports its own errors, and the draw keeps the last good uniforms (lights new
+    // since then are off) instead of uploading a NaN or throwing on every frame. Once fixed, the next problem
+    // is reported again.
+    const error = this.#checkInPlace();
+    if (error !== null) {
+      if (error.message !== this.#reported) {
+        this.#reported = error.message;
+        console.error(`${error.message} (edited in place; drawing with the last valid values)`);
+      }
+      return;
+    }
+    this.#reported = null;
     const position: Float32Array = u.lightPosition.value;
     const diffuse: Float32Array = u.lightDiffuse.value;
     const specular: Float32Array = u.lightSpecular.value;
@@ -379,21 +424,11 @@ export class ShadingMaterial extends ShaderMaterial {
     let ab = 0;
     for (let i = 0; i < n; i++) {
       const light = lights[i];
-      light.validate();
       const e = light.matrixWorld.elements;
-      const x = e[12];
-      const y = e[13];
-      const z = e[14];
-      // Finite in float32, as uploaded (|coordinate| < 3.4e38).
-      if (![x, y, z].every((c) => Number.isFinite(Math.fround(c)))) {
-        throw new RangeError(
-          `ShadingMaterial.lights[${i}] world position must be finite (in float32), got (${x}, ${y}, ${z})`,
-        );
-      }
       const j = 3 * i;
-      position[j] = x;
-      position[j + 1] = y;
-      position[j + 2] = z;
+      position[j] = e[12];
+      position[j + 1] = e[13];
+      position[j + 2] = e[14];
       diffuse[j] = kd.r * light.diffuse.r;
       diffuse[j + 1] = kd.g * light.diffuse.g;
       diffuse[j + 2] = kd.b * light.diffuse.b;
