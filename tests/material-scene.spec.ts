@@ -435,3 +435,86 @@ test('a colour edited in place is one console error, not one per frame; drawn wi
   expect(centre[0].some((c) => c > 40)).toBe(true);
   for (const c of centre) expect(c).toEqual(centre[0]);
 });
+
+/** three's lights of every kind around the lecture's sphere (colours linear, intensities in range). */
+const THREE_LIGHTS = [
+  { type: 'ambient', color: [0.1, 0.1, 0.1] },
+  { type: 'hemisphere', color: [0.2, 0.3, 0.5], groundColor: [0.3, 0.2, 0.1], position: [0, 1, 0] },
+  { type: 'directional', color: [0.3, 0.4, 0.5], position: [-1, 2, 1] },
+  { type: 'point', color: [1, 0.8, 0.6], intensity: 3, position: [2, 1, 2], distance: 6, decay: 2 },
+  {
+    type: 'spot',
+    color: [0.6, 0.8, 1],
+    intensity: 2,
+    position: [0, 3, 2],
+    angle: 0.35,
+    penumbra: 0.5,
+    decay: 1,
+  },
+] as const;
+
+for (const [name, variant] of SHADINGS) {
+  test(`three's Ambient, Hemisphere, Directional, Point and Spot lights with a PhongLight, ${name}: = shade() (Id = Is = colour × intensity, three's falloff)`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { shading: 'phong', ...variant, threeLights: THREE_LIGHTS });
+    expectOracleCoverage(stats, 3000);
+    expectShade(stats, 'shading' in variant && variant.shading === 'flat' ? 1500 : 2500);
+  });
+}
+
+for (const [name, light, object] of [
+  ['a SpotLight (angle, penumbra, decay)', THREE_LIGHTS[4], 'mesh'],
+  [
+    'a PointLight (distance cut-off, decay)',
+    { ...THREE_LIGHTS[3], position: [1, 0.5, 1.2], distance: 1.6 },
+    'mesh',
+  ],
+  ['a DirectionalLight', THREE_LIGHTS[2], 'mesh'],
+  ['a SpotLight on instances', THREE_LIGHTS[4], 'instanced'],
+] as const) {
+  test(`${name} alone lights the pixels MeshPhongMaterial lights (and only those), colours = shade()`, async ({
+    page,
+  }) => {
+    await open(page);
+    const config = {
+      shading: 'phong',
+      phongLight: false,
+      threeLights: [light],
+      object,
+      ...(object === 'instanced' ? { instances: THREE_INSTANCES } : {}),
+    } as const;
+    const stats = await scene(page, config);
+    const info = JSON.stringify(stats);
+    expectOracleCoverage(stats, 3000);
+    expect(stats.litCompared, info).toBeGreaterThan(1500);
+    expect(stats.litMismatches, info).toBe(0);
+    expect(stats.compared, info).toBeGreaterThan(1500);
+    expect(stats.maxError, info).toBeLessThanOrEqual(2);
+  });
+}
+
+test("0, 1 and 64 of each of three's light kinds compile in every shading; flipping them keeps programs bounded", async ({
+  page,
+}) => {
+  await open(page);
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    // three's shader errors and warnings (not the browser's own, e.g. a GPU stall note on readPixels).
+    if (m.type() === 'error' || (m.type() === 'warning' && m.text().includes('THREE'))) errors.push(m.text());
+  });
+  const { swept, programs, variants, centres } = await page.evaluate(() =>
+    window.materialHarness.threeLightExtremes(),
+  );
+  expect(errors).toEqual([]); // no shader compile or link error
+  // 5 kinds × 3 counts × 3 shadings: three keeps each material's programs, one per light state (at most
+  // 5 kinds × 2 counts + none = 11 per material; ambient lights of any number share one); 200 random flips
+  // of the same states add none.
+  expect(variants).toBe(45);
+  expect(swept).toBeLessThanOrEqual(33);
+  expect(programs).toBe(swept);
+  expect(centres).toHaveLength(245);
+  // Every render drew the sphere (not the clear colour (0, 0, 255)) with finite colours.
+  for (const c of centres) expect(c).not.toEqual([0, 0, 255]);
+});

@@ -12,6 +12,7 @@ import {
   PhongLight,
   type ShadeLight,
   type ShadeMaterial,
+  type ShadeThreeLight,
   type Shading,
   ShadingMaterial,
   shade,
@@ -20,6 +21,7 @@ import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impos
 import { createOutline } from '@shadelab/material/outline';
 import {
   ACESFilmicToneMapping,
+  AmbientLight,
   BackSide,
   BatchedMesh,
   Bone,
@@ -27,12 +29,15 @@ import {
   type Camera,
   Color,
   CylinderGeometry,
+  DirectionalLight,
   Euler,
   Float32BufferAttribute,
   Fog,
   FogExp2,
+  HemisphereLight,
   InstancedBufferAttribute,
   InstancedMesh,
+  type Light,
   LinearSRGBColorSpace,
   Matrix3,
   Matrix4,
@@ -44,12 +49,14 @@ import {
   OrthographicCamera,
   PerspectiveCamera,
   Plane,
+  PointLight,
   Quaternion,
   Raycaster,
   Scene,
   type ShaderMaterial,
   Skeleton,
   SkinnedMesh,
+  SpotLight,
   SRGBColorSpace,
   Triangle,
   Uint16BufferAttribute,
@@ -747,6 +754,83 @@ export interface SceneConfig {
   constant?: boolean;
   ka?: readonly [number, number, number];
   size?: number;
+  /** three's lights in the scene (besides the PhongLight). */
+  threeLights?: readonly SceneThreeLight[];
+  /** The PhongLight at (−5, 10, 20) in the scene and the material's list. @default true */
+  phongLight?: boolean;
+}
+
+/** One of three's lights (colours linear). */
+export interface SceneThreeLight {
+  type: 'ambient' | 'hemisphere' | 'directional' | 'point' | 'spot';
+  color: readonly [number, number, number];
+  intensity?: number;
+  position?: readonly [number, number, number];
+  target?: readonly [number, number, number];
+  distance?: number;
+  decay?: number;
+  angle?: number;
+  penumbra?: number;
+  groundColor?: readonly [number, number, number];
+}
+
+/** three's light for a SceneThreeLight, added to `scene` (with its target). */
+function threeLight(spec: SceneThreeLight, scene: Scene): Light {
+  const color = new Color(...spec.color);
+  const intensity = spec.intensity ?? 1;
+  let light: Light;
+  if (spec.type === 'ambient') light = new AmbientLight(color, intensity);
+  else if (spec.type === 'hemisphere')
+    light = new HemisphereLight(color, new Color(...(spec.groundColor ?? [0, 0, 0])), intensity);
+  else if (spec.type === 'directional') light = new DirectionalLight(color, intensity);
+  else if (spec.type === 'point')
+    light = new PointLight(color, intensity, spec.distance ?? 0, spec.decay ?? 2);
+  else
+    light = new SpotLight(
+      color,
+      intensity,
+      spec.distance ?? 0,
+      spec.angle ?? Math.PI / 3,
+      spec.penumbra ?? 0,
+      spec.decay ?? 2,
+    );
+  if (spec.position) light.position.set(...spec.position);
+  const target = (light as DirectionalLight).target;
+  if (target) {
+    target.position.set(...(spec.target ?? [0, 0, 0]));
+    scene.add(target);
+  }
+  scene.add(light);
+  return light;
+}
+
+/** What shade() takes for one of three's lights, in world space. */
+function shadeThreeLight(light: Light): ShadeThreeLight {
+  const world = light.getWorldPosition(new Vector3());
+  const color = light.color.clone().multiplyScalar(light.intensity).toArray();
+  if ((light as AmbientLight).isAmbientLight) return { type: 'ambient', color };
+  if ((light as HemisphereLight).isHemisphereLight) {
+    const ground = (light as HemisphereLight).groundColor.clone().multiplyScalar(light.intensity).toArray();
+    return { type: 'hemisphere', color, groundColor: ground, direction: world.clone().normalize().toArray() };
+  }
+  const target = (light as DirectionalLight).target;
+  const direction = target
+    ? world.clone().sub(target.getWorldPosition(new Vector3())).normalize().toArray()
+    : undefined;
+  if ((light as DirectionalLight).isDirectionalLight) return { type: 'directional', color, direction };
+  const point = light as PointLight;
+  const base = { color, position: world.toArray(), distance: point.distance, decay: point.decay };
+  if ((light as SpotLight).isSpotLight) {
+    const spot = light as SpotLight;
+    return {
+      type: 'spot',
+      ...base,
+      direction,
+      coneCos: Math.cos(spot.angle),
+      penumbraCos: Math.cos(spot.angle * (1 - spot.penumbra)),
+    };
+  }
+  return { type: 'point', ...base };
 }
 
 export interface SceneStats {
@@ -765,6 +849,12 @@ export interface SceneStats {
   mismatches: number;
   /** Covered pixels darker than any lit colour: NaN. */
   darkPixels: number;
+  /**
+   * Pixels drawn by both whose 3 × 3 neighbourhood is all lit or all black in the oracle, and how many differ
+   * (black here where the oracle is lit, or above 3/255 where it is black).
+   */
+  litCompared: number;
+  litMismatches: number;
   /** Outline (pure black) pixels, and those where the planes clip. */
   black: number;
   clippedBlack: number;
@@ -831,6 +921,7 @@ interface SceneSetup {
   geometry: BufferGeometry;
   material: ShadingMaterial;
   light: PhongLight;
+  threeLights: Light[];
   instances: Matrix4[];
   tints: Array<readonly [number, number, number]>;
   hull: Mesh | null;
@@ -849,7 +940,7 @@ function buildScene(config: SceneConfig): SceneSetup {
   const material = new (kind === 'impostor' ? SphereImpostorMaterial : ShadingMaterial)({
     ...(kind === 'impostor' ? {} : { shading: config.shading }),
     lighting: config.lighting ?? 'phong',
-    lights: [light],
+    lights: config.phongLight === false ? [] : [light],
     ...(config.ka ? { ka: config.ka } : {}),
     ...(config.constant ? { kd: 0, ks: 0 } : {}),
   });
@@ -948,7 +1039,9 @@ function buildScene(config: SceneConfig): SceneSetup {
     instances[0] = new Matrix4();
   }
   const scene = new Scene();
-  scene.add(object, light);
+  scene.add(object);
+  if (config.phongLight !== false) scene.add(light);
+  const threeLights = (config.threeLights ?? []).map((spec) => threeLight(spec, scene));
   if (config.fog) {
     scene.fog =
       'density' in config.fog
@@ -968,6 +1061,7 @@ function buildScene(config: SceneConfig): SceneSetup {
     geometry,
     material,
     light,
+    threeLights,
     instances,
     tints,
     hull,
@@ -1081,7 +1175,7 @@ function objectNormal(
 function sceneCompare(config: SceneConfig): SceneStats {
   const size = config.size ?? 192;
   const setup = buildScene(config);
-  const { scene, object, geometry, material, light, instances, tints, hull } = setup;
+  const { scene, object, geometry, material, light, threeLights, instances, tints, hull } = setup;
   const camera = makeCamera(false);
   const [r, restore] = sceneRenderer(config, size);
   const ours = readPixels(r, scene, camera, size);
@@ -1123,6 +1217,8 @@ function sceneCompare(config: SceneConfig): SceneStats {
     maxError: 0,
     mismatches: 0,
     darkPixels: 0,
+    litCompared: 0,
+    litMismatches: 0,
     black: 0,
     clippedBlack: 0,
     worst: null,
@@ -1142,6 +1238,21 @@ function sceneCompare(config: SceneConfig): SceneStats {
         for (let dx = -1; uniform && dx <= 1; dx++)
           if (!isClear(theirs, i + dy * size + dx) !== b) uniform = false;
       if (!uniform) continue;
+      if (a && b) {
+        const lit = (p: Uint8Array, j: number) => p[4 * j] + p[4 * j + 1] + p[4 * j + 2] > 0;
+        let same = true;
+        for (let dy = -1; same && dy <= 1; dy++)
+          for (let dx = -1; same && dx <= 1; dx++)
+            if (isClear(theirs, i + dy * size + dx) || lit(theirs, i + dy * size + dx) !== lit(theirs, i))
+              same = false;
+        if (same) {
+          stats.litCompared++;
+          // Lit where the oracle is lit; black where it is black, up to 3/255 (three's Phong divides the diffuse
+          // term by π, so the last faint pixels of a penumbra or terminator round to 0 there first).
+          const bright = Math.max(ours[4 * i], ours[4 * i + 1], ours[4 * i + 2]) > 3;
+          if (lit(theirs, i) ? !lit(ours, i) : bright) stats.litMismatches++;
+        }
+      }
       stats.coverageCompared++;
       if (a !== b) stats.coverageMismatches++;
       if (config.constant && a && b) {
@@ -1238,14 +1349,14 @@ function sceneCompare(config: SceneConfig): SceneStats {
     shininess: material.shininess,
     lighting: material.lighting,
   };
-  const lights: ShadeLight[] = [
-    {
+  const lights: Array<ShadeLight | ShadeThreeLight> = threeLights.map(shadeThreeLight);
+  if (config.phongLight !== false)
+    lights.push({
       position: light.getWorldPosition(new Vector3()).toArray(),
       ambient: light.ambient.toArray(),
       diffuse: light.diffuse.toArray(),
       specular: light.specular.toArray(),
-    },
-  ];
+    });
   const fogColor = new Color(0x8080c0);
   const fogOut = config.linearOutput ? fogColor.toArray() : fogColor.toArray().map(srgb);
   const view = camera.matrixWorldInverse;
@@ -1454,7 +1565,63 @@ function inPlaceEdits(frames: number): number[][] {
   return centre;
 }
 
+const SHADING_LIST = ['flat', 'gouraud', 'phong'] as const;
+
+/**
+ * 0, 1 and 64 of each of three's light kinds (intensity 1/count, around the sphere) lighting a ShadingMaterial in
+ * each shading, then the same flipped at random 200 times: the live program count and every render's centre pixel.
+ */
+function threeLightExtremes(): { swept: number; programs: number; variants: number; centres: number[][] } {
+  const size = 16;
+  renderer.setSize(size, size, false);
+  const kinds = ['ambient', 'hemisphere', 'directional', 'point', 'spot'] as const;
+  const camera = makeCamera(false);
+  const centres: number[][] = [];
+  const variants = new Set<string>();
+  const j = 4 * ((size / 2) * size + size / 2);
+  const materials = SHADING_LIST.map((shading) => new ShadingMaterial({ shading }));
+  const geometries = { flat: sphereGeometry(2, false), smooth: sphereGeometry(2, true) };
+  const render = (kind: (typeof kinds)[number], count: number, shading: number) => {
+    const scene = new Scene();
+    const material = materials[shading];
+    scene.add(new Mesh(SHADING_LIST[shading] === 'flat' ? geometries.flat : geometries.smooth, material));
+    for (let i = 0; i < count; i++) {
+      const a = (2 * Math.PI * i) / count;
+      threeLight(
+        {
+          type: kind,
+          color: [1, 0.8, 0.6],
+          intensity: 1 / count,
+          position: [3 * Math.cos(a), 2, 3 + Math.sin(a)],
+          angle: 0.6,
+          penumbra: 0.5,
+          distance: 20,
+        },
+        scene,
+      );
+    }
+    scene.updateMatrixWorld();
+    const pixels = readPixels(renderer, scene, camera, size);
+    centres.push(Array.from(pixels.slice(j, j + 3)));
+    variants.add(`${kind} ${count} ${shading}`);
+  };
+  for (const kind of kinds)
+    for (const count of [0, 1, 64]) for (let k = 0; k < 3; k++) render(kind, count, k);
+  const swept = renderer.info.programs?.length ?? 0;
+  let seed = 14;
+  const random = () => {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    return seed / 2147483648;
+  };
+  for (let i = 0; i < 200; i++)
+    render(kinds[Math.floor(random() * 5)], [0, 1, 64][Math.floor(random() * 3)], Math.floor(random() * 3));
+  const programs = renderer.info.programs?.length ?? 0;
+  for (const m of materials) m.dispose();
+  return { swept, programs, variants: variants.size, centres };
+}
+
 const api = {
+  threeLightExtremes,
   inPlaceEdits,
   compare,
   flipPrograms,

@@ -10,6 +10,7 @@ import {
   Mesh,
   OrthographicCamera,
   PerspectiveCamera,
+  PointLight,
   Scene,
   Vector3,
   Vector4,
@@ -286,6 +287,41 @@ describe('ShadingMaterial per-draw uniforms', () => {
     draw(m, mesh);
     const n: Matrix3 = m.uniforms.shadingNormalMatrix.value;
     expect(n.elements).toEqual([0, 0, 0, 0, 0, 0, 0, 0, 1]);
+  });
+});
+
+describe("three's lights", () => {
+  it('compile only when the scene has one: SHADING_THREE_LIGHTS and three’s lights flag; found once per frame', () => {
+    const m = new ShadingMaterial();
+    const mesh = new Mesh(sphere(), m);
+    const scene = new Scene();
+    scene.add(mesh);
+    const frame = { info: { render: { frame: 1 } } } as unknown as WebGLRenderer;
+    const at = () => {
+      mesh.updateMatrixWorld();
+      m.onBeforeRender(frame, scene, new PerspectiveCamera(), mesh.geometry, mesh, new Group());
+    };
+    at();
+    expect(m.defines.SHADING_THREE_LIGHTS).toBeUndefined();
+    expect(m.lights).toBe(false);
+    const point = new PointLight();
+    scene.add(point);
+    at(); // the same frame: the scene was already searched
+    expect(m.defines.SHADING_THREE_LIGHTS).toBeUndefined();
+    frame.info.render.frame++;
+    const version = m.version;
+    at();
+    expect(m.defines.SHADING_THREE_LIGHTS).toBe('');
+    expect(m.lights).toBe(true);
+    expect(m.version).toBe(version + 1);
+    point.visible = false; // three skips an invisible light: so does the search
+    frame.info.render.frame++;
+    at();
+    expect(m.lights).toBe(false);
+    // three's light uniforms are there for three to fill (ambientLightColor, pointLights, …).
+    expect(Object.keys(m.uniforms)).toEqual(
+      expect.arrayContaining(['ambientLightColor', 'pointLights', 'spotLights']),
+    );
   });
 });
 

@@ -3,6 +3,7 @@ import {
   type Camera,
   Color,
   type Group,
+  type Light,
   Matrix3,
   type Object3D,
   type Scene,
@@ -71,6 +72,33 @@ export const FLAT_CORNERS = ['flatCornerA', 'flatCornerB'] as const;
  */
 export const FLAT_CORNER_INDEX = 'flatCornerIndex';
 
+/** What a scene holds for the material, found once per frame (see {@link sceneLightsOf}). */
+interface SceneLights {
+  /** three's renderer frame it was found in. */
+  frame: number;
+  /** Some visible three.js light (AmbientLight, HemisphereLight, PointLight, DirectionalLight, SpotLight, …). */
+  threeLights: boolean;
+}
+
+const _sceneLights = /* @__PURE__ */ new WeakMap<Object3D, SceneLights>();
+
+/**
+ * The lights of `scene`, found by one traversal per rendered frame (`renderer.info.render.frame`), shared by
+ * every draw of every ShadingMaterial in that frame; every draw when the renderer has no frame counter.
+ */
+function sceneLightsOf(renderer: WebGLRenderer | null, scene: Scene | null): SceneLights {
+  const frame = renderer?.info?.render?.frame ?? Number.NaN;
+  if (scene === null || scene === undefined) return { frame, threeLights: false };
+  const cached = _sceneLights.get(scene);
+  if (cached !== undefined && cached.frame === frame) return cached;
+  const found: SceneLights = { frame, threeLights: false };
+  scene.traverseVisible((object) => {
+    if ((object as Light).isLight === true) found.threeLights = true;
+  });
+  _sceneLights.set(scene, found);
+  return found;
+}
+
 const _normalMatrix = /* @__PURE__ */ new Matrix3();
 const _eye = /* @__PURE__ */ new Vector4();
 
@@ -96,7 +124,11 @@ const _eye = /* @__PURE__ */ new Vector4();
  * `SkinnedMesh` and morph targets (every shading; flat shading moves a face's corners as three moves its
  * vertices), `scene.fog` (`fog`), clipping planes (`clippingPlanes`, the renderer's, `clipIntersection`), tone
  * mapping (`toneMapped`) and the output colour space. Instance normals use the instance matrix's robust
- * normal matrix, as the object's do.
+ * normal matrix, as the object's do. three's lights in the scene (AmbientLight, HemisphereLight, PointLight,
+ * DirectionalLight, SpotLight) light it through the same equation with three's light uniforms: Id = Is =
+ * colour × intensity, three's distance and cone falloff in place of the attenuation, ambient and hemisphere
+ * lights as Ia (see `ShadeThreeLight`); compiled only when the scene has one of three's lights (the scene is
+ * searched once per frame).
  *
  * Colours are linear (three's working colour space), tone-mapped when the renderer asks for it and written
  * through three's output colour space conversion. The object's normal matrix is sign(det)·cof(M) of its world matrix (see
@@ -138,6 +170,7 @@ export class ShadingMaterial extends ShaderMaterial {
   #sphereNormals = false;
   #flatCorners = false;
   #attenuation = false;
+  #threeLights = false;
   // The message of the in-place problem last reported (null once the values are valid again).
   #reported: string | null = null;
 
@@ -169,7 +202,11 @@ export class ShadingMaterial extends ShaderMaterial {
         lightAttenuation: { value: new Float32Array(0) },
         facePositions: { value: null },
         faceSkin: { value: null },
+        shadingKa: { value: new Color() },
+        shadingKd: { value: new Color() },
+        shadingKs: { value: new Color() },
         ...UniformsUtils.clone(UniformsLib.fog),
+        ...UniformsUtils.clone(UniformsLib.lights),
       },
     });
     this.shading = shading;
@@ -261,9 +298,9 @@ export class ShadingMaterial extends ShaderMaterial {
   }
 
   /**
-   * The lights (the `lights` option; named so because three's `ShaderMaterial.lights` is the flag for
-   * three's own lights, which this material does not use). A frozen copy; assign a new array to change it.
-   * The number of lights is part of the variant. @default []
+   * The PhongLights (the `lights` option; named so because three's `ShaderMaterial.lights` is the flag for
+   * three's own lights, which the material raises itself when the scene has one). A frozen copy; assign a new
+   * array to change it. The number of lights is part of the variant. @default []
    */
   get phongLights(): readonly PhongLight[] {
     return this.#lights;
@@ -327,6 +364,7 @@ export class ShadingMaterial extends ShaderMaterial {
       u.faceSkin.value = null;
     }
     this.#attenuation = this.#lights.some((light) => light.attenuates);
+    this.#threeLights = sceneLightsOf(_renderer, _scene).threeLights;
     this.#syncDefines();
     this.#updateLightUniforms();
     computeNormalMatrix(object.matrixWorld, u.shadingNormalMatrix.value);
@@ -343,11 +381,14 @@ export class ShadingMaterial extends ShaderMaterial {
     if (this.#attenuation) defines.USE_ATTENUATION = '';
     if (this.#sphereNormals && this.#shading !== 'flat') defines.SPHERE_NORMALS = '';
     if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
+    if (this.#threeLights) defines.SHADING_THREE_LIGHTS = '';
     const old = this.defines ?? {};
     const keys = Object.keys(defines);
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);
     if (same) return;
     this.defines = defines;
+    // three's `ShaderMaterial.lights`: upload three's light uniforms (only when the scene has three's lights).
+    this.lights = this.#threeLights;
     if (old.NUM_LIGHTS !== defines.NUM_LIGHTS) {
       this.vertexShader = withLightCount(vertexShader, this.#lights.length);
       this.fragmentShader = withLightCount(fragmentShader, this.#lights.length);
@@ -411,6 +452,9 @@ export class ShadingMaterial extends ShaderMaterial {
       return;
     }
     this.#reported = null;
+    u.shadingKa.value.copy(this.#ka);
+    u.shadingKd.value.copy(this.#kd);
+    u.shadingKs.value.copy(this.#ks);
     const position: Float32Array = u.lightPosition.value;
     const diffuse: Float32Array = u.lightDiffuse.value;
     const specular: Float32Array = u.lightSpecular.value;

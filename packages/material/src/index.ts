@@ -32,8 +32,10 @@ export {
   type ShadeLight,
   type ShadeMaterial,
   type ShadeSample,
+  type ShadeThreeLight,
   shade,
   specularPower,
+  threeDistanceFalloff,
 } from './shade.js';
 export type { ColorInput } from './validate.js';
 export type { Vec3, Vec3Like, Vec4Like } from './vec3.js';

@@ -7,6 +7,7 @@ import {
   type ShadeMaterial,
   shade,
   specularPower,
+  threeDistanceFalloff,
 } from '@shadelab/material';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
@@ -279,3 +280,81 @@ describe('shade: properties', () => {
     );
   });
 });
+
+describe("shade() with three's lights (Id = Is = colour × intensity, three's falloff, ambient as Ia)", () => {
+  const m: ShadeMaterial = { ka: [0.5, 0.5, 0.5], kd: [0.4, 0.4, 0.4], ks: [0.2, 0.2, 0.2], shininess: 1 };
+  const sample = { position: [0, 0, 0], normal: [0, 0, 1], eye: [0, 0, 10] };
+
+  it('ambient: ka·Ia; hemisphere: three’s sky/ground blend by the normal', () => {
+    expectClose(shade(sample, m, [{ type: 'ambient', color: [0.2, 0.4, 0.6] }]), [0.1, 0.2, 0.3]);
+    const hemi = { type: 'hemisphere', color: [1, 1, 1], groundColor: [0, 0, 0] } as const;
+    // The normal along the sky direction: all sky; against it: all ground; across: half of each.
+    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 0, 1] }]), [0.5, 0.5, 0.5]);
+    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 0, -1] }]), [0, 0, 0]);
+    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 1, 0] }]), [0.25, 0.25, 0.25]);
+  });
+
+  it('directional: kd·I·(l·n) + ks·I·(v·r)^α, no falloff', () => {
+    // l = (0, 0.6, 0.8): l·n = 0.8; r = (0, −0.6, 0.8), v = z: v·r = 0.8.
+    const out = shade(sample, m, [{ type: 'directional', color: [2, 2, 2], direction: [0, 0.6, 0.8] }]);
+    expectClose(
+      out,
+      [0, 1, 2].map(() => 2 * (0.4 * 0.8 + 0.2 * 0.8)),
+    );
+  });
+
+  it('point: 1/t^decay, the cut-off window (1 − (t/distance)⁴)², 1/0.01 at most', () => {
+    expect(threeDistanceFalloff(2, 0, 2)).toBe(0.25);
+    expect(threeDistanceFalloff(2, 0, 0)).toBe(1);
+    expect(threeDistanceFalloff(2, 4, 1)).toBeCloseTo(0.5 * (1 - 1 / 16) ** 2, 12);
+    expect(threeDistanceFalloff(5, 4, 2)).toBe(0);
+    expect(threeDistanceFalloff(0, 0, 2)).toBe(100);
+    const out = shade(sample, m, [{ type: 'point', color: [1, 1, 1], position: [0, 0, 2], decay: 2 }]);
+    // Head-on from 2 units: l·n = 1, v·r = 1: (0.4 + 0.2) / 4.
+    expectClose(out, [0.15, 0.15, 0.15]);
+  });
+
+  it('spot: the point falloff times smoothstep(coneCos, penumbraCos, l·direction)', () => {
+    const spot = {
+      type: 'spot',
+      color: [1, 1, 1],
+      position: [0, 0, 2],
+      direction: [0, 0, 1],
+      decay: 0,
+      coneCos: Math.cos(0.5),
+      penumbraCos: Math.cos(0.25),
+    } as const;
+    expectClose(shade(sample, m, [spot]), [0.6, 0.6, 0.6]); // on the axis: full
+    const outside = { ...sample, position: [3, 0, 0] }; // 56° off the axis: dark
+    expectClose(shade(outside, m, [spot]), [0, 0, 0]);
+    // Between the cone and the penumbra: smoothstep of the cosine.
+    const x = 2 * Math.tan(0.4);
+    const l = [-x, 0, 2].map((c) => c / Math.hypot(x, 2));
+    const cone = smoothstepRef(Math.cos(0.5), Math.cos(0.25), l[2]);
+    const inPenumbra = shade({ ...sample, position: [x, 0, 0] }, { ...m, ks: [0, 0, 0] }, [spot]);
+    expectClose(
+      inPenumbra,
+      [0, 1, 2].map(() => cone * 0.4 * l[2]),
+    );
+    expect(cone).toBeGreaterThan(0.05);
+    expect(cone).toBeLessThan(0.95);
+  });
+
+  it('three’s lights and PhongLights add up, tinted like instance colours, finite for a light at the point', () => {
+    const lights = [white([0, 0, 5]), { type: 'point', color: [1, 1, 1], position: [0, 0, 0] } as const];
+    const out = shade({ ...sample, tint: [1, 0.5, 0] }, m, lights);
+    expect(out.every(Number.isFinite)).toBe(true);
+    const phong = shade({ ...sample, tint: [1, 0.5, 0] }, m, [lights[0]]);
+    // The point light at the point: head-on, falloff 1/0.01.
+    expectClose(
+      out.map((c, k) => c - phong[k]),
+      [0, 1, 2].map((k) => 100 * (0.4 * [1, 0.5, 0][k] + 0.2)),
+      9,
+    );
+  });
+});
+
+function smoothstepRef(e0: number, e1: number, x: number): number {
+  const t = Math.min(Math.max((x - e0) / (e1 - e0), 0), 1);
+  return t * t * (3 - 2 * t);
+}

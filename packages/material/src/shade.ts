@@ -41,6 +41,56 @@ export interface ShadeLight {
   readonly attenuation?: Attenuation;
 }
 
+/**
+ * One of three's lights as `shade` (and `ShadingMaterial`) maps it onto the lecture's equation: Id = Is =
+ * `color` (three's colour × intensity, linear), three's own falloff in place of 1/(a + b·t + c·t²), and
+ * ambient and hemisphere lights as Ia:
+ * - `'ambient'`: Ia = color;
+ * - `'hemisphere'`: Ia = mix(groundColor, color, 0.5·(n·direction) + 0.5) (three's sky/ground blend);
+ * - `'directional'`: l = direction, no falloff;
+ * - `'point'`: falloff 1/max(t^decay, 0.01), times (1 − (t/distance)⁴)² clamped to 0 … 1 when distance > 0;
+ * - `'spot'`: the point light's falloff times smoothstep(coneCos, penumbraCos, l·direction).
+ */
+export interface ShadeThreeLight {
+  /** Which of three's lights. */
+  readonly type: 'ambient' | 'hemisphere' | 'directional' | 'point' | 'spot';
+  /** Colour × intensity, linear RGB (a hemisphere light's sky colour × intensity). */
+  readonly color: Vec3Like;
+  /** World position (point, spot). @default [0, 0, 0] */
+  readonly position?: Vec3Like;
+  /**
+   * Unit world direction towards the light, from its target (directional, spot), or the sky direction
+   * (hemisphere: the light's position, normalised). @default [0, 1, 0]
+   */
+  readonly direction?: Vec3Like;
+  /** Cut-off distance, world units; 0 = none (point, spot). @default 0 */
+  readonly distance?: number;
+  /** Decay exponent of the distance falloff (point, spot). @default 2 */
+  readonly decay?: number;
+  /** cos(angle) (spot). @default 0 */
+  readonly coneCos?: number;
+  /** cos(angle·(1 − penumbra)) (spot). @default 0 */
+  readonly penumbraCos?: number;
+  /** Ground colour × intensity, linear RGB (hemisphere). @default [0, 0, 0] */
+  readonly groundColor?: Vec3Like;
+}
+
+/** three's distance falloff of a point or spot light at distance `t` (see {@link ShadeThreeLight}). */
+export function threeDistanceFalloff(t: number, distance: number, decay: number): number {
+  let falloff = 1 / Math.max(t ** decay, 0.01);
+  if (distance > 0) {
+    const k = Math.min(Math.max(1 - (t / distance) ** 4, 0), 1);
+    falloff *= k * k;
+  }
+  return falloff;
+}
+
+/** GLSL's smoothstep (three's spot cone). */
+function smoothstep(e0: number, e1: number, x: number): number {
+  const t = Math.min(Math.max((x - e0) / (e1 - e0), 0), 1);
+  return t * t * (3 - 2 * t);
+}
+
 /** A material as `shade` sees it: the lecture's ka, kd, ks (linear RGB) and α. */
 export interface ShadeMaterial {
   /** ka: ambient reflectance, linear RGB. */
@@ -103,6 +153,8 @@ export function celSpecular(power: number): number {
 
 const AXIS_Z: Vec3Like = [0, 0, 1];
 const WHITE: Vec3Like = [1, 1, 1];
+const ZERO: Vec3Like = [0, 0, 0];
+const UP: Vec3Like = [0, 1, 0];
 
 /**
  * The lighting equation at one point, summed over `lights` (linear RGB, not clamped):
@@ -110,7 +162,9 @@ const WHITE: Vec3Like = [1, 1, 1];
  * I = Σ_L ka·Ia_L + att_L(t)·( kd·Id_L·max(l·n, 0) + ks·Is_L·spec ),  att(t) = 1 / max(a + b·t + c·t², 1e-6)
  *
  * with l the unit vector to the light, t its distance, v the unit vector to the eye, spec 0 where l·n ≤ 0;
- * a sample's `tint` (an instance colour) multiplies the ka and kd terms.
+ * a sample's `tint` (an instance colour) multiplies the ka and kd terms. three's lights ({@link ShadeThreeLight})
+ * enter the same sum with Id = Is = colour × intensity, three's falloff as att and no Ia, ambient and
+ * hemisphere lights with Ia only.
  * Degenerate inputs stay finite: a light at the point (t = 0) lights it head-on (l = n); an eye at the
  * point uses v = n; a zero normal uses n = v (or +z when the eye is at the point too); h = 0 (l = −v) gives
  * no Blinn-Phong highlight. The GPU shaders of `ShadingMaterial` implement exactly these rules.
@@ -123,7 +177,7 @@ const WHITE: Vec3Like = [1, 1, 1];
 export function shade(
   sample: ShadeSample,
   material: ShadeMaterial,
-  lights: readonly ShadeLight[],
+  lights: readonly (ShadeLight | ShadeThreeLight)[],
   out: Vec3 = [0, 0, 0],
 ): Vec3 {
   const { position: p, normal, eye, tint = WHITE } = sample;
@@ -145,10 +199,49 @@ export function shade(
   let g = 0;
   let b = 0;
   for (const light of lights) {
-    const { ambient: ia, diffuse: id, specular: is, attenuation } = light;
-    sub(l, light.position, p);
-    const t = length(l);
-    normalizeOr(l, l, n);
+    let ia: Vec3Like = ZERO;
+    let id: Vec3Like;
+    let is: Vec3Like;
+    let att = 1;
+    if ('type' in light) {
+      const { type, color, position = ZERO, direction = UP, distance = 0, decay = 2 } = light;
+      if (type === 'ambient' || type === 'hemisphere') {
+        if (type === 'ambient') ia = color;
+        else {
+          const ground = light.groundColor ?? ZERO;
+          const w = 0.5 * dot(n, direction) + 0.5;
+          ia = [0, 1, 2].map((k) => ground[k] + (color[k] - ground[k]) * w);
+        }
+        r += tint[0] * ka[0] * ia[0];
+        g += tint[1] * ka[1] * ia[1];
+        b += tint[2] * ka[2] * ia[2];
+        continue;
+      }
+      id = color;
+      is = color;
+      if (type === 'directional') {
+        l[0] = direction[0];
+        l[1] = direction[1];
+        l[2] = direction[2];
+      } else {
+        sub(l, position, p);
+        const t = length(l);
+        normalizeOr(l, l, n);
+        att = threeDistanceFalloff(t, distance, decay);
+        if (type === 'spot') att *= smoothstep(light.coneCos ?? 0, light.penumbraCos ?? 0, dot(l, direction));
+      }
+    } else {
+      ({ ambient: ia, diffuse: id, specular: is } = light);
+      const { attenuation } = light;
+      sub(l, light.position, p);
+      const t = length(l);
+      normalizeOr(l, l, n);
+      if (attenuation !== undefined) {
+        att =
+          1 /
+          Math.max(attenuation.a + attenuation.b * t + attenuation.c * t * t, MIN_ATTENUATION_DENOMINATOR);
+      }
+    }
     const ndl = dot(n, l);
     let diffuse = Math.max(ndl, 0);
     let spec = 0;
@@ -169,11 +262,6 @@ export function shade(
     if (celBands > 0) {
       diffuse = celDiffuse(diffuse, celBands);
       spec = celSpecular(spec);
-    }
-    let att = 1;
-    if (attenuation !== undefined) {
-      att =
-        1 / Math.max(attenuation.a + attenuation.b * t + attenuation.c * t * t, MIN_ATTENUATION_DENOMINATOR);
     }
     const dTerm = att * diffuse;
     const sTerm = att * spec;

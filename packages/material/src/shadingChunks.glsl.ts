@@ -87,6 +87,66 @@ vec3 lightTerm(vec3 p, vec3 n, vec3 v, vec3 lightPos, vec3 kdId, vec3 ksIs, vec3
   return diffuse * kdId + spec * ksIs;
 }
 
+#ifdef SHADING_THREE_LIGHTS
+#ifndef PI
+#include <common>
+#endif
+#include <lights_pars_begin>
+uniform vec3 shadingKa, shadingKd, shadingKs;
+#ifndef SHADING_TINT
+#define shadingTint 1.0
+#endif
+vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
+  float d = dot(n, l);
+#ifdef LIGHTING_BLINN
+  vec3 h = l + v;
+  float x = dot(h, h) > 0.0 ? max(dot(n, normalize(h)), 0.0) : 0.0;
+#else
+  float x = max(2.0 * d * dot(v, n) - dot(v, l), 0.0);
+#endif
+  float s = d > 0.0 ? (x > 0.0 ? pow(x, shininess) : step(shininess, 0.0)) : 0.0;
+  d = max(d, 0.0);
+#if CEL_BANDS > 0
+  d = min(floor(d * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
+  s = step(0.5, s);
+#endif
+  return c * (d * shadingKd * shadingTint + s * shadingKs);
+}
+vec3 threeLights(vec3 p, vec3 n, vec3 v) {
+  p = (viewMatrix * vec4(p, 1.0)).xyz;
+  n = normalize((viewMatrix * vec4(n, 0.0)).xyz);
+  v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
+  vec3 c = ambientLightColor, l;
+  float t;
+#if NUM_HEMI_LIGHTS > 0
+  for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
+#endif
+  c *= shadingKa * shadingTint;
+#if NUM_DIR_LIGHTS > 0
+  for (int i = 0; i < NUM_DIR_LIGHTS; i++) c += threeDirect(n, v, directionalLights[i].direction, directionalLights[i].color);
+#endif
+#if NUM_POINT_LIGHTS > 0
+  for (int i = 0; i < NUM_POINT_LIGHTS; i++) {
+    PointLight q = pointLights[i];
+    l = q.position - p;
+    t = length(l);
+    l = t > 0.0 ? l / t : n;
+    c += threeDirect(n, v, l, q.color * getDistanceAttenuation(t, q.distance, q.decay));
+  }
+#endif
+#if NUM_SPOT_LIGHTS > 0
+  for (int i = 0; i < NUM_SPOT_LIGHTS; i++) {
+    SpotLight q = spotLights[i];
+    l = q.position - p;
+    t = length(l);
+    l = t > 0.0 ? l / t : n;
+    c += threeDirect(n, v, l, q.color * getSpotAttenuation(q.coneCos, q.penumbraCos, dot(l, q.direction)) * getDistanceAttenuation(t, q.distance, q.decay));
+  }
+#endif
+  return c;
+}
+#endif
+
 vec3 shadeColor(vec3 p, vec3 normal) {
   vec3 toEye = shadingEye.xyz - p * shadingEye.w;
   float e2 = dot(toEye, toEye);
@@ -110,6 +170,9 @@ vec3 shadeColor(vec3 p, vec3 normal) {
 #endif
   }
   #pragma unroll_loop_end
+#endif
+#ifdef SHADING_THREE_LIGHTS
+  color += threeLights(p, n, v);
 #endif
   return color;
 }
