@@ -13,6 +13,7 @@ export default defineConfig({
       '@shadelab/material': src('material'),
       '@shadelab/reference': src('reference'),
       '@shadelab/playwright': src('playwright'),
+      '@shadelab/react': src('react'),
     },
   },
   test: {

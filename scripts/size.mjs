@@ -1,5 +1,6 @@
 // Size budget, minified and gzipped, without dependencies (three; @shadelab/material for @shadelab/reference,
-// which has its own row; @playwright/test and Node's built-ins for @shadelab/playwright), of every entry point of every package, read from the package.json `exports` maps so
+// which has its own row; @playwright/test and Node's built-ins for @shadelab/playwright; react and
+// @react-three/fiber for @shadelab/react, which wraps the other packages and counts only its own code), of every entry point of every package, read from the package.json `exports` maps so
 // that a new entry is measured without editing this file:
 // - a main entry (`@shadelab/x`): everything it exports, gated at the issue's targets (4 kB, material 8 kB,
 //   playwright 10 kB);
@@ -15,7 +16,7 @@ import { build } from 'vite';
 import { writeJson } from '../bench/lib/meta.mjs';
 import { root } from './setup.mjs';
 
-const packages = ['sphere', 'camera', 'trackball', 'material', 'reference', 'playwright'];
+const packages = ['sphere', 'camera', 'trackball', 'material', 'reference', 'playwright', 'react'];
 /**
  * Target per entry, gzipped bytes. @shadelab/playwright runs in Node beside Playwright, never in an app's
  * bundle, and its failure messages are much of it: 10 kB. @shadelab/material ships the GLSL of every scene
@@ -40,13 +41,17 @@ async function measure(/** @type {string} */ name, /** @type {string[]} */ sourc
       minify: true,
       lib: { entry, formats: ['es'], fileName: 'size' },
       // Dependencies are not counted: three (a peer), @shadelab/material in @shadelab/reference (its own row),
-      // and @playwright/test and Node's built-ins in @shadelab/playwright (it runs in Node, beside Playwright).
+      // @playwright/test and Node's built-ins in @shadelab/playwright (it runs in Node, beside Playwright), and
+      // react and @react-three/fiber in @shadelab/react (peers, as three).
       rollupOptions: {
         external: (id) =>
           id === 'three' ||
           id.startsWith('three/') ||
           id.startsWith('@shadelab/') ||
           id.startsWith('@playwright/') ||
+          id === 'react' ||
+          id.startsWith('react/') ||
+          id.startsWith('@react-three/') ||
           id.startsWith('node:'),
       },
     },

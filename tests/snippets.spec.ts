@@ -48,6 +48,8 @@ const NOT_RUN: Record<string, string> = {
     'scores a GPU render it does not make (partial: `pixels` is its context); the renderer is tested in tests/',
   'packages/playwright/README.md':
     "a Playwright test, run in Node (partial: the app's buildScene is its context); docs/testing.md's app, which tests/pack.spec.ts runs, is the whole of it",
+  'packages/react/README.md':
+    "JSX elements (partial: the light is its context); the guide's complete app is what tests/react.spec.ts and tests/pack.spec.ts render",
 };
 
 const blocks = collectBlocks();

@@ -1,0 +1,16 @@
+/**
+ * React Three Fiber for shadelab: importing the package registers every shadelab class as a typed JSX element
+ * (`<shadingMaterial>`, `<phongLight>`, `<subdivisionSphereGeometry>`, `<outlineMaterial>`,
+ * `<sphereImpostorMaterial>`, `<sphereImpostor>`, `<autoDetailSphere>`), and it gives the components
+ * `<Trackball>` (with the `useTrackball` hook), `<LectureCamera>` and `<AutoDetailSphere>`.
+ * @module @shadelab/react
+ * @mergeModuleWith <project>
+ */
+// The registration of the JSX elements (the package's side effect; see package.json `sideEffects`).
+import './elements.js';
+
+export { AutoDetailSphere, type AutoDetailSphereProps } from './AutoDetailSphere.js';
+export type { ColorProp, ShadelabElement, ShadelabElements } from './elements.js';
+export { LectureCamera, type LectureCameraProps } from './LectureCamera.js';
+export { Trackball, type TrackballEvent, type TrackballProps } from './Trackball.js';
+export { type UseTrackballOptions, useTrackball } from './useTrackball.js';

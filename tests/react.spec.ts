@@ -1,0 +1,293 @@
+// @shadelab/react, rendered: pages bundled by one Vite build that resolves react, @react-three/fiber, three and
+// @shadelab/* through the workspace's node_modules (the packages' built dist/, as an app resolves them), opened
+// in Chromium.
+// - guide: the R3F guide's complete example, verbatim: it draws the lecture's lit ellipsoid (picture-helpers.ts),
+//   and a trackball drag turns it exactly as the vanilla Quick start (README.md, verbatim) is turned by the same
+//   drag: the two canvases match before and after.
+// - harness: the components and elements in one scene on an R3F root (frames drawn with `advance`), mounted
+//   and unmounted 1,000 times: renderer.info (geometries, textures, programs) and the canvas's and document's
+//   event listeners (counted by wrapping add/removeEventListener) are back at their baseline; and a hostile
+//   colour prop written in place (ka={[NaN, -1, 0]}) gives one named error over 60 frames, not one per frame.
+import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { expect, type Page, test } from '@playwright/test';
+import react from '@vitejs/plugin-react';
+import { build } from 'vite';
+import { collectBlocks } from '../scripts/snippets.mjs';
+import {
+  canvasPixels,
+  collectPageErrors,
+  expectScenePicture,
+  LECTURE_VIEW,
+  serveFiles,
+} from './picture-helpers';
+
+const repo = fileURLToPath(new URL('..', import.meta.url));
+const port = process.env.SHADELAB_E2E_PORT ?? '4173';
+const out = join(repo, 'reports', `react-${port}`);
+let origin = '';
+let close: (() => Promise<void>) | undefined;
+
+const blocks = collectBlocks();
+/** The guide's complete app: its first tsx block that is neither partial nor a file of another app. */
+const guideApp = blocks.find(
+  (b) => b.file === 'packages/react/docs/guide.md' && b.ext === 'tsx' && !b.partial && !b.path,
+);
+const quickStart = blocks.find((b) => b.file === 'README.md' && b.run === 'lecture');
+
+/** The harness page: one scene with every component and element, and the hooks the tests drive. */
+const HARNESS = `
+import { advance, createRoot, events, extend } from '@react-three/fiber';
+import { PhongLight } from '@shadelab/material';
+import { AutoDetailSphere, LectureCamera, Trackball } from '@shadelab/react';
+import { useEffect, useMemo } from 'react';
+import * as THREE from 'three';
+
+// <Canvas> registers three's classes; a bare root does not.
+extend(THREE as never);
+
+// Listeners alive on the canvas and the document: each (type, listener, capture) once, as the DOM keeps them.
+type Entry = { target: string; type: string; listener: unknown; capture: boolean };
+const live: Entry[] = [];
+function watch(target: EventTarget, name: string) {
+  const add = target.addEventListener.bind(target);
+  const remove = target.removeEventListener.bind(target);
+  const captureOf = (o: unknown) => (typeof o === 'boolean' ? o : !!(o as { capture?: boolean } | undefined)?.capture);
+  const find = (type: string, listener: unknown, capture: boolean) =>
+    live.findIndex((e) => e.target === name && e.type === type && e.listener === listener && e.capture === capture);
+  target.addEventListener = (type: string, listener: never, options?: never) => {
+    if (listener && find(type, listener, captureOf(options)) < 0) live.push({ target: name, type, listener, capture: captureOf(options) });
+    add(type, listener, options);
+  };
+  target.removeEventListener = (type: string, listener: never, options?: never) => {
+    const i = find(type, listener, captureOf(options));
+    if (i >= 0) live.splice(i, 1);
+    remove(type, listener, options);
+  };
+}
+
+const canvas = document.createElement('canvas');
+canvas.style.width = '400px';
+canvas.style.height = '400px';
+watch(canvas, 'canvas');
+watch(document, 'document');
+document.body.append(canvas);
+
+function Scene({ ka, onMounted }: { ka?: [number, number, number]; onMounted: () => void }) {
+  const light = useMemo(() => new PhongLight({ ambient: 0.2, diffuse: 1, specular: 0.8 }), []);
+  useEffect(onMounted, []);
+  return (
+    <>
+      <LectureCamera makeDefault eye={[0, 0, 3]} fovy={90} near={0.1} far={10} />
+      <primitive object={light} position={[-5, 10, 20]} />
+      <Trackball makeDefault>
+        <mesh scale={[2, 1, 2]}>
+          <subdivisionSphereGeometry args={[{ level: 4, normals: 'none' }]} />
+          <shadingMaterial shading="phong" lighting="blinn-phong" phongLights={[light]} ka={ka ?? [1, 1, 1]} />
+        </mesh>
+      </Trackball>
+      <AutoDetailSphere maxErrorPx={1} position={[0, 0.8, 1]} scale={0.2}>
+        <shadingMaterial shading="gouraud" phongLights={[light]} />
+      </AutoDetailSphere>
+      <mesh position={[0, -0.8, 1]} scale={0.2}>
+        <subdivisionSphereGeometry args={[{ level: 2 }]} />
+        <outlineMaterial thickness={0.05} color="#102030" />
+      </mesh>
+    </>
+  );
+}
+function Empty({ onMounted }: { onMounted: () => void }) {
+  useEffect(onMounted, []);
+  return null;
+}
+
+const root = createRoot(canvas);
+let gl: THREE.WebGLRenderer | undefined;
+const ready = root
+  .configure({ events, frameloop: 'never', dpr: 1, flat: true, size: { width: 400, height: 400, top: 0, left: 0 } })
+  .then((r) => {
+    gl = r.render(null).getState().gl as THREE.WebGLRenderer;
+  });
+const frame = () => advance(performance.now());
+const stats = () => ({
+  geometries: gl!.info.memory.geometries,
+  textures: gl!.info.memory.textures,
+  programs: gl!.info.programs?.length ?? 0,
+  listeners: live.map((e) => e.target + ':' + e.type).sort(),
+});
+const mount = (ka?: [number, number, number]) =>
+  new Promise<void>((resolve) => root.render(<Scene ka={ka} onMounted={resolve} />));
+const unmount = () => new Promise<void>((resolve) => root.render(<Empty onMounted={resolve} />));
+
+Object.assign(window, {
+  harness: {
+    ready: () => ready,
+    stats,
+    frame,
+    async cycles(n: number) {
+      let mounted = stats();
+      for (let i = 0; i < n; i++) {
+        await mount();
+        frame();
+        if (i === 0) mounted = stats();
+        await unmount();
+        frame();
+      }
+      return mounted;
+    },
+    async hostile(frames: number) {
+      await mount([Number.NaN, -1, 0]);
+      for (let i = 0; i < frames; i++) frame();
+    },
+  },
+});
+`;
+
+test.describe.configure({ mode: 'default' });
+
+test.beforeAll(async () => {
+  test.setTimeout(180_000);
+  if (!guideApp || !quickStart) throw new Error('the R3F guide’s app or the README’s Quick start is missing');
+  rmSync(out, { recursive: true, force: true });
+  const pages: Record<string, { file: string; code: string; root?: boolean }> = {
+    guide: { file: 'main.tsx', code: guideApp.code, root: true },
+    quickstart: { file: 'main.ts', code: quickStart.code },
+    harness: { file: 'main.tsx', code: HARNESS },
+  };
+  const input: Record<string, string> = {};
+  for (const [name, page] of Object.entries(pages)) {
+    const dir = join(out, 'src', name);
+    mkdirSync(dir, { recursive: true });
+    writeFileSync(join(dir, page.file), page.code);
+    writeFileSync(
+      join(dir, 'index.html'),
+      `<!doctype html>
+<html lang="en">
+  <head>
+    <meta charset="utf-8" />
+    <link rel="icon" href="data:," />
+    <title>${name}</title>
+    <style>html, body { margin: 0; } canvas { display: block; }</style>
+  </head>
+  <body>
+    ${page.root ? '<div id="root"></div>' : ''}
+    <script type="module" src="./${page.file}"></script>
+  </body>
+</html>
+`,
+    );
+    input[name] = join(dir, 'index.html');
+  }
+  await build({
+    configFile: false,
+    root: join(out, 'src'),
+    base: './',
+    logLevel: 'warn',
+    plugins: [react()],
+    build: {
+      outDir: join(out, 'dist'),
+      emptyOutDir: true,
+      chunkSizeWarningLimit: 4096,
+      rollupOptions: { input },
+    },
+  });
+  const dist = join(out, 'dist');
+  ({ origin, close } = await serveFiles((path) => {
+    const file = normalize(join(dist, path.endsWith('/') ? `${path}index.html` : path));
+    return file.startsWith(dist) ? file : undefined;
+  }));
+});
+
+test.afterAll(async () => {
+  await close?.();
+});
+
+/** A 40 × 40 grid of the 800 × 800 canvas's pixels. */
+const GRID = Array.from({ length: 1600 }, (_, i) => ({
+  x: 10 + 20 * (i % 40),
+  y: 10 + 20 * Math.floor(i / 40),
+}));
+const grid = async (page: Page) => (await canvasPixels(page, GRID)) as number[][];
+const maxDifference = (a: number[][], b: number[][]) =>
+  Math.max(...a.flatMap((p, i) => p.map((c, j) => Math.abs(c - b[i][j]))));
+const changed = (a: number[][], b: number[][]) => a.filter((p, i) => p.some((c, j) => c !== b[i][j])).length;
+
+/** A drag straight down from the centre: a turn about the camera's x axis, which tilts the ellipsoid. */
+async function drag(page: Page) {
+  await page.mouse.move(400, 400);
+  await page.mouse.down();
+  await page.mouse.move(400, 600, { steps: 10 });
+  await page.mouse.up();
+}
+
+test('the R3F guide’s app draws the lecture’s lit ellipsoid, and a trackball drag turns it as the vanilla trackball does', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 900, height: 900 });
+  const errors = collectPageErrors(page);
+  await page.goto(`${origin}/quickstart/`);
+  await expectScenePicture(page, LECTURE_VIEW, errors);
+  const vanilla = await grid(page);
+  await drag(page);
+  await expect.poll(async () => changed(vanilla, await grid(page))).toBeGreaterThan(100);
+  const vanillaTurned = await grid(page);
+
+  await page.goto(`${origin}/guide/`);
+  await expectScenePicture(page, LECTURE_VIEW, errors);
+  const before = await grid(page);
+  // The same picture as the vanilla Quick start (flat: no tone mapping), within rasteriser rounding.
+  expect(maxDifference(before, vanilla)).toBeLessThanOrEqual(2);
+  await drag(page);
+  // frameloop="demand": the drag invalidated the frame; the ellipsoid tilted as the vanilla one did.
+  await expect.poll(async () => maxDifference(await grid(page), vanillaTurned)).toBeLessThanOrEqual(2);
+  expect(changed(before, await grid(page))).toBeGreaterThan(100);
+  expect(errors).toEqual([]);
+});
+
+test('mounting and unmounting the scene 1,000 times leaves renderer.info and the listeners at their baseline', async ({
+  page,
+}) => {
+  test.setTimeout(600_000);
+  const errors = collectPageErrors(page);
+  await page.goto(`${origin}/harness/`);
+  type Stats = { geometries: number; textures: number; programs: number; listeners: string[] };
+  type Harness = { ready(): Promise<void>; stats(): Stats; cycles(n: number): Promise<Stats> };
+  const baseline = await page.evaluate(async () => {
+    const h = (window as unknown as { harness: Harness }).harness;
+    await h.ready();
+    return h.stats();
+  });
+  // R3F's own pointer listeners on the canvas are the baseline; nothing of the scene's is.
+  expect(baseline.listeners.length).toBeGreaterThan(0);
+  expect(baseline.geometries).toBe(0);
+  const mounted = await page.evaluate(() => (window as unknown as { harness: Harness }).harness.cycles(1000));
+  // While mounted, the scene's resources and the trackball's listeners were there (the check is not vacuous).
+  expect(mounted.geometries).toBeGreaterThanOrEqual(3);
+  expect(mounted.programs).toBeGreaterThan(baseline.programs);
+  expect(mounted.listeners).toEqual([...baseline.listeners, 'canvas:pointerdown', 'canvas:wheel'].sort());
+  // R3F disposes what it created at idle priority: wait for it, then compare.
+  await expect
+    .poll(() => page.evaluate(() => (window as unknown as { harness: Harness }).harness.stats()), {
+      timeout: 30_000,
+    })
+    .toEqual(baseline);
+  expect(errors).toEqual([]);
+});
+
+test('a hostile colour prop written in place (ka={[NaN, -1, 0]}) gives one error naming it, not one per frame', async ({
+  page,
+}) => {
+  const errors = collectPageErrors(page);
+  await page.goto(`${origin}/harness/`);
+  await page.evaluate(async () => {
+    const h = (
+      window as unknown as { harness: { ready(): Promise<void>; hostile(n: number): Promise<void> } }
+    ).harness;
+    await h.ready();
+    await h.hostile(60);
+  });
+  expect(errors).toHaveLength(1);
+  expect(errors[0]).toContain('ShadingMaterial.ka');
+  expect(errors[0]).toContain('NaN');
+});
