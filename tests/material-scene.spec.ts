@@ -518,3 +518,21 @@ test("0, 1 and 64 of each of three's light kinds compile in every shading; flipp
   // Every render drew the sphere (not the clear colour (0, 0, 255)) with finite colours.
   for (const c of centres) expect(c).not.toEqual([0, 0, 255]);
 });
+
+for (const [name, variant] of [
+  ['phong', {}],
+  ['gouraud', { shading: 'gouraud' }],
+  ['flat', { shading: 'flat' }],
+  ['the impostor', { object: 'impostor' }],
+  [
+    'instanced, with three’s lights too',
+    { object: 'instanced', instances: THREE_INSTANCES, threeLights: THREE_LIGHTS },
+  ],
+] as const) {
+  test(`a PhongLight in the scene lights ${name} without being listed (= shade())`, async ({ page }) => {
+    await open(page);
+    const stats = await scene(page, { shading: 'phong', ...variant, listed: false });
+    expectOracleCoverage(stats, 3000);
+    expectShade(stats, 'shading' in variant && variant.shading === 'flat' ? 1500 : 2500);
+  });
+}

@@ -630,9 +630,17 @@ function programSources(): ProgramSource[] {
     });
     const attenuated = new PhongLight({ attenuation: { a: 1, b: 0.2, c: 0.05 } });
     attenuated.position.set(1, 2, 4);
-    const draw = (name: string, mesh: Mesh, material: ShaderMaterial, extra: Object3D[] = []): void => {
+    const draw = (
+      name: string,
+      mesh: Mesh,
+      material: ShaderMaterial,
+      extra: Object3D[] = [],
+      withLights = true,
+    ): void => {
       const scene = new Scene();
-      scene.add(mesh, ...lights, attenuated, ...extra);
+      scene.add(mesh, ...extra);
+      // A material with no PhongLight listed is lit by the scene's: its 0-light program is that of a scene without.
+      if (withLights) scene.add(...lights, attenuated);
       r.render(scene, camera);
       const program = (r.properties.get(material) as { currentProgram?: WebGLProgramInfo }).currentProgram;
       if (program === undefined) throw new Error(`no program for ${name}`);
@@ -674,7 +682,7 @@ function programSources(): ProgramSource[] {
       ] as const) {
         const material = new ShadingMaterial({ shading, lights: [...list] });
         const geometry = shading === 'flat' ? geometries.corners : geometries.analytic;
-        draw(`${shading} lights ${count}`, new Mesh(geometry, material), material);
+        draw(`${shading} lights ${count}`, new Mesh(geometry, material), material, [], count !== 0);
       }
     }
     for (const path of ['analytic', 'normals'] as const) {
@@ -758,6 +766,8 @@ export interface SceneConfig {
   threeLights?: readonly SceneThreeLight[];
   /** The PhongLight at (−5, 10, 20) in the scene and the material's list. @default true */
   phongLight?: boolean;
+  /** The PhongLight in the material's list (else found in the scene). @default true */
+  listed?: boolean;
 }
 
 /** One of three's lights (colours linear). */
@@ -940,7 +950,7 @@ function buildScene(config: SceneConfig): SceneSetup {
   const material = new (kind === 'impostor' ? SphereImpostorMaterial : ShadingMaterial)({
     ...(kind === 'impostor' ? {} : { shading: config.shading }),
     lighting: config.lighting ?? 'phong',
-    lights: config.phongLight === false ? [] : [light],
+    lights: config.phongLight === false || config.listed === false ? [] : [light],
     ...(config.ka ? { ka: config.ka } : {}),
     ...(config.constant ? { kd: 0, ks: 0 } : {}),
   });

@@ -325,6 +325,45 @@ describe("three's lights", () => {
   });
 });
 
+describe('PhongLights found in the scene', () => {
+  it('light the material without being listed; a non-empty list restricts the set; searched once per frame', () => {
+    const m = new ShadingMaterial();
+    const mesh = new Mesh(sphere(), m);
+    const a = new PhongLight({ diffuse: 0.5 });
+    a.position.set(1, 2, 3);
+    const b = new PhongLight({ attenuation: { a: 1, b: 0.5, c: 0 } });
+    b.position.set(-4, 0, 0);
+    const hidden = new PhongLight();
+    hidden.visible = false; // three skips it: so does the search
+    const scene = new Scene();
+    scene.add(mesh, a, new Group().add(b), hidden);
+    scene.updateMatrixWorld();
+    const frame = { info: { render: { frame: 7 } } } as unknown as WebGLRenderer;
+    const at = () =>
+      m.onBeforeRender(frame, scene, new PerspectiveCamera(), mesh.geometry, mesh, new Group());
+    at();
+    expect(m.defines.NUM_LIGHTS).toBe(2);
+    expect(m.defines.USE_ATTENUATION).toBe('');
+    expect(Array.from(m.uniforms.lightPosition.value as Float32Array)).toEqual([1, 2, 3, -4, 0, 0]);
+    scene.add(new PhongLight()); // the same frame: the scene was already searched
+    at();
+    expect(m.defines.NUM_LIGHTS).toBe(2);
+    frame.info.render.frame++;
+    at();
+    expect(m.defines.NUM_LIGHTS).toBe(3);
+    m.phongLights = [a]; // an explicit list restricts the set
+    at();
+    expect(m.defines.NUM_LIGHTS).toBe(1);
+    expect(m.defines.USE_ATTENUATION).toBeUndefined();
+    expect(Array.from(m.uniforms.lightDiffuse.value as Float32Array)).toEqual(
+      [0.3, 0.175, 0.1].map(Math.fround),
+    );
+    m.phongLights = []; // empty again: the scene's
+    at();
+    expect(m.defines.NUM_LIGHTS).toBe(3);
+  });
+});
+
 describe('eyeOf', () => {
   it('is the camera position for a perspective camera', () => {
     const camera = new PerspectiveCamera(60, 1.5, 0.1, 100);

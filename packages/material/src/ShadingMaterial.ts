@@ -56,7 +56,10 @@ export interface ShadingMaterialOptions {
   ks?: ColorInput;
   /** α, the specular exponent: finite, ≥ 0 (0⁰ = 1: shininess 0 gives a uniform highlight). @default 32 */
   shininess?: number;
-  /** The lights; any number (each costs 4 uniform vectors; a GPU has ≥ 224). @default [] */
+  /**
+   * The PhongLights that light the material; any number (each costs 4 uniform vectors; a GPU has ≥ 224). Empty:
+   * every visible PhongLight in the rendered scene. @default []
+   */
   lights?: readonly PhongLight[];
 }
 
@@ -78,6 +81,8 @@ interface SceneLights {
   frame: number;
   /** Some visible three.js light (AmbientLight, HemisphereLight, PointLight, DirectionalLight, SpotLight, …). */
   threeLights: boolean;
+  /** The visible PhongLights, in traversal order. */
+  phong: PhongLight[];
 }
 
 const _sceneLights = /* @__PURE__ */ new WeakMap<Object3D, SceneLights>();
@@ -88,12 +93,13 @@ const _sceneLights = /* @__PURE__ */ new WeakMap<Object3D, SceneLights>();
  */
 function sceneLightsOf(renderer: WebGLRenderer | null, scene: Scene | null): SceneLights {
   const frame = renderer?.info?.render?.frame ?? Number.NaN;
-  if (scene === null || scene === undefined) return { frame, threeLights: false };
+  if (scene === null || scene === undefined) return { frame, threeLights: false, phong: [] };
   const cached = _sceneLights.get(scene);
   if (cached !== undefined && cached.frame === frame) return cached;
-  const found: SceneLights = { frame, threeLights: false };
+  const found: SceneLights = { frame, threeLights: false, phong: [] };
   scene.traverseVisible((object) => {
     if ((object as Light).isLight === true) found.threeLights = true;
+    else if (object instanceof PhongLight) found.phong.push(object);
   });
   _sceneLights.set(scene, found);
   return found;
@@ -163,6 +169,8 @@ export class ShadingMaterial extends ShaderMaterial {
   #celBands = 0;
   #shininess = 32;
   #lights: readonly PhongLight[] = Object.freeze([]);
+  // The PhongLights that light the last draw: the list when it is not empty, else the scene's.
+  #active: readonly PhongLight[] = this.#lights;
   readonly #ka = new Color(0.6, 0.35, 0.2);
   readonly #kd = new Color(0.6, 0.35, 0.2);
   readonly #ks = new Color(0.5, 0.5, 0.5);
@@ -299,8 +307,9 @@ export class ShadingMaterial extends ShaderMaterial {
 
   /**
    * The PhongLights (the `lights` option; named so because three's `ShaderMaterial.lights` is the flag for
-   * three's own lights, which the material raises itself when the scene has one). A frozen copy; assign a new
-   * array to change it. The number of lights is part of the variant. @default []
+   * three's own lights, which the material raises itself when the scene has one). Empty (the default): every
+   * visible PhongLight in the rendered scene lights the material; not empty: only these do. A frozen copy;
+   * assign a new array to change it. The number of lights is part of the variant. @default []
    */
   get phongLights(): readonly PhongLight[] {
     return this.#lights;
@@ -315,6 +324,7 @@ export class ShadingMaterial extends ShaderMaterial {
       }
     });
     this.#lights = Object.freeze([...value]);
+    this.#active = this.#lights;
     this.#attenuation = this.#lights.some((light) => light.attenuates);
     this.#syncDefines();
   }
@@ -363,8 +373,10 @@ export class ShadingMaterial extends ShaderMaterial {
       u.facePositions.value = null;
       u.faceSkin.value = null;
     }
-    this.#attenuation = this.#lights.some((light) => light.attenuates);
-    this.#threeLights = sceneLightsOf(_renderer, _scene).threeLights;
+    const seen = sceneLightsOf(_renderer, _scene);
+    this.#active = this.#lights.length > 0 ? this.#lights : seen.phong;
+    this.#attenuation = this.#active.some((light) => light.attenuates);
+    this.#threeLights = seen.threeLights;
     this.#syncDefines();
     this.#updateLightUniforms();
     computeNormalMatrix(object.matrixWorld, u.shadingNormalMatrix.value);
@@ -377,7 +389,7 @@ export class ShadingMaterial extends ShaderMaterial {
     defines[`SHADING_${this.#shading.toUpperCase()}`] = '';
     if (this.#lighting === 'blinn-phong') defines.LIGHTING_BLINN = '';
     defines.CEL_BANDS = this.#celBands;
-    defines.NUM_LIGHTS = this.#lights.length;
+    defines.NUM_LIGHTS = this.#active.length;
     if (this.#attenuation) defines.USE_ATTENUATION = '';
     if (this.#sphereNormals && this.#shading !== 'flat') defines.SPHERE_NORMALS = '';
     if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
@@ -390,8 +402,8 @@ export class ShadingMaterial extends ShaderMaterial {
     // three's `ShaderMaterial.lights`: upload three's light uniforms (only when the scene has three's lights).
     this.lights = this.#threeLights;
     if (old.NUM_LIGHTS !== defines.NUM_LIGHTS) {
-      this.vertexShader = withLightCount(vertexShader, this.#lights.length);
-      this.fragmentShader = withLightCount(fragmentShader, this.#lights.length);
+      this.vertexShader = withLightCount(vertexShader, this.#active.length);
+      this.fragmentShader = withLightCount(fragmentShader, this.#active.length);
     }
     this.needsUpdate = true;
   }
@@ -405,7 +417,7 @@ export class ShadingMaterial extends ShaderMaterial {
       checkColorChannels('ShadingMaterial.ka', this.#ka);
       checkColorChannels('ShadingMaterial.kd', this.#kd);
       checkColorChannels('ShadingMaterial.ks', this.#ks);
-      this.#lights.forEach((light, i) => {
+      this.#active.forEach((light, i) => {
         try {
           light.validate();
         } catch (error) {
@@ -429,7 +441,7 @@ export class ShadingMaterial extends ShaderMaterial {
   }
 
   #updateLightUniforms(): void {
-    const lights = this.#lights;
+    const lights = this.#active;
     const n = lights.length;
     const u = this.uniforms;
     const resized = u.lightPosition.value.length !== 3 * n;
@@ -500,6 +512,7 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#celBands = source.celBands;
     this.#shininess = source.shininess;
     this.#lights = source.phongLights;
+    this.#active = this.#lights;
     this.#ka.copy(source.ka);
     this.#kd.copy(source.kd);
     this.#ks.copy(source.ks);

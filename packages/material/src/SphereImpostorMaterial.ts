@@ -126,7 +126,7 @@ export class SphereImpostorMaterial extends ShadingMaterial {
 
 /** Put the impostor's shaders back (ShadingMaterial resets its own when the light count changes). */
 function syncShaders(material: ShadingMaterial): void {
-  const n = material.phongLights.length;
+  const n = Number(material.defines.NUM_LIGHTS ?? 0); // the listed PhongLights, or the scene's
   const vertex = impostorVertexShader;
   const fragment = withLightCount(impostorFragmentShader, n);
   if (material.vertexShader !== vertex || material.fragmentShader !== fragment) {
