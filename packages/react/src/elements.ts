@@ -28,8 +28,8 @@ export type ShadelabElement<T extends ConstructorRepresentation, Colors extends 
 /**
  * The JSX elements `@shadelab/react` registers, by element name: each takes the class's documented properties
  * as props (validated by their setters as the class validates them) and its constructor's options in `args`.
- * `<shadingMaterial>`'s light list is `phongLights` (three's `lights` is the boolean flag of ShaderMaterial);
- * a `<phongLight>` anywhere in the scene is found by the material without being listed.
+ * `<shadingMaterial>`'s list of PhongLights is `phongLights` (three's `lights` is the boolean flag of
+ * ShaderMaterial, not the list).
  */
 export interface ShadelabElements {
   /** `ShadingMaterial`: flat, Gouraud or Phong shading with Phong, Blinn-Phong or cel lighting. */
