@@ -175,6 +175,8 @@ async function makeApp(app: App): Promise<void> {
   const tarballs = Object.fromEntries(
     packed
       .filter((p) => app === 'playwright' || p.name !== '@shadelab/playwright')
+      // @shadelab/react only in the R3F app (its peers, react and @react-three/fiber, are that app's).
+      .filter((p) => app === 'r3f' || p.name !== '@shadelab/react')
       .map((p) => [p.name, `file:${p.tarball}`]),
   );
   const pkg = {
@@ -291,7 +293,7 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
     );
     for (const f of p.files) {
       expect(f, p.name).toMatch(
-        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.(ts|js)|docs\/(api\/)?[\w.@-]+\.md)$/,
+        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.(ts|tsx|js)|docs\/(api\/)?[\w.@-]+\.md)$/,
       );
       // (Not a test: docs/api/@shadelab.playwright.test.md, the reference of the @shadelab/playwright/test entry.)
       expect(f, p.name).not.toMatch(/\.test\.(ts|js|d\.ts)(\.map)?$|test-util|tsbuildinfo/);
@@ -327,7 +329,7 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
       expect(p.files, `${p.name}: ${js}`).toContain(js.replace(/\.js$/, '.d.ts'));
       const source = js.replace(/^dist\/(.*)\.js$/, 'src/$1');
       expect(
-        p.files.includes(`${source}.ts`) || p.files.includes(`${source}.js`),
+        ['ts', 'tsx', 'js'].some((ext) => p.files.includes(`${source}.${ext}`)),
         `${p.name}: ${js} has no source`,
       ).toBe(true);
     }
@@ -341,7 +343,8 @@ test('each package.json is ready to publish: types-first exports, files, no side
     const where = `packages/${folder}/package.json`;
     expect(manifest.private, where).toBeUndefined();
     expect(manifest.type, where).toBe('module');
-    expect(manifest.sideEffects, where).toBe(false);
+    // @shadelab/react's one job on import is registering its JSX elements with R3F's extend: a side effect.
+    expect(manifest.sideEffects, where).toBe(folder === 'react');
     expect(Object.keys(manifest.exports ?? {}), `${where}: exports`).toContain('.');
     // Every entry point (the main one and subpaths such as './impostor') lists "types" first, and both files
     // are in the tarball.
