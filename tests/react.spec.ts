@@ -168,7 +168,7 @@ test.beforeAll(async () => {
     <meta charset="utf-8" />
     <link rel="icon" href="data:," />
     <title>${name}</title>
-    <style>html, body { margin: 0; } canvas { display: block; }</style>
+    <style>html, body { margin: 0; } canvas { display: block; } #root { width: 800px; height: 800px; }</style>
   </head>
   <body>
     ${page.root ? '<div id="root"></div>' : ''}
