@@ -1,9 +1,9 @@
 // Ready to `npm install`: the packed tarballs, installed into fresh apps made in a temporary folder (plain
-// three.js on the newest and on the oldest supported three, react-three-fiber, and a user's app whose main.ts
-// is the README's Quick start, extracted verbatim at test time), type-check with the app's own TypeScript 5 in
-// strict mode, build with Vite and render the lecture's scene in Chromium. The three.js apps check every
-// declaration file too (skipLibCheck off: our .d.ts against @types/three old and new); the r3f app keeps Vite's
-// template default (skipLibCheck on). The app sources are tools/pack-apps/<app>/ (kept out of the repo's own
+// three.js on the newest and on the oldest supported three, a user's app whose main.ts is the README's Quick
+// start, and a react-three-fiber app whose main.tsx is the R3F guide's example, both extracted verbatim at test
+// time), type-check with the app's own TypeScript 5 in strict mode, build with Vite and render the lecture's
+// scene in Chromium. Every app checks every declaration file too (skipLibCheck off: our .d.ts against
+// @types/three old and new, and @shadelab/react's against R3F's and React's). The app sources are tools/pack-apps/<app>/ (kept out of the repo's own
 // type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
@@ -88,6 +88,15 @@ test('deliberately failing: the exact image of another shininess', async ({ page
   return files;
 }
 
+/** The R3F guide's complete app (its one tsx block that is neither partial nor a file= block), verbatim. */
+function r3fGuideApp(): string {
+  const blocks = collectBlocks({ files: ['packages/react/docs/guide.md'] }).filter(
+    (b) => b.ext === 'tsx' && !b.partial && b.path === undefined,
+  );
+  expect(blocks.length, 'the R3F guide has one complete app').toBe(1);
+  return blocks[0].code;
+}
+
 /**
  * Each app: its source folder in tools/pack-apps, the dependencies it adds or overrides, and a src/main.ts
  * that replaces the folder's (or every file, for the testing guide's app).
@@ -100,8 +109,10 @@ const apps = {
     template: 'vanilla',
     dependencies: { three: oldest.three, '@types/three': oldest['@types/three'] },
   },
+  // A user's R3F app whose src/main.tsx is the R3F guide's example, with @shadelab/react from its tarball.
   r3f: {
     template: 'r3f',
+    main: r3fGuideApp,
     dependencies: {
       react: '^19.3.1',
       'react-dom': '^19.3.1',
@@ -164,7 +175,10 @@ async function makeApp(app: App): Promise<void> {
   const dir = join(tmp, app);
   cpSync(join(repo, 'tools', 'pack-apps', apps[app].template), dir, { recursive: true });
   const spec = apps[app];
-  if ('main' in spec) writeFileSync(join(dir, 'src', 'main.ts'), spec.main());
+  if ('main' in spec) {
+    mkdirSync(join(dir, 'src'), { recursive: true });
+    writeFileSync(join(dir, 'src', spec.template === 'r3f' ? 'main.tsx' : 'main.ts'), spec.main());
+  }
   if ('files' in spec) {
     for (const [path, text] of Object.entries(spec.files())) {
       mkdirSync(dirname(join(dir, path)), { recursive: true });
