@@ -536,3 +536,22 @@ for (const [name, variant] of [
     expectShade(stats, 'shading' in variant && variant.shading === 'flat' ? 1500 : 2500);
   });
 }
+
+for (const side of ['double', 'back'] as const)
+  for (const mirrored of [false, true])
+    for (const shading of ['phong', 'gouraud', 'flat'] as const)
+      test(`side ${side === 'double' ? 'DoubleSide' : 'BackSide'}${mirrored ? ' × mirrored (det < 0)' : ''}, ${shading}: a back face is lit with its flipped normal (= shade())`, async ({
+        page,
+      }) => {
+        await open(page);
+        const stats = await page.evaluate((c) => window.materialHarness.sideCompare(c), {
+          side,
+          mirrored,
+          shading,
+        });
+        const info = JSON.stringify(stats);
+        expect(stats.compared, info).toBeGreaterThan(1000);
+        expect(stats.maxError, info).toBeLessThanOrEqual(2);
+        // Lit by the light in front (not the ambient-only colour of the unflipped normal).
+        expect(stats.centre[0], info).toBeGreaterThan(150);
+      });

@@ -30,6 +30,7 @@ import {
   Color,
   CylinderGeometry,
   DirectionalLight,
+  DoubleSide,
   Euler,
   Float32BufferAttribute,
   Fog,
@@ -49,6 +50,7 @@ import {
   OrthographicCamera,
   PerspectiveCamera,
   Plane,
+  PlaneGeometry,
   PointLight,
   Quaternion,
   Raycaster,
@@ -1630,7 +1632,83 @@ function threeLightExtremes(): { swept: number; programs: number; variants: numb
   return { swept, programs, variants: variants.size, centres };
 }
 
+/**
+ * A 4 × 4 plane turned away from the camera (its back face visible), optionally mirrored (scale.x = −1), with
+ * `side` DoubleSide or BackSide, lit by a far PhongLight on the camera's side: every pixel against shade() with
+ * the normal the lecture's rule gives (the world normal flipped towards the viewer).
+ */
+function sideCompare(config: { side: 'double' | 'back'; mirrored: boolean; shading: Shading }): {
+  compared: number;
+  maxError: number;
+  centre: number[];
+  expected: number[];
+} {
+  const size = 64;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(3000, 4000, 10000);
+  const material = new ShadingMaterial({ shading: config.shading, ka: 0.2, ks: 0, lights: [light] });
+  material.side = config.side === 'double' ? DoubleSide : BackSide;
+  const plane = new PlaneGeometry(4, 4, 8, 8);
+  const mesh = new Mesh(config.shading === 'flat' ? plane.toNonIndexed() : plane, material);
+  mesh.rotation.y = Math.PI; // its front face looks down −z, away from the camera
+  if (config.mirrored) mesh.scale.x = -1;
+  const scene = new Scene();
+  scene.add(mesh, light);
+  scene.updateMatrixWorld();
+  const camera = makeCamera(false);
+  const pixels = readPixels(renderer, scene, camera, size);
+  const nm = computeNormalMatrix(mesh.matrixWorld, new Matrix3());
+  const e = eyeOf(camera, new Vector4());
+  const ray = new Raycaster();
+  const hit = new Vector3();
+  const m: ShadeMaterial = {
+    ka: material.ka.toArray(),
+    kd: material.kd.toArray(),
+    ks: [0, 0, 0],
+    shininess: 32,
+  };
+  const lights: ShadeLight[] = [
+    {
+      position: light.position.toArray(),
+      ambient: light.ambient.toArray(),
+      diffuse: light.diffuse.toArray(),
+      specular: light.specular.toArray(),
+    },
+  ];
+  let compared = 0;
+  let maxError = 0;
+  let centre: number[] = [];
+  let expectedCentre: number[] = [];
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      ray.setFromCamera(new Vector2(((x + 0.5) / size) * 2 - 1, ((y + 0.5) / size) * 2 - 1), camera);
+      ray.ray.intersectPlane(new Plane(new Vector3(0, 0, 1), 0), hit);
+      if (Math.abs(hit.x) > 1.9 || Math.abs(hit.y) > 1.9) continue;
+      const n = new Vector3(0, 0, 1).applyMatrix3(nm).normalize();
+      if (n.dot(new Vector3(e.x, e.y, e.z).sub(hit)) < 0) n.negate(); // the visible side's normal
+      const linear = shade(
+        { position: hit.toArray(), normal: n.toArray(), eye: [e.x, e.y, e.z, e.w] },
+        m,
+        lights,
+      );
+      const i = 4 * (y * size + x);
+      const expected = linear.map((c) => Math.round(Math.min(srgb(c), 1) * 255));
+      const err = Math.max(...expected.map((c, k) => Math.abs(c - pixels[i + k])));
+      compared++;
+      maxError = Math.max(maxError, err);
+      if (x === size / 2 && y === size / 2) {
+        centre = Array.from(pixels.slice(i, i + 3));
+        expectedCentre = expected;
+      }
+    }
+  }
+  material.dispose();
+  return { compared, maxError, centre, expected: expectedCentre };
+}
+
 const api = {
+  sideCompare,
   threeLightExtremes,
   inPlaceEdits,
   compare,

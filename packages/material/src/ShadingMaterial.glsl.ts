@@ -6,6 +6,7 @@
 //   USE_ATTENUATION                                some light has b or c ≠ 0 or a ≠ 1
 //   SPHERE_NORMALS                                 object normal = position (no normal attribute)
 //   FLAT_CORNERS                                   flat shading of a flatShadingGeometry (indexed, per-vertex face)
+// three's DOUBLE_SIDED / FLIP_SIDED (side): a back face is lit with its flipped normal (gl_FrontFacing).
 // and by three's program parameters (USE_INSTANCING, USE_SKINNING, USE_FOG, NUM_CLIPPING_PLANES, …: see
 // shadingChunks.glsl.ts). Everything is in world space. The rules for degenerate inputs match `shade()` in
 // shade.ts exactly. The shaders are lists of chunks: the lecture's equation and stages from shadingChunks,
@@ -36,6 +37,9 @@ ${instanceChunk}
 
 #if defined(SHADING_FLAT)
 flat out vec3 vColor;
+#ifdef DOUBLE_SIDED
+flat out vec3 vColorBack; // the back face's colour, lit with the flipped normal
+#endif
 #ifdef FLAT_CORNERS
 // flatShadingGeometry: this vertex provokes one face; these are its other two corners (object space).
 in vec3 flatCornerA;
@@ -55,6 +59,9 @@ uniform highp sampler2D faceSkin; // per vertex: skinIndex, skinWeight (two texe
 #endif
 #elif defined(SHADING_GOURAUD)
 out vec3 vColor;
+#ifdef DOUBLE_SIDED
+out vec3 vColorBack;
+#endif
 #else
 out vec3 vWorldPosition;
 out vec3 vNormal;
@@ -108,7 +115,18 @@ ${flatDeformVertex}
 #ifdef SHADING_INSTANCE
   faceNormal = shadingRescale( shadingInstanceNormal * faceNormal );
 #endif
+#if defined( DOUBLE_SIDED ) || defined( FLIP_SIDED )
+  // three's sides: a back face is lit with its flipped normal (both colours when both sides are drawn).
+  vec3 backColor = shadeColor(faceCentre, -(shadingNormalMatrix * faceNormal));
+#ifdef DOUBLE_SIDED
   vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
+  vColorBack = backColor;
+#else
+  vColor = backColor;
+#endif
+#else
+  vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
+#endif
 #else
 #ifdef SPHERE_NORMALS
   vec3 objectNormal = position;
@@ -128,7 +146,15 @@ ${flatDeformVertex}
   vec3 worldPosition = (modelMatrix * vec4(position, 1.0)).xyz;
 #endif
   vec3 worldNormal = shadingNormalMatrix * objectNormal;
-#if defined(SHADING_GOURAUD)
+#if defined(SHADING_GOURAUD) && ( defined( DOUBLE_SIDED ) || defined( FLIP_SIDED ) )
+  vec3 backColor = shadeColor(worldPosition, -worldNormal);
+#ifdef DOUBLE_SIDED
+  vColor = shadeColor(worldPosition, worldNormal);
+  vColorBack = backColor;
+#else
+  vColor = backColor;
+#endif
+#elif defined(SHADING_GOURAUD)
   vColor = shadeColor(worldPosition, worldNormal);
 #else
   float normalLength = length(worldNormal);
@@ -147,8 +173,14 @@ export const fragmentShader = /* glsl */ `
 ${sceneFeatures}
 #if defined(SHADING_FLAT)
 flat in vec3 vColor;
+#ifdef DOUBLE_SIDED
+flat in vec3 vColorBack;
+#endif
 #elif defined(SHADING_GOURAUD)
 in vec3 vColor;
+#ifdef DOUBLE_SIDED
+in vec3 vColorBack;
+#endif
 #else
 in vec3 vWorldPosition;
 in vec3 vNormal;
@@ -165,7 +197,15 @@ ${clippingFragment}
 #ifdef SHADING_TINT
   shadingTint = vShadingTint;
 #endif
+#if defined( DOUBLE_SIDED )
+  vec3 color = shadeColor(vWorldPosition, gl_FrontFacing ? vNormal : -vNormal);
+#elif defined( FLIP_SIDED )
+  vec3 color = shadeColor(vWorldPosition, -vNormal);
+#else
   vec3 color = shadeColor(vWorldPosition, vNormal);
+#endif
+#elif defined( DOUBLE_SIDED )
+  vec3 color = gl_FrontFacing ? vColor : vColorBack;
 #else
   vec3 color = vColor;
 #endif
