@@ -15,8 +15,9 @@
 import { createReadStream, existsSync, statSync } from 'node:fs';
 import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { extname } from 'node:path';
+import { extname, join, normalize } from 'node:path';
 import { expect, type Page } from '@playwright/test';
+import { build, type PluginOption } from 'vite';
 
 type Vec3 = readonly [number, number, number];
 
@@ -280,5 +281,34 @@ export function serveFiles(
         close: () => new Promise<void>((done) => server.close(() => done())),
       }),
     );
+  });
+}
+
+/**
+ * Build the pages `input` (name → index.html under `root`) with Vite into `outDir` and serve them: resolves with
+ * the origin and a `close()`. Shared by the specs that bundle pages of their own (snippets, react).
+ */
+export async function buildAndServePages({
+  root,
+  outDir,
+  input,
+  plugins = [],
+}: {
+  root: string;
+  outDir: string;
+  input: Record<string, string>;
+  plugins?: PluginOption[];
+}): Promise<{ origin: string; close: () => Promise<void> }> {
+  await build({
+    configFile: false,
+    root,
+    base: './',
+    logLevel: 'warn',
+    plugins,
+    build: { outDir, emptyOutDir: true, chunkSizeWarningLimit: 4096, rollupOptions: { input } },
+  });
+  return serveFiles((path) => {
+    const file = normalize(join(outDir, path.endsWith('/') ? `${path}index.html` : path));
+    return file.startsWith(outDir) ? file : undefined;
   });
 }

@@ -9,18 +9,17 @@
 //   event listeners (counted by wrapping add/removeEventListener) are back at their baseline; and a hostile
 //   colour prop written in place (ka={[NaN, -1, 0]}) gives one named error over 60 frames, not one per frame.
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
-import { join, normalize } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, type Page, test } from '@playwright/test';
 import react from '@vitejs/plugin-react';
-import { build } from 'vite';
 import { collectBlocks } from '../scripts/snippets.mjs';
 import {
+  buildAndServePages,
   canvasPixels,
   collectPageErrors,
   expectScenePicture,
   LECTURE_VIEW,
-  serveFiles,
 } from './picture-helpers';
 
 const repo = fileURLToPath(new URL('..', import.meta.url));
@@ -179,23 +178,11 @@ test.beforeAll(async () => {
     );
     input[name] = join(dir, 'index.html');
   }
-  await build({
-    configFile: false,
+  ({ origin, close } = await buildAndServePages({
     root: join(out, 'src'),
-    base: './',
-    logLevel: 'warn',
+    outDir: join(out, 'dist'),
+    input,
     plugins: [react()],
-    build: {
-      outDir: join(out, 'dist'),
-      emptyOutDir: true,
-      chunkSizeWarningLimit: 4096,
-      rollupOptions: { input },
-    },
-  });
-  const dist = join(out, 'dist');
-  ({ origin, close } = await serveFiles((path) => {
-    const file = normalize(join(dist, path.endsWith('/') ? `${path}index.html` : path));
-    return file.startsWith(dist) ? file : undefined;
   }));
 });
 

@@ -7,17 +7,16 @@
 // the light when lit (picture-helpers.ts). scripts/snippets.mjs type-checks the same blocks; see DEVELOPERS.md,
 // "Code in docs".
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
-import { join, normalize } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, test } from '@playwright/test';
-import { build } from 'vite';
 import { type Block, collectBlocks } from '../scripts/snippets.mjs';
 import {
+  buildAndServePages,
   collectPageErrors,
   expectScenePicture,
   LECTURE_VIEW,
   type SceneView,
-  serveFiles,
 } from './picture-helpers';
 
 const repo = fileURLToPath(new URL('..', import.meta.url));
@@ -95,22 +94,10 @@ test.beforeAll(async () => {
     );
     input[pageOf(b)] = join(dir, 'index.html');
   }
-  await build({
-    configFile: false,
+  ({ origin, close } = await buildAndServePages({
     root: join(out, 'src'),
-    base: './',
-    logLevel: 'warn',
-    build: {
-      outDir: join(out, 'dist'),
-      emptyOutDir: true,
-      chunkSizeWarningLimit: 4096,
-      rollupOptions: { input },
-    },
-  });
-  const dist = join(out, 'dist');
-  ({ origin, close } = await serveFiles((path) => {
-    const file = normalize(join(dist, path.endsWith('/') ? `${path}index.html` : path));
-    return file.startsWith(dist) ? file : undefined;
+    outDir: join(out, 'dist'),
+    input,
   }));
 });
 
