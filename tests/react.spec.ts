@@ -7,11 +7,15 @@
 // - harness: the components and elements in one scene on an R3F root (frames drawn with `advance`), mounted
 //   and unmounted 1,000 times: renderer.info (geometries, textures, programs) and the canvas's and document's
 //   event listeners (counted by wrapping add/removeEventListener) are back at their baseline; and a hostile
-//   colour prop written in place (ka={[NaN, -1, 0]}) gives one named error over 60 frames, not one per frame.
+//   colour prop written in place (ka={[NaN, -1, 0]}) gives one named error over 60 frames, not one per frame;
+//   a <phongLight> element lights a <shadingMaterial> given no phongLights (the picture of the same light listed;
+//   black without it); <AutoDetailSphere>'s detail follows LectureCamera's eye on the view axis, as the closed
+//   forms of its radius and error scale and chooseSphereDetail say, up and back down.
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, type Page, test } from '@playwright/test';
+import { chooseSphereDetail } from '@shadelab/sphere/detail';
 import react from '@vitejs/plugin-react';
 import { collectBlocks } from '../scripts/snippets.mjs';
 import {
@@ -40,6 +44,7 @@ const HARNESS = `
 import { advance, createRoot, events, extend } from '@react-three/fiber';
 import { PhongLight } from '@shadelab/material';
 import { AutoDetailSphere, LectureCamera, Trackball } from '@shadelab/react';
+import type { AutoDetailSphere as DetailMesh } from '@shadelab/sphere/detail';
 import { useEffect, useMemo } from 'react';
 import * as THREE from 'three';
 
@@ -96,6 +101,40 @@ function Scene({ ka, onMounted }: { ka?: [number, number, number]; onMounted: ()
     </>
   );
 }
+// One light three ways: a <phongLight> element the material finds in the scene (no phongLights), the same light
+// listed in phongLights, or no light at all.
+function Lit({ mode, onMounted }: { mode: 'scene' | 'listed' | 'none'; onMounted: () => void }) {
+  const listed = useMemo(() => new PhongLight({ ambient: 0.2, diffuse: 1, specular: 0.8 }), []);
+  useEffect(onMounted, []);
+  return (
+    <>
+      <LectureCamera makeDefault eye={[0, 0, 3]} fovy={90} near={0.1} far={10} />
+      {mode === 'scene' && <phongLight args={[{ ambient: 0.2, diffuse: 1, specular: 0.8 }]} position={[-5, 10, 20]} />}
+      {mode === 'listed' && <primitive object={listed} position={[-5, 10, 20]} />}
+      <mesh scale={[2, 1, 2]}>
+        <subdivisionSphereGeometry args={[{ level: 4, normals: 'none' }]} />
+        {mode === 'listed' ? (
+          <shadingMaterial shading="phong" phongLights={[listed]} />
+        ) : (
+          <shadingMaterial shading="phong" />
+        )}
+      </mesh>
+    </>
+  );
+}
+// An AutoDetailSphere (radius 0.5, at the origin) seen from [0, 0, eye]; onRendered after every commit.
+let detailSphere: DetailMesh | null = null;
+function Detail({ eye, onRendered }: { eye: number; onRendered: () => void }) {
+  useEffect(onRendered);
+  return (
+    <>
+      <LectureCamera makeDefault eye={[0, 0, eye]} fovy={90} near={0.01} far={100} />
+      <AutoDetailSphere ref={(s) => { detailSphere = s; }} maxErrorPx={0.5} scale={0.5}>
+        <shadingMaterial />
+      </AutoDetailSphere>
+    </>
+  );
+}
 function Empty({ onMounted }: { onMounted: () => void }) {
   useEffect(onMounted, []);
   return null;
@@ -134,6 +173,21 @@ Object.assign(window, {
         frame();
       }
       return mounted;
+    },
+    async lit(mode: 'scene' | 'listed' | 'none') {
+      await new Promise<void>((resolve) => root.render(<Lit key={mode} mode={mode} onMounted={resolve} />));
+      frame();
+    },
+    async detailAt(eye: number) {
+      await new Promise<void>((resolve) => root.render(<Detail eye={eye} onRendered={resolve} />));
+      frame();
+      const { base, level, triangles, radiusPx, errorScalePx } = detailSphere!.detail;
+      const g = detailSphere!.geometry;
+      return {
+        base, level, triangles, radiusPx, errorScalePx,
+        drawn: (g.index ? g.index.count : g.attributes.position.count) / 3,
+        rendered: gl!.info.render.triangles,
+      };
     },
     async hostile(frames: number) {
       await mount([Number.NaN, -1, 0]);
@@ -190,12 +244,15 @@ test.afterAll(async () => {
   await close?.();
 });
 
-/** A 40 × 40 grid of the 800 × 800 canvas's pixels. */
-const GRID = Array.from({ length: 1600 }, (_, i) => ({
-  x: 10 + 20 * (i % 40),
-  y: 10 + 20 * Math.floor(i / 40),
-}));
-const grid = async (page: Page) => (await canvasPixels(page, GRID)) as number[][];
+/** A 40 × 40 grid of the square canvas's pixels (the guide's 800 × 800, or the harness's 400 × 400). */
+const grid = async (page: Page, size = 800) =>
+  (await canvasPixels(
+    page,
+    Array.from({ length: 1600 }, (_, i) => ({
+      x: size / 80 + (size / 40) * (i % 40),
+      y: size / 80 + (size / 40) * Math.floor(i / 40),
+    })),
+  )) as number[][];
 const maxDifference = (a: number[][], b: number[][]) =>
   Math.max(...a.flatMap((p, i) => p.map((c, j) => Math.abs(c - b[i][j]))));
 const changed = (a: number[][], b: number[][]) => a.filter((p, i) => p.some((c, j) => c !== b[i][j])).length;
@@ -277,4 +334,93 @@ test('a hostile colour prop written in place (ka={[NaN, -1, 0]}) gives one error
   expect(errors).toHaveLength(1);
   expect(errors[0]).toContain('ShadingMaterial.ka');
   expect(errors[0]).toContain('NaN');
+});
+
+type LitMode = 'scene' | 'listed' | 'none';
+type DetailSeen = {
+  base: string;
+  level: number;
+  triangles: number;
+  radiusPx: number;
+  errorScalePx: number;
+  drawn: number;
+  rendered: number;
+};
+type SceneHarness = {
+  ready(): Promise<void>;
+  lit(mode: LitMode): Promise<void>;
+  detailAt(eye: number): Promise<DetailSeen>;
+};
+
+test('a <phongLight> in the scene lights a <shadingMaterial> given no phongLights, as listing it does', async ({
+  page,
+}) => {
+  const errors = collectPageErrors(page);
+  await page.goto(`${origin}/harness/`);
+  const draw = async (mode: LitMode) => {
+    await page.evaluate(async (m) => {
+      const h = (window as unknown as { harness: SceneHarness }).harness;
+      await h.ready();
+      await h.lit(m);
+    }, mode);
+    return grid(page, 400);
+  };
+  const found = await draw('scene');
+  const listed = await draw('listed');
+  const unlit = await draw('none');
+  // The material found the element in the scene: the picture of the same light listed, within rounding.
+  expect(maxDifference(found, listed)).toBeLessThanOrEqual(1);
+  // And it is lit: without any light there is no ambient term either, so the ellipsoid is drawn black (on the
+  // page's white through the transparent canvas); with the light found, every one of those pixels has colour.
+  const black = (p: number[]) => p.every((c) => c === 0);
+  const ellipsoid = unlit.flatMap((p, i) => (black(p) ? [i] : []));
+  expect(ellipsoid.length).toBeGreaterThan(400);
+  expect(ellipsoid.filter((i) => black(found[i]))).toEqual([]);
+  expect(errors).toEqual([]);
+});
+
+test('<AutoDetailSphere> follows the R3F camera: moving the eye closer raises the detail, moving back restores it', async ({
+  page,
+}) => {
+  const errors = collectPageErrors(page);
+  await page.goto(`${origin}/harness/`);
+  const eyes = [6, 1.5, 0.8, 6];
+  const seen = await page.evaluate(async (eyes) => {
+    const h = (window as unknown as { harness: SceneHarness }).harness;
+    await h.ready();
+    const out: DetailSeen[] = [];
+    for (const eye of eyes) out.push(await h.detailAt(eye));
+    return out;
+  }, eyes);
+  // The sphere (R = 0.5 at the origin) seen on the view axis with fovy 90° (P₁₁ = 1) in 400 pixels: its radius on
+  // screen R·(H/2)/√(d² − R²) and its error scale (H/2)·R·d²/(d² − R²)^{3/2}, exact there; the detail is
+  // chooseSphereDetail's for that scale within the harness's budget (0.5 px, levels up to 8).
+  const [R, halfH] = [0.5, 200];
+  const expected = eyes.map((d) => {
+    const q = d * d - R * R;
+    const errorScalePx = (halfH * R * d * d) / q ** 1.5;
+    const { base, level, triangles } = chooseSphereDetail({
+      radiusPx: errorScalePx,
+      maxErrorPx: 0.5,
+      maxLevel: 8,
+    });
+    return { radiusPx: (halfH * R) / Math.sqrt(q), errorScalePx, base, level, triangles };
+  });
+  seen.forEach((s, i) => {
+    const e = expected[i];
+    expect(Math.abs(s.radiusPx / e.radiusPx - 1), `radius at eye ${eyes[i]}`).toBeLessThan(1e-6);
+    expect(Math.abs(s.errorScalePx / e.errorScalePx - 1), `error scale at eye ${eyes[i]}`).toBeLessThan(1e-6);
+    expect({ base: s.base, level: s.level, triangles: s.triangles }).toEqual({
+      base: e.base,
+      level: e.level,
+      triangles: e.triangles,
+    });
+    // The frame drew that detail: the mesh's geometry, and the renderer's count for the frame (the only mesh).
+    expect([s.drawn, s.rendered]).toEqual([e.triangles, e.triangles]);
+  });
+  // Closer, finer; back where it was, the detail it had.
+  expect(seen[1].triangles).toBeGreaterThan(seen[0].triangles);
+  expect(seen[2].triangles).toBeGreaterThan(seen[1].triangles);
+  expect(seen[3]).toEqual(seen[0]);
+  expect(errors).toEqual([]);
 });
