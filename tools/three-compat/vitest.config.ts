@@ -20,6 +20,11 @@ export default defineConfig({
     alias: [
       { find: /^three$/, replacement: `${three}build/three.module.js` },
       { find: /^three\/(examples\/jsm|addons)\/(.*)$/, replacement: `${three}examples/jsm/$2` },
+      // React Three Fiber's ES module (its CommonJS build would require the root's three past the alias).
+      {
+        find: /^@react-three\/fiber$/,
+        replacement: here('../../node_modules/@react-three/fiber/dist/react-three-fiber.esm.js'),
+      },
       ...packageAliases,
     ],
   },
@@ -28,5 +33,9 @@ export default defineConfig({
     ...base.test,
     // The repository's setup files (the fixed fast-check seed) and the check that the pinned three is used.
     setupFiles: [...[base.test?.setupFiles ?? []].flat(), here('./checkRevision.ts')],
+    // React Three Fiber goes through the aliases too (its ES module, inlined), so that it and the packages share
+    // the pinned three as they share one three in an app: left external, it loaded the root's three, and its
+    // `instanceof THREE.Color` failed on the packages' colours (@shadelab/react's applyProps test).
+    server: { deps: { inline: ['@react-three/fiber'] } },
   },
 });
