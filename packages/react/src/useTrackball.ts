@@ -17,6 +17,8 @@ export interface UseTrackballOptions extends Omit<TrackballOptions, 'camera'> {
   makeDefault?: boolean;
 }
 
+let defaults: Trackball | undefined;
+
 /**
  * A {@link Trackball} for R3F: created once per `object` (in `useMemo`), connected to the canvas and to the
  * default camera (or the given ones) in an effect, invalidating the frame on every change (so
@@ -28,19 +30,22 @@ export interface UseTrackballOptions extends Omit<TrackballOptions, 'camera'> {
  * @returns the trackball (the same instance for the lifetime of `object`).
  */
 export function useTrackball(object?: Object3D | null, options: UseTrackballOptions = {}): Trackball {
+  // An option left out takes the trackball's own default, read from a trackball built with none (not restated
+  // here), so removing a prop restores the default.
+  defaults ??= new Trackball();
   const {
     camera,
     domElement,
-    enabled = true,
+    enabled = defaults.enabled,
     makeDefault = false,
-    mapping = 'bell',
-    rotateSpeed = 1,
-    zoomSpeed = 1,
-    minZoom = 0.01,
-    maxZoom = 100,
-    enableDamping = false,
-    dampingFactor = 0.05,
-    radius = 1,
+    mapping = defaults.mapping,
+    rotateSpeed = defaults.rotateSpeed,
+    zoomSpeed = defaults.zoomSpeed,
+    minZoom = defaults.minZoom,
+    maxZoom = defaults.maxZoom,
+    enableDamping = defaults.enableDamping,
+    dampingFactor = defaults.dampingFactor,
+    radius = defaults.radius,
     target,
   } = options;
   const defaultCamera = useThree((state) => state.camera);
