@@ -252,6 +252,39 @@ function render(config: CompareConfig): {
 }
 
 /** Render `config` on the GPU and compare every covered pixel away from the silhouette with shade(). */
+/**
+ * For the world-space triangle soup `world` (3 corners a triangle) seen by `camera` on a `size`-pixel canvas:
+ * a function giving the distance in pixels from (x, y) to the nearest edge line of screen triangle t (0 for a
+ * degenerate triangle).
+ */
+function screenEdgeDistance(
+  world: Float64Array,
+  camera: Camera,
+  size: number,
+): (t: number, x: number, y: number) => number {
+  const corners = world.length / 3;
+  const screen = new Float64Array(2 * corners);
+  const v = new Vector3();
+  for (let i = 0; i < corners; i++) {
+    v.fromArray(world, 3 * i).project(camera);
+    screen[2 * i] = ((v.x + 1) / 2) * size;
+    screen[2 * i + 1] = ((v.y + 1) / 2) * size;
+  }
+  return (t, x, y) => {
+    let d = Number.POSITIVE_INFINITY;
+    for (let k = 0; k < 3; k++) {
+      const i = 3 * t + k;
+      const j = 3 * t + ((k + 1) % 3);
+      const ex = screen[2 * j] - screen[2 * i];
+      const ey = screen[2 * j + 1] - screen[2 * i + 1];
+      const len = Math.hypot(ex, ey);
+      if (!(len > 0)) return 0;
+      d = Math.min(d, Math.abs((x - screen[2 * i]) * ey - (y - screen[2 * i + 1]) * ex) / len);
+    }
+    return d;
+  };
+}
+
 function compare(config: CompareConfig): CompareStats {
   const { pixels, mesh, material, light, camera, size } = render(config);
   // Triangle by triangle, corners in the order drawn (a flatShadingGeometry is indexed: expand it).
@@ -271,27 +304,8 @@ function compare(config: CompareConfig): CompareStats {
     if (l > 0) v.divideScalar(l);
     normals.set([v.x, v.y, v.z], 3 * i);
   }
-  // Screen positions (pixels) of the vertices, for the flat shading edge margin.
-  const screen = new Float64Array(2 * count);
-  for (let i = 0; i < count; i++) {
-    v.fromArray(world, 3 * i).project(camera);
-    screen[2 * i] = ((v.x + 1) / 2) * size;
-    screen[2 * i + 1] = ((v.y + 1) / 2) * size;
-  }
-  /** Distance in pixels from (x, y) to the nearest edge line of screen triangle t. */
-  const edgeDistance = (t: number, x: number, y: number): number => {
-    let d = Number.POSITIVE_INFINITY;
-    for (let k = 0; k < 3; k++) {
-      const i = 3 * t + k;
-      const j = 3 * t + ((k + 1) % 3);
-      const ex = screen[2 * j] - screen[2 * i];
-      const ey = screen[2 * j + 1] - screen[2 * i + 1];
-      const len = Math.hypot(ex, ey);
-      if (!(len > 0)) return 0;
-      d = Math.min(d, Math.abs((x - screen[2 * i]) * ey - (y - screen[2 * i + 1]) * ex) / len);
-    }
-    return d;
-  };
+  // Distance in pixels to the nearest edge of a screen triangle, for the flat shading edge margin.
+  const edgeDistance = screenEdgeDistance(world, camera, size);
   const key = `${config.level ?? 6}/${config.flatCorners ?? false}/${mesh.matrixWorld.elements.join(',')}/${config.orthographic ?? false}/${size}`;
   let hits = hitCache.get(key);
   if (hits === undefined) {
@@ -1332,26 +1346,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
     }
   }
   const hits = raycastPixels(world, camera, size, object.matrixWorld.determinant() < 0);
-  const screen = new Float64Array(6 * triangles);
-  const v = new Vector3();
-  for (let q = 0; q < 3 * triangles; q++) {
-    v.fromArray(world, 3 * q).project(camera);
-    screen[2 * q] = ((v.x + 1) / 2) * size;
-    screen[2 * q + 1] = ((v.y + 1) / 2) * size;
-  }
-  const edgeDistance = (tri: number, x: number, y: number): number => {
-    let d = Number.POSITIVE_INFINITY;
-    for (let k = 0; k < 3; k++) {
-      const i0 = 3 * tri + k;
-      const i1 = 3 * tri + ((k + 1) % 3);
-      const ex = screen[2 * i1] - screen[2 * i0];
-      const ey = screen[2 * i1 + 1] - screen[2 * i0 + 1];
-      const len = Math.hypot(ex, ey);
-      if (!(len > 0)) return 0;
-      d = Math.min(d, Math.abs((x - screen[2 * i0]) * ey - (y - screen[2 * i0 + 1]) * ex) / len);
-    }
-    return d;
-  };
+  const edgeDistance = screenEdgeDistance(world, camera, size);
   const e = eyeOf(camera, new Vector4());
   const eye = [e.x, e.y, e.z, e.w];
   const m: ShadeMaterial = {
