@@ -278,6 +278,11 @@ test('the R3F guide’s app draws the lecture’s lit ellipsoid, and a trackball
   const vanillaTurned = await grid(page);
 
   await page.goto(`${origin}/guide/`);
+  // R3F's canvas starts at the DOM default 300 × 150 and takes its container's size once measured: wait for
+  // that, or the picture check reads the first size and samples the wrong pixels.
+  await expect
+    .poll(() => page.locator('canvas').evaluate((c: HTMLCanvasElement) => [c.width, c.height]))
+    .toEqual([800, 800]);
   await expectScenePicture(page, LECTURE_VIEW, errors);
   const before = await grid(page);
   // The same picture as the vanilla Quick start (flat: no tone mapping), within rasteriser rounding.
