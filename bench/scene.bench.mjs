@@ -9,7 +9,11 @@
 // Variants run round-robin in `rounds` rounds, so that load from other processes spreads over all of them; the
 // frames of all rounds are pooled and the medians compared.
 //
-//   node bench/scene.bench.mjs [--json PATH] [--frames 30] [--rounds 5] [--only realistic,lecture,flat]
+// The realistic scene is slow in SwiftShader (hundreds of ms a frame): `--frames` frames per variant in
+// `--rounds` rounds; the lecture and flat scenes take `--small-frames` in `--small-rounds`.
+//
+//   node bench/scene.bench.mjs [--json PATH] [--frames 30] [--rounds 5] [--small-frames 120] [--small-rounds 10]
+//                              [--only realistic,lecture,flat]
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -24,6 +28,8 @@ const root = fileURLToPath(new URL('..', import.meta.url));
 const BEFORE = '0f35fee^';
 const frames = Number(arg('--frames', '30'));
 const rounds = Number(arg('--rounds', '5'));
+const smallFrames = Number(arg('--small-frames', '120'));
+const smallRounds = Number(arg('--small-rounds', '10'));
 const only = arg('--only', 'realistic,lecture,flat').split(',');
 
 /** @param {string[]} args */
@@ -83,15 +89,16 @@ async function bundleMaterialAt(rev) {
  * @param {import('@playwright/test').Page} page
  * @param {Array<[string, V]>} variants
  * @param {(page: import('@playwright/test').Page, variant: V, frames: number, warmup: number) => Promise<TimedResult>} runOne
+ * @param {{ frames: number, rounds: number }} count frames per variant, in this many rounds
  * @returns {Promise<Record<string, Row>>}
  */
-async function roundRobin(page, variants, runOne) {
+async function roundRobin(page, variants, runOne, count) {
   /** @type {Record<string, { frames: number[], gpu: number[], programs: number, error?: string }>} */
   const pooled = {};
-  for (let round = 0; round < rounds; round++) {
+  for (let round = 0; round < count.rounds; round++) {
     for (const [name, variant] of variants) {
       if (pooled[name]?.error) continue;
-      const r = await runOne(page, variant, Math.ceil(frames / rounds), round === 0 ? 5 : 2);
+      const r = await runOne(page, variant, Math.ceil(count.frames / count.rounds), round === 0 ? 5 : 2);
       pooled[name] ??= { frames: [], gpu: [], programs: 0 };
       if (r.error) pooled[name].error = r.error;
       pooled[name].frames.push(...r.frames);
@@ -146,6 +153,8 @@ const results = {
   height: 720,
   frames,
   rounds,
+  smallFrames,
+  smallRounds,
   gpuTimer: hasTimer,
 };
 
@@ -166,8 +175,12 @@ if (only.includes('realistic')) {
     ['MeshPhongMaterial', { kind: 'three-phong' }],
     ['MeshLambertMaterial', { kind: 'three-lambert' }],
   ];
-  const rows = await roundRobin(page, variants, (p, variant, n, warmup) =>
-    p.evaluate((a) => window.sceneBench.realistic(a.variant, a.n, a.warmup), { variant, n, warmup }),
+  const rows = await roundRobin(
+    page,
+    variants,
+    (p, variant, n, warmup) =>
+      p.evaluate((a) => window.sceneBench.realistic(a.variant, a.n, a.warmup), { variant, n, warmup }),
+    { frames, rounds },
   );
   const vsPhong = (/** @type {string} */ name) => ratio(rows, name, 'MeshPhongMaterial');
   const targets = {
@@ -215,8 +228,12 @@ if (only.includes('lecture') && before) {
     variants.push([`${shading} before`, { build: 'before', shading }]);
     variants.push([`${shading} after`, { build: 'after', shading }]);
   }
-  const rows = await roundRobin(page, variants, (p, variant, n, warmup) =>
-    p.evaluate((a) => window.sceneBench.lecture(a.variant, a.n, a.warmup), { variant, n, warmup }),
+  const rows = await roundRobin(
+    page,
+    variants,
+    (p, variant, n, warmup) =>
+      p.evaluate((a) => window.sceneBench.lecture(a.variant, a.n, a.warmup), { variant, n, warmup }),
+    { frames: smallFrames, rounds: smallRounds },
   );
   /** @type {Record<string, { ratio: { median: number, min: number } | null, target: string, met: boolean | null }>} */
   const afterVsBefore = {};
@@ -232,7 +249,9 @@ if (only.includes('lecture') && before) {
     rows,
     afterVsBefore,
   };
-  console.log(`\nlecture scene, before (${before.commit.slice(0, 7)}) and after, median of ${frames} frames`);
+  console.log(
+    `\nlecture scene, before (${before.commit.slice(0, 7)}) and after, median of ${smallFrames} frames`,
+  );
   printRows(rows);
   for (const [shading, t] of Object.entries(afterVsBefore)) {
     console.log(`${shading}: after/before ${t.ratio ? t.ratio.median.toFixed(3) : 'n/a'} (target ≤ 1.02)`);
@@ -246,12 +265,16 @@ if (only.includes('flat')) {
   const modes = ['prepared', 'non-indexed', 'indexed'];
   /** @type {Array<[string, { mesh: (typeof meshes)[number], mode: (typeof modes)[number] }]>} */
   const variants = meshes.flatMap((mesh) => modes.map((mode) => [`${mesh} ${mode}`, { mesh, mode }]));
-  const rows = await roundRobin(page, variants, (p, variant, n, warmup) =>
-    p.evaluate((a) => window.sceneBench.flatTime(a.variant.mesh, a.variant.mode, a.n, a.warmup), {
-      variant,
-      n,
-      warmup,
-    }),
+  const rows = await roundRobin(
+    page,
+    variants,
+    (p, variant, n, warmup) =>
+      p.evaluate((a) => window.sceneBench.flatTime(a.variant.mesh, a.variant.mode, a.n, a.warmup), {
+        variant,
+        n,
+        warmup,
+      }),
+    { frames: smallFrames, rounds: smallRounds },
   );
   /** @type {Record<string, unknown>} */
   const perMesh = {};
@@ -277,7 +300,7 @@ if (only.includes('flat')) {
       "shade() at each face's world centroid with its world face normal, 8-bit sRGB; every pixel whose 3×3 neighbourhood lies on one face (face ids from an id pass of the non-indexed mesh)",
     meshes: perMesh,
   };
-  console.log(`\nflat shading without preparation, 1280×720, median of ${frames} frames`);
+  console.log(`\nflat shading without preparation, 1280×720, median of ${smallFrames} frames`);
   printRows(rows);
   console.log(JSON.stringify(perMesh, null, 1));
 }

@@ -25,6 +25,7 @@ export const SOURCES = [
   { name: 'autodetail', writer: 'bench/autodetail.bench.mjs', command: 'npm run bench -- autodetail' },
   { name: 'tradeoff', writer: 'bench/tradeoff.bench.mjs', command: 'npm run bench -- tradeoff' },
   { name: 'material', writer: 'bench/material.bench.mjs', command: 'npm run bench -- material' },
+  { name: 'scene', writer: 'bench/scene.bench.mjs', command: 'npm run bench -- scene' },
   { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
   { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
   {
@@ -526,6 +527,144 @@ function material(r) {
   return out;
 }
 
+/** A row's frame time: median (minimum), or why it did not render. @param {any} row */
+const frameCell = (row) =>
+  !row
+    ? '—'
+    : row.error
+      ? 'does not render'
+      : `${row.frameMs.median.toFixed(1)} (${row.frameMs.min.toFixed(1)})`;
+/** A ratio of medians (of minima). @param {{ median: number, min: number } | null | undefined} x */
+const ratioCell = (x) => (x ? `${x.median.toFixed(2)} (min ${x.min.toFixed(2)})` : '—');
+/** Whether a target was met. @param {boolean | null | undefined} met */
+const metCell = (met) => (met === true ? 'met' : met === false ? '**not met**' : '—');
+
+/** @param {any} r @returns {string[]} */
+function sceneRealistic(r) {
+  const s = r.realistic;
+  if (!s) return ['## Material in a realistic scene', '', missing('scene')];
+  const errors = Object.entries(s.rows).filter(([, row]) => /** @type {any} */ (row).error);
+  return [
+    '## Material in a realistic scene',
+    '',
+    fromLine('scene', r),
+    '',
+    `Issue 14's scene: ${s.scene}. \`ShadingMaterial\` in each shading against three's \`MeshPhongMaterial\` (shininess 32) and \`MeshLambertMaterial\` in the same run, ${r.frames} frames per variant in ${r.rounds} interleaved rounds, a 1×1 \`readPixels\` after each. Flat shading draws \`flatShadingGeometry\` of the sphere, the non-indexed sphere, or the indexed sphere as it is (no preparation). Frame ms: median (minimum)${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}. ${r.note ?? ''}`.trim(),
+    '',
+    ...table(
+      ['variant', 'frame ms', 'GPU ms', '/ MeshPhongMaterial'],
+      'lrrr',
+      Object.entries(s.rows).map(([name, row]) => [
+        name,
+        frameCell(row),
+        /** @type {any} */ (row).gpuMs ? /** @type {any} */ (row).gpuMs.median.toFixed(1) : 'n/a',
+        ratioCell(s.ratiosVsMeshPhong[name]),
+      ]),
+    ),
+    ...(errors.length
+      ? ['', ...errors.map(([name, row]) => `- ${name} does not render: ${/** @type {any} */ (row).error}`)]
+      : []),
+    '',
+    "Issue 14's targets (ratios of medians, of minima in brackets):",
+    '',
+    ...table(
+      ['ratio', 'measured', 'target', 'result'],
+      'lrll',
+      [
+        ['phong / MeshPhongMaterial', 'phongVsMeshPhong'],
+        ['gouraud / MeshPhongMaterial', 'gouraudVsMeshPhong'],
+        ['flat (flatShadingGeometry) / MeshPhongMaterial', 'flatVsMeshPhong'],
+        ['flat (indexed, no preparation) / MeshPhongMaterial', 'flatIndexedVsMeshPhong'],
+        ['MeshLambertMaterial / MeshPhongMaterial', 'lambertVsMeshPhong'],
+      ].map(([label, key]) => {
+        const t = s.targets[key];
+        return [label, ratioCell(t?.ratio), t?.target ?? '—', metCell(t?.met)];
+      }),
+    ),
+  ];
+}
+
+/** @param {any} r @returns {string[]} */
+function sceneLecture(r) {
+  const s = r.lecture;
+  if (!s) return ['## Lecture scene before and after issue 14', '', missing('scene')];
+  return [
+    '## Lecture scene before and after issue 14',
+    '',
+    fromLine('scene', r),
+    '',
+    `What the lecture's scene pays for issue 14's features (instancing, skinning, fog, three's lights, …) that it does not use: ${s.scene}, rendered in the same run with the \`ShadingMaterial\` of \`${s.before.rev}\` (\`${s.before.commit.slice(0, 7)}\`, the commit before issue 14 began, bundled from git by the bench) and of the run's commit. ${r.smallFrames ?? r.frames} frames per variant in ${r.smallRounds ?? r.rounds} interleaved rounds; frame ms: median (minimum).`,
+    '',
+    ...table(
+      ['shading', 'before', 'after', 'after / before', 'target', 'result'],
+      'lrrrll',
+      Object.entries(s.afterVsBefore).map(([shading, t]) => [
+        shading,
+        frameCell(s.rows[`${shading} before`]),
+        frameCell(s.rows[`${shading} after`]),
+        ratioCell(/** @type {any} */ (t).ratio),
+        /** @type {any} */ (t).target,
+        metCell(/** @type {any} */ (t).met),
+      ]),
+    ),
+  ];
+}
+
+const FLAT_MODES = /** @type {const} */ ([
+  ['prepared', 'prepared: `flatShadingGeometry`'],
+  ['non-indexed', 'non-indexed: `toNonIndexed()`'],
+  ['indexed', 'indexed as it is (no preparation)'],
+]);
+
+/** @param {any} r @returns {string[]} */
+function sceneFlat(r) {
+  const s = r.flat;
+  if (!s) return ['## Flat shading without preparation', '', missing('scene')];
+  const meshes = Object.keys(s.meshes);
+  return [
+    '## Flat shading without preparation',
+    '',
+    fromLine('scene', r),
+    '',
+    `The lecture's flat shading is one colour per face. Three ways to get it from an indexed mesh: the prepared \`flatShadingGeometry\` (each face's last vertex carries the face), the non-indexed mesh (each triangle owns its vertices; the material reads the face from a texture of positions), and the indexed mesh as it is, with a face normal from screen-space derivatives and the lighting per fragment. Scene: ${s.scene}. Error against ${s.reference}; 1/255 per channel. Frame ms: median (minimum) of ${r.smallFrames ?? r.frames} frames in ${r.smallRounds ?? r.rounds} interleaved rounds. Bytes: the geometry's attributes and index as given to the material (the sources keep three's normals and uvs, which flat shading does not read), and what the GPU holds besides (the non-indexed path's face-position texture).`,
+    '',
+    ...table(
+      [
+        'mesh',
+        'triangles',
+        'flat shading of',
+        'max error',
+        'RMS error',
+        'pixels > 1/255',
+        'frame ms',
+        '/ prepared',
+        'geometry bytes',
+        'GPU extra',
+      ],
+      'lrlrrrrrrr',
+      meshes.flatMap((mesh) =>
+        FLAT_MODES.map(([mode, label]) => {
+          const m = s.meshes[mesh].modes[mode];
+          const e = m.error;
+          const ok = e && !e.error;
+          return [
+            mesh,
+            int(s.meshes[mesh].triangles),
+            label,
+            ok ? String(e.max) : 'does not render',
+            ok ? e.rms.toFixed(2) : '—',
+            ok ? `${(e.over1 * 100).toFixed(1)} % of ${int(e.pixels)}` : '—',
+            frameCell(m.time),
+            ratioCell(m.vsPrepared),
+            B(m.bytes.geometry),
+            m.bytes.gpuExtra ? B(m.bytes.gpuExtra) : '0',
+          ];
+        }),
+      ),
+    ),
+  ];
+}
+
 /** @param {any} r @returns {string[]} */
 function cameraDepth(r) {
   /** @type {any[]} */
@@ -880,6 +1019,7 @@ export function renderBenchmarks(results) {
       '',
       '- [Sphere build time](#sphere-build-time) · [Sphere error](#sphere-error) · [Automatic detail](#automatic-detail)',
       '- [Speed against accuracy](#speed-against-accuracy) · [Material frame time](#material-frame-time)',
+      '- [Material in a realistic scene](#material-in-a-realistic-scene) · [Lecture scene before and after issue 14](#lecture-scene-before-and-after-issue-14) · [Flat shading without preparation](#flat-shading-without-preparation)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
       '- [Rasteriser variation](#rasteriser-variation)',
@@ -890,6 +1030,9 @@ export function renderBenchmarks(results) {
     section('autodetail', autodetail, 'Automatic detail'),
     section('tradeoff', tradeoff, 'Speed against accuracy'),
     section('material', material, 'Material frame time'),
+    section('scene', sceneRealistic, 'Material in a realistic scene'),
+    section('scene', sceneLecture, 'Lecture scene before and after issue 14'),
+    section('scene', sceneFlat, 'Flat shading without preparation'),
     section('camera-depth', cameraDepth, 'Camera depth precision'),
     section('trackball', trackball, 'Trackball'),
     section('size', sizes, 'Package sizes'),
