@@ -35,8 +35,11 @@ export interface OutlineMaterialOptions {
  * along the (robust, world-space) normal, in one colour. Use it on a second mesh sharing the geometry, or
  * through `createOutline`. Reads the `normal` attribute, or the position on a sphere flagged like for
  * `ShadingMaterial` (`SubdivisionSphereGeometry` or `userData.isSphere`). Clipped, fogged and tone-mapped
- * like three's materials (`clippingPlanes`, `fog`, `toneMapped`); the outline of an instanced, batched, skinned
- * or morphed mesh is not supported (it would be drawn undeformed, at the object's origin).
+ * like three's materials (`clippingPlanes`, `fog`, `toneMapped`). On an `InstancedMesh`, a `SkinnedMesh` or a
+ * mesh with morph targets (`createOutline` makes the outline that kind of object), three's instancing, skinning
+ * and morph target chunks move each vertex and its normal first, so the hull surrounds the deformed surface of
+ * every instance; they are compiled only into the programs of objects that use them. The instance's normal
+ * matrix is made like `ShadingMaterial`'s (finite for a singular instance matrix). Not for a `BatchedMesh`.
  */
 export class OutlineMaterial extends ShaderMaterial {
   /** Always true. */
