@@ -12,7 +12,7 @@
 // The realistic scene is slow in SwiftShader (hundreds of ms a frame): `--frames` frames per variant in
 // `--rounds` rounds; the lecture and flat scenes take `--small-frames` in `--small-rounds`.
 //
-//   node bench/scene.bench.mjs [--json PATH] [--frames 30] [--rounds 5] [--small-frames 120] [--small-rounds 10]
+//   node bench/scene.bench.mjs [--json PATH] [--frames 30] [--rounds 10] [--small-frames 120] [--small-rounds 20]
 //                              [--only realistic,lecture,flat]
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
@@ -27,9 +27,9 @@ const root = fileURLToPath(new URL('..', import.meta.url));
 /** The last commit before issue 14 began (its first commit is 0f35fee). */
 const BEFORE = '0f35fee^';
 const frames = Number(arg('--frames', '30'));
-const rounds = Number(arg('--rounds', '5'));
+const rounds = Number(arg('--rounds', '10'));
 const smallFrames = Number(arg('--small-frames', '120'));
-const smallRounds = Number(arg('--small-rounds', '10'));
+const smallRounds = Number(arg('--small-rounds', '20'));
 const only = arg('--only', 'realistic,lecture,flat').split(',');
 
 /** @param {string[]} args */
@@ -37,7 +37,7 @@ const git = (args) => execFileSync('git', args, { cwd: root, encoding: 'utf8' })
 
 /**
  * @shadelab/material's sources at `rev`, from git, bundled into one ES module whose `three` is the page's
- * (`globalThis.__shadelabThree`, set by the page's loadBefore): both materials then render through one three.
+ * (`globalThis.__shadelabThree`, set by the page's loadModule): both materials then render through one three.
  * @param {string} rev
  */
 async function bundleMaterialAt(rev) {
@@ -221,7 +221,7 @@ if (only.includes('realistic')) {
 }
 
 if (only.includes('lecture') && before) {
-  const exported = await page.evaluate((code) => window.sceneBench.loadBefore(code), before.code);
+  const exported = await page.evaluate((code) => window.sceneBench.loadModule('before', code), before.code);
   /** @type {Array<[string, import('../playground/harness/scene-bench').LectureVariant]>} */
   const variants = [];
   for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {

@@ -2,7 +2,7 @@
 // - realistic: 1,000 instanced level-3 spheres lit by three PointLights and a DirectionalLight, with fog, at
 //   1280×720: ShadingMaterial (flat, gouraud, phong) against MeshPhongMaterial and MeshLambertMaterial;
 // - lecture: the lecture's scene (the material bench's level-6 sphere and light) with the ShadingMaterial of
-//   the commit before issue 14 ('before', a bundle the bench builds from git and hands to loadBefore) and of
+//   the commit before issue 14 ('before', a bundle the bench builds from git and hands to loadModule) and of
 //   this checkout ('after');
 // - flat: flat shading of an indexed mesh prepared (flatShadingGeometry), as a non-indexed soup, and as the
 //   indexed mesh itself, timed, with its error against shade() per face and its bytes.
@@ -46,11 +46,13 @@ export interface RealisticVariant {
    * indexed sphere as it is (no preparation). Gouraud, phong and three's materials draw the indexed sphere.
    */
   geometry?: 'prepared' | 'non-indexed' | 'indexed';
+  /** A ShadingMaterial from a bundle given to loadModule instead of this checkout's. */
+  module?: string;
 }
 
 /** A variant of the lecture's scene. */
 export interface LectureVariant {
-  /** 'before': the material of the commit before issue 14 (see loadBefore); 'after': this checkout's. */
+  /** 'before': the material of the commit before issue 14 (see loadModule); 'after': this checkout's. */
   build: 'before' | 'after';
   shading: Shading;
 }
@@ -71,7 +73,14 @@ export interface TimedResult {
 
 /** What a module of @shadelab/material has to offer here, in its version before issue 14 as in this one. */
 interface MaterialModule {
-  ShadingMaterial: new (options: { shading: Shading; lights?: readonly Object3D[] }) => Material;
+  ShadingMaterial: new (options: {
+    shading: Shading;
+    lights?: readonly Object3D[];
+    ka?: readonly [number, number, number];
+    kd?: readonly [number, number, number];
+    ks?: number;
+    shininess?: number;
+  }) => Material;
   PhongLight: new () => Object3D;
   flatShadingGeometry: (geometry: BufferGeometry) => BufferGeometry;
 }
@@ -203,11 +212,18 @@ function realisticScene(variant: RealisticVariant): { scene: Scene; camera: Pers
   let geometry: BufferGeometry = realisticGeometries.indexed;
   if (variant.kind === 'shadelab') {
     const shading = variant.shading ?? 'phong';
-    mat = new ShadingMaterial({ shading, ka: [0.6, 0.6, 0.6], kd: [0.6, 0.6, 0.6], ks: 0.5, shininess: 32 });
+    const module = moduleNamed(variant.module);
+    mat = new module.ShadingMaterial({
+      shading,
+      ka: [0.6, 0.6, 0.6],
+      kd: [0.6, 0.6, 0.6],
+      ks: 0.5,
+      shininess: 32,
+    });
     if (shading === 'flat') {
       const kind = variant.geometry ?? 'prepared';
       if (kind === 'prepared') {
-        realisticGeometries.prepared ??= material.flatShadingGeometry(realisticGeometries.indexed);
+        realisticGeometries.prepared ??= module.flatShadingGeometry(realisticGeometries.indexed);
         geometry = realisticGeometries.prepared;
       } else geometry = realisticGeometries[kind];
     }
@@ -237,19 +253,28 @@ function realistic(variant: RealisticVariant, frames: number, warmup: number): P
 
 // ── The lecture's scene, before and after issue 14 ──────────────────────────────────────────────────────
 
-let before: MaterialModule | null = null;
+const modules = new Map<string, MaterialModule>();
 
 /**
- * Load the material of the commit before issue 14: `code` is an ES module bundle of its sources whose
- * `import … from 'three'` reads `globalThis.__shadelabThree` (this page's three), so both materials render
- * through one three.js.
+ * Load another build of @shadelab/material under `name` ('before': the commit before issue 14, for the
+ * lecture scene): `code` is an ES module bundle of its sources whose `import … from 'three'` reads
+ * `globalThis.__shadelabThree` (this page's three), so every material renders through one three.js.
  */
-async function loadBefore(code: string): Promise<string[]> {
+async function loadModule(name: string, code: string): Promise<string[]> {
   (globalThis as { __shadelabThree?: unknown }).__shadelabThree = THREE;
   const url = URL.createObjectURL(new Blob([code], { type: 'text/javascript' }));
-  before = (await import(/* @vite-ignore */ url)) as MaterialModule;
+  const module = (await import(/* @vite-ignore */ url)) as MaterialModule;
   URL.revokeObjectURL(url);
-  return Object.keys(before);
+  modules.set(name, module);
+  return Object.keys(module);
+}
+
+/** The module loaded under `name`, or this checkout's. */
+function moduleNamed(name: string | undefined): MaterialModule {
+  if (name === undefined) return material as unknown as MaterialModule;
+  const module = modules.get(name);
+  if (module === undefined) throw new Error(`loadModule('${name}', …) first`);
+  return module;
 }
 
 const lectureScenes = new Map<string, { scene: Scene; camera: PerspectiveCamera }>();
@@ -259,9 +284,7 @@ function lectureScene(variant: LectureVariant): { scene: Scene; camera: Perspect
   const key = JSON.stringify(variant);
   let built = lectureScenes.get(key);
   if (built !== undefined) return built;
-  const module: MaterialModule =
-    variant.build === 'after' ? (material as unknown as MaterialModule) : before!;
-  if (module === null) throw new Error('loadBefore() first');
+  const module = moduleNamed(variant.build === 'after' ? undefined : 'before');
   const scene = new Scene();
   const light = new module.PhongLight();
   light.position.set(-5, 10, 20);
@@ -550,7 +573,7 @@ function flatBytes(
   return out;
 }
 
-const api = { realistic, loadBefore, lecture, flatTime, flatError, flatBytes, hasTimer: timer !== null };
+const api = { realistic, loadModule, lecture, flatTime, flatError, flatBytes, hasTimer: timer !== null };
 declare global {
   interface Window {
     sceneBench: typeof api;
