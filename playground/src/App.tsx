@@ -2,6 +2,7 @@ import { Leva } from 'leva';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
+import { sceneNote } from './engine/scenes';
 import {
   COMPARE_COLUMNS,
   compareLayout,
@@ -271,7 +272,16 @@ export function App() {
         <div className="panel" ref={panelRef}>
           <Leva fill flat titleBar={false} hideCopyButton />
         </div>
-        {variant && <ShaderEditor variant={variant} tryShader={tryShader} clearShader={clearShader} />}
+        <p
+          className="scene-note"
+          data-testid="scene-note"
+          style={{ flex: '0 0 auto', margin: 0, padding: '4px 8px', fontSize: 12, color: '#bbb' }}
+        >
+          {sceneNote(state.scene)}
+        </p>
+        {variant && state.scene === 'sphere' && (
+          <ShaderEditor variant={variant} tryShader={tryShader} clearShader={clearShader} />
+        )}
       </aside>
       <SceneControls state={state} update={update} actions={actions} />
       {state.lights.map((_, i) => (

@@ -4,7 +4,7 @@
  */
 import * as THREE from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
-import type { DepthMode, LightState, PlaygroundState, Vec3 } from '../state/schema';
+import type { DepthMode, LightState, PlaygroundState, SceneName, Vec3 } from '../state/schema';
 import {
   activeDepth,
   applyImpostorMaterial,
@@ -45,6 +45,7 @@ import {
   variantKey,
 } from './packages';
 import { type ShaderCheck, ShaderProbe, type ShaderSource, tagLines } from './ShaderProbe';
+import { createScene, type DemoScene } from './scenes';
 
 /** What the stats panel shows. */
 export interface FrameStats {
@@ -161,6 +162,8 @@ export class Viewer {
   /** Sphere geometries of the current base and level, by {@link sphereKey}. */
   private geometries = new Map<string, THREE.BufferGeometry>();
   private sphere: { base: PlaygroundState['sphere']['base']; level: number; radius: number } | null = null;
+  /** The picked scene when it is not the lecture's sphere (in the pivot, in place of the sphere). */
+  private demo: { name: SceneName; scene: DemoScene } | null = null;
   private reportedVariant = '';
   private state: PlaygroundState | null = null;
   private errors: SectionErrors = {};
@@ -387,6 +390,16 @@ export class Viewer {
       });
     }
     this.state = state;
+    if (changed('scene')) attempt('scene', () => this.applyScene(state.scene));
+    if (this.demo && (changed('scene') || changed('material') || changed('lights'))) {
+      attempt('material', () => {
+        for (const part of this.demo!.scene.parts) {
+          applyMaterial(part.material, state.material, this.lights);
+          setOutlineWidth(part.outline, state.material.outlineWidth);
+          setOutlineColor(part.outline, state.material.outlineColor);
+        }
+      });
+    }
     attempt('model', () => {
       const [x, y, z] = state.model.scale;
       const r = state.sphere.radius;
@@ -417,6 +430,26 @@ export class Viewer {
     this.errors = errors;
     this.requestRender();
     return errors;
+  }
+
+  /** Swaps the picked scene in (built anew) and the previous one out (disposed); the sphere is `null`. */
+  private applyScene(name: SceneName) {
+    if (this.demo?.name === name) return;
+    const next = name === 'sphere' ? null : { name, scene: createScene(name) };
+    this.leaveScene();
+    this.demo = next;
+    if (next) {
+      this.pivot.add(next.scene.root);
+      next.scene.enter?.(this.scene, this.renderer);
+    }
+  }
+
+  private leaveScene() {
+    if (!this.demo) return;
+    this.demo.scene.leave?.(this.scene, this.renderer);
+    this.pivot.remove(this.demo.scene.root);
+    this.demo.scene.dispose();
+    this.demo = null;
   }
 
   private applyLights(states: LightState[]) {
@@ -471,7 +504,7 @@ export class Viewer {
   }
 
   private errorPx(): number | null {
-    if (!this.sphere || !this.state) return null;
+    if (!this.sphere || !this.state || this.demo) return null;
     try {
       return sphereErrorPx(this.sphere.base, this.sphere.level, this.errorScalePx());
     } catch {
@@ -641,11 +674,15 @@ export class Viewer {
   private draw(w: number, h: number, { cols, rows }: Layout) {
     const { renderer } = this;
     const state = this.state!;
+    this.drawn = [];
+    if (this.demo) {
+      this.drawScene(this.demo.scene, w, h, { cols, rows });
+      return;
+    }
     this.outline.visible = state.material.outline && state.material.celBands > 0;
     const impostor = state.sphere.render === 'impostor';
     this.mesh.visible = !impostor || cols * rows > 1;
     this.impostor.visible = impostor && cols * rows === 1;
-    this.drawn = [];
     if (cols * rows === 1) {
       this.mesh.material = this.material;
       this.applyGeometry(state.material.shading);
@@ -686,6 +723,67 @@ export class Viewer {
   }
 
   /**
+   * Draws a picked scene in place of the sphere: in one view with the panel's shading, or in the compare view's
+   * cells with each column's shading and cel bands set on its materials for that cell (and put back after).
+   */
+  private drawScene(scene: DemoScene, w: number, h: number, { cols, rows }: Layout) {
+    const { renderer } = this;
+    const { material } = this.state!;
+    this.mesh.visible = false;
+    this.impostor.visible = false;
+    this.outline.visible = false;
+    const setShading = (
+      shading: PlaygroundState['material']['shading'],
+      celBands: number,
+      outline: boolean,
+    ) => {
+      for (const part of scene.parts) {
+        part.material.shading = shading;
+        part.material.celBands = celBands;
+        part.mesh.geometry = part.geometry(shading);
+        part.outline.visible = outline;
+      }
+    };
+    const drawnParts = () => {
+      for (const part of scene.parts) {
+        this.drawn.push({ geometry: part.mesh.geometry, outline: part.outline.visible });
+      }
+    };
+    const outline = material.outline && material.celBands > 0;
+    if (cols * rows === 1) {
+      setShading(material.shading, material.celBands, outline);
+      drawnParts();
+      renderer.setScissorTest(false);
+      renderer.setViewport(0, 0, w, h);
+      renderer.render(this.scene, this.camera);
+      return;
+    }
+    renderer.setScissorTest(true);
+    const cw = w / cols;
+    const ch = h / rows;
+    try {
+      COMPARE_COLUMNS.forEach((column, i) => {
+        setShading(
+          column.shading,
+          column.cel ? Math.max(3, material.celBands) : 0,
+          column.cel && material.outline,
+        );
+        drawnParts();
+        const x = Math.round((i % cols) * cw);
+        const width = Math.round(((i % cols) + 1) * cw) - x;
+        const y = Math.round(h - (Math.floor(i / cols) + 1) * ch);
+        const height = Math.round(h - Math.floor(i / cols) * ch) - y;
+        renderer.setViewport(x, y, width, height);
+        renderer.setScissor(x, y, width, height);
+        renderer.render(this.scene, this.camera);
+      });
+    } finally {
+      renderer.setScissorTest(false);
+      setShading(material.shading, material.celBands, outline);
+    }
+  }
+
+  /**
    * three keeps every program a material ever used until the material is disposed; a long session visiting
    * many variants would grow without bound. Past {@link PROGRAM_CAP}, free them all: the next frame
    * recompiles only the variants on screen.
@@ -694,6 +792,10 @@ export class Viewer {
     if ((this.renderer.info.programs?.length ?? 0) <= PROGRAM_CAP) return;
     this.material.dispose();
     for (const material of this.compareMaterials) material.dispose();
+    for (const part of this.demo?.scene.parts ?? []) {
+      part.material.dispose();
+      part.outline.material.dispose();
+    }
   }
 
   /** The geometries of the last frame's sphere draws (one per cell), and whether each cell drew an outline. */
@@ -795,6 +897,7 @@ export class Viewer {
     this.trackball.dispose();
     this.mover.dispose();
     this.probe.dispose();
+    this.leaveScene();
     window.clearTimeout(this.viewTimer);
     for (const geometry of this.geometries.values()) geometry.dispose();
     this.markerGeometry.dispose();

@@ -309,3 +309,13 @@ export function setOutlineWidth(
 ): void {
   outline.material.thickness = width;
 }
+
+// ---- scenes -------------------------------------------------------------------------------------------------
+
+/**
+ * The copy of an indexed geometry on which flat shading lights each face once (the material's
+ * `flatShadingGeometry`; it keeps skinning and position morph targets, not uv).
+ */
+export function flatGeometry(geometry: THREE.BufferGeometry): THREE.BufferGeometry {
+  return flatShadingGeometry(geometry);
+}

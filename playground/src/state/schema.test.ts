@@ -8,6 +8,7 @@ import {
   MAX_LIGHTS,
   type PlaygroundState,
   parseState,
+  SCENES,
   STATE_MAX_CHARS,
   serializeState,
   validateState,
@@ -169,6 +170,20 @@ describe('parseState', () => {
     expect(error).toMatch(/^state\.view: "<img src=x onerror=alert\(1\)>" is not one of single, compare$/);
   });
 
+  it('takes every scene name, defaults to the sphere and refuses any other scene value', () => {
+    expect(defaultState().scene).toBe('sphere');
+    expect(parseState('{}')).toMatchObject({ ok: true, state: { scene: 'sphere' } });
+    for (const scene of SCENES) {
+      expect(parseState(JSON.stringify({ scene }))).toMatchObject({ ok: true, state: { scene } });
+    }
+    const allowed = SCENES.join(', ');
+    expect(refused('{"scene":"Sphere"}')).toBe(`state.scene: "Sphere" is not one of ${allowed}`);
+    expect(refused('{"scene":"__proto__"}')).toBe(`state.scene: "__proto__" is not one of ${allowed}`);
+    expect(refused('{"scene":0}')).toBe(`state.scene: 0 is not one of ${allowed}`);
+    expect(refused('{"scene":["sphere"]}')).toBe(`state.scene: an array is not one of ${allowed}`);
+    expect(refused('{"scene":{"name":"sphere"}}')).toBe(`state.scene: object is not one of ${allowed}`);
+  });
+
   it('refuses more lights than the limit', () => {
     const lights = Array.from({ length: MAX_LIGHTS + 1 }, () => ({}));
     expect(refused(JSON.stringify({ lights }))).toBe(
@@ -195,6 +210,7 @@ describe('parseState properties', () => {
   const finite = fc.double({ noNaN: true, min: -1e3, max: 1e3 }).map((x) => x + 0);
   const validState = fc.record({
     view: fc.constantFrom('single', 'compare'),
+    scene: fc.constantFrom(...SCENES),
     shading: fc.constantFrom('flat', 'gouraud', 'phong'),
     celBands: fc.oneof(fc.constant(0), fc.integer({ min: 2, max: 16 })),
     shininess: fc.double({ noNaN: true, min: 0, max: 1e4 }).map((x) => x + 0),
@@ -207,6 +223,7 @@ describe('parseState properties', () => {
       fc.property(validState, (v) => {
         const state: PlaygroundState = defaultState();
         state.view = v.view as PlaygroundState['view'];
+        state.scene = v.scene;
         state.material.shading = v.shading as PlaygroundState['material']['shading'];
         state.material.celBands = v.celBands;
         state.material.shininess = v.shininess;

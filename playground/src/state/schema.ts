@@ -38,6 +38,14 @@ export const DEPTH_MODES: readonly DepthMode[] = [
 export type ViewMode = 'single' | 'compare';
 /** How the sphere is drawn: a subdivided mesh, or a ray-cast impostor (exact, two triangles). */
 export type SphereRender = 'mesh' | 'impostor';
+/**
+ * What is drawn: the lecture's sphere, or one of the three.js scenes that show the material's features (an
+ * instanced field of spheres, a skinned and morphing mesh, a textured model with a normal map, a scene lit by
+ * three's lights with fog and clipping).
+ */
+export type SceneName = 'sphere' | 'instanced' | 'skinned' | 'textured' | 'lights';
+/** Every scene, in the order the picker lists them. */
+export const SCENES: readonly SceneName[] = ['sphere', 'instanced', 'skinned', 'textured', 'lights'];
 
 /** One light: the lecture's Ia, Id, Is and attenuation 1/(a + b·t + c·t²). */
 export interface LightState {
@@ -51,6 +59,8 @@ export interface LightState {
 /** Everything the playground shows; `JSON.stringify` of it is what the URL carries. */
 export interface PlaygroundState {
   view: ViewMode;
+  /** The scene drawn (the lecture's sphere by default). */
+  scene: SceneName;
   material: {
     shading: Shading;
     lighting: Lighting;
@@ -145,6 +155,7 @@ export function defaultLight(): LightState {
 export function defaultState(): PlaygroundState {
   return {
     view: 'single',
+    scene: 'sphere',
     material: {
       shading: 'phong',
       lighting: 'blinn-phong',
@@ -321,6 +332,7 @@ const lightParser = object<LightState>({
 
 const stateParser = object<PlaygroundState>({
   view: oneOf('single', 'compare'),
+  scene: oneOf(...SCENES),
   material: object({
     shading: oneOf('flat', 'gouraud', 'phong'),
     lighting: oneOf('phong', 'blinn-phong'),

@@ -1,6 +1,8 @@
-import { button } from 'leva';
+import { button, levaStore } from 'leva';
+import { useEffect } from 'react';
+import { SCENE_LABELS, SPHERE_ONLY_INPUTS } from '../engine/scenes';
 import type { PlaygroundState, Rgb, Vec3 } from '../state/schema';
-import { DEPTH_MODES, defaultLight, MAX_LIGHTS } from '../state/schema';
+import { DEPTH_MODES, defaultLight, MAX_LIGHTS, SCENES } from '../state/schema';
 import { type Field, type Update, useFolder } from './useFolder';
 
 const vec3 = (label: string, step = 0.1): Record<string, unknown> => ({ label, step });
@@ -27,6 +29,16 @@ export function SceneControls({
         read: (s) => s.view,
         write: (d, v: PlaygroundState['view']) => {
           d.view = v;
+        },
+      },
+      scene: {
+        input: {
+          label: 'scene',
+          options: Object.fromEntries(SCENES.map((name) => [SCENE_LABELS[name], name])),
+        },
+        read: (s) => s.scene,
+        write: (d, v: PlaygroundState['scene']) => {
+          d.scene = v;
         },
       },
     },
@@ -377,6 +389,15 @@ export function SceneControls({
     },
     5,
   );
+
+  // The sphere's own inputs are greyed out while another scene is shown (the note beside the panel says why).
+  const sphereOnly = state.scene !== 'sphere';
+  useEffect(() => {
+    const data = levaStore.getData();
+    for (const path of SPHERE_ONLY_INPUTS) {
+      if (data[path]) levaStore.disableInputAtPath(path, sphereOnly);
+    }
+  }, [sphereOnly]);
   return null;
 }
 

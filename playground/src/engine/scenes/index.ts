@@ -1,0 +1,64 @@
+/**
+ * The scene picker's scenes: a builder per scene (one file each), their labels in the panel, and what of the
+ * panel applies to each.
+ */
+import type { SceneName } from '../../state/schema';
+import { createInstancedScene } from './instanced';
+import { createLightsScene } from './lights';
+import { createSkinnedScene } from './skinned';
+import { createTexturedScene } from './textured';
+import type { DemoScene } from './types';
+
+export type { DemoScene, ScenePart } from './types';
+
+/** The picker's label of each scene (leva select: label → value). */
+export const SCENE_LABELS: Readonly<Record<SceneName, string>> = {
+  sphere: "the lecture's sphere",
+  instanced: 'instanced spheres',
+  skinned: 'skinned + morphing mesh',
+  textured: 'textured, normal map',
+  lights: "three's lights, fog, clipping",
+};
+
+/** Builds one of the scenes that replace the lecture's sphere. */
+export function createScene(name: Exclude<SceneName, 'sphere'>): DemoScene {
+  switch (name) {
+    case 'instanced':
+      return createInstancedScene();
+    case 'skinned':
+      return createSkinnedScene();
+    case 'textured':
+      return createTexturedScene();
+    case 'lights':
+      return createLightsScene();
+  }
+}
+
+/** Inputs of the panel (leva paths) that change only the lecture's sphere. */
+export const SPHERE_ONLY_INPUTS = [
+  'Sphere.render',
+  'Sphere.base',
+  'Sphere.level',
+  'Sphere.auto',
+  'Sphere.maxErrorPx',
+  'Sphere.radius',
+  'Sphere.scale',
+] as const;
+
+/** What the panel's note says about a scene: what it shows and which options do not apply to it. */
+export function sceneNote(name: SceneName): string {
+  const others =
+    'Material (outline included), lights, camera, trackball and the compare view apply; the Sphere folder and the GLSL editor are for the lecture’s sphere only (greyed out).';
+  switch (name) {
+    case 'sphere':
+      return 'The lecture’s sphere: every option applies.';
+    case 'instanced':
+      return `One InstancedMesh of 40 spheres; instanceColor tints ka and kd. ${others}`;
+    case 'skinned':
+      return `A cylinder on four bones, posed, with a morph target swelling its middle. ${others}`;
+    case 'textured':
+      return `A torus knot with a checker map (tints ka and kd) and a bump normal map, made in code. ${others}`;
+    case 'lights':
+      return `Lit by three's hemisphere, ambient, directional, point and spot lights (next to the panel's lights), with fog and a clipping plane. ${others}`;
+  }
+}
