@@ -555,3 +555,49 @@ for (const side of ['double', 'back'] as const)
         // Lit by the light in front (not the ambient-only colour of the unflipped normal).
         expect(stats.centre[0], info).toBeGreaterThan(150);
       });
+
+// Flat shading of a plain indexed geometry (no flatShadingGeometry): lit per fragment at the fragment's world
+// position with the face normal from screen-space derivatives; shade() with the normal of the triangle under
+// the pixel, away from its edges.
+for (const [name, config] of [
+  ['TorusKnotGeometry', { object: 'torus-knot', indexedFlat: true }],
+  ['the indexed lecture sphere', { object: 'mesh', indexedFlat: true, scale: [2, 1, 2] }],
+  [
+    'the indexed sphere, instanced with instanceColor',
+    { object: 'instanced', indexedFlat: true, level: 3, instances: THREE_INSTANCES },
+  ],
+  ['an indexed SkinnedMesh with a moved bone', { object: 'skinned', indexedFlat: true, bone: 0.7 }],
+  ['an indexed morphed sphere', { object: 'morphed', indexedFlat: true, level: 3 }],
+  [
+    "three's lights and fog",
+    { object: 'torus-knot', indexedFlat: true, threeLights: THREE_LIGHTS, fog: { near: 1.5, far: 4 } },
+  ],
+] as const) {
+  test(`flat shading without preparation, ${name}: drawn where MeshPhongMaterial (flatShading) draws, = shade() with the derivative face normal at the fragment`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { shading: 'flat', ...config } as SceneConfig);
+    expectOracleCoverage(stats, 2500);
+    expectShade(stats, 1500);
+  });
+}
+
+test('flat shading without preparation, DoubleSide and BackSide: a back face is lit with its flipped normal', async ({
+  page,
+}) => {
+  await open(page);
+  for (const side of ['double', 'back'] as const)
+    for (const mirrored of [false, true]) {
+      const stats = await page.evaluate((c) => window.materialHarness.sideCompare(c), {
+        side,
+        mirrored,
+        shading: 'flat' as const,
+        indexed: true,
+      });
+      const info = JSON.stringify(stats);
+      expect(stats.compared, info).toBeGreaterThan(1000);
+      expect(stats.maxError, info).toBeLessThanOrEqual(2);
+      expect(stats.centre[0], info).toBeGreaterThan(150);
+    }
+});

@@ -29,6 +29,7 @@ import {
   type Camera,
   Color,
   CylinderGeometry,
+  DataTexture,
   DirectionalLight,
   DoubleSide,
   Euler,
@@ -45,6 +46,7 @@ import {
   Mesh,
   MeshBasicMaterial,
   MeshPhongMaterial,
+  NoColorSpace,
   NoToneMapping,
   type Object3D,
   OrthographicCamera,
@@ -54,12 +56,15 @@ import {
   PointLight,
   Quaternion,
   Raycaster,
+  RGBAFormat,
   Scene,
   type ShaderMaterial,
   Skeleton,
   SkinnedMesh,
+  SphereGeometry,
   SpotLight,
   SRGBColorSpace,
+  TorusKnotGeometry,
   Triangle,
   Uint16BufferAttribute,
   Vector2,
@@ -746,9 +751,16 @@ export interface SceneConfig {
     | 'morphed'
     | 'instanced-skinned'
     | 'instanced-morphed'
-    | 'impostor';
+    | 'impostor'
+    | 'torus-knot'
+    | 'uv-sphere';
   /** Flat shading of flatShadingGeometry(geometry) instead of the triangle soup. */
   flatCorners?: boolean;
+  /**
+   * Flat shading of the plain indexed geometry (no preparation): the derivative face normal per fragment. The
+   * torus knot is always indexed.
+   */
+  indexedFlat?: boolean;
   /** Sphere without a normal attribute (analytic normals; spheres only). @default false */
   analytic?: boolean;
   /** Sphere level. @default 5 */
@@ -784,6 +796,93 @@ export interface SceneConfig {
   phongLight?: boolean;
   /** The PhongLight in the material's list (else found in the scene). @default true */
   listed?: boolean;
+  /** Textures, vertex colours, emissive and alpha (the torus knot has uvs). */
+  surface?: SceneSurface;
+}
+
+/** The surface of a ShadingMaterial (and of its MeshPhongMaterial oracle). */
+export interface SceneSurface {
+  /** A 4 × 4 sRGB colour texture (nearest); `'alpha'`: its alpha varies too. */
+  map?: boolean | 'alpha';
+  /** Vertex colours: RGB, or RGBA with a varying alpha. */
+  vertexColors?: 'rgb' | 'rgba';
+  emissive?: readonly [number, number, number];
+  /** A 4 × 4 sRGB texture multiplying emissive. */
+  emissiveMap?: boolean;
+  opacity?: number;
+  transparent?: boolean;
+  alphaTest?: number;
+  /** A 4 × 4 alpha map (green 0 … 1). */
+  alphaMap?: boolean;
+}
+
+/** The side of the harness's textures, in texels. */
+const TEXELS = 4;
+
+/** A deterministic 4 × 4 RGBA8 texture: `seed` picks the pattern; `alpha` gives the texels alpha 0.25 … 1. */
+function surfaceTexture(seed: number, alpha: boolean, srgbSpace: boolean): DataTexture {
+  const data = new Uint8Array(4 * TEXELS * TEXELS);
+  for (let i = 0; i < TEXELS * TEXELS; i++) {
+    const k = (i * 7 + seed * 5) % 16;
+    data.set(
+      [
+        96 + ((k * 37) % 160),
+        96 + ((k * 71 + 40) % 160),
+        96 + ((k * 113 + 80) % 160),
+        alpha ? 64 + 12 * k : 255,
+      ],
+      4 * i,
+    );
+  }
+  const texture = new DataTexture(data, TEXELS, TEXELS, RGBAFormat);
+  texture.colorSpace = srgbSpace ? SRGBColorSpace : NoColorSpace;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/** The linear RGBA of the nearest texel at `uv` as the GPU samples it (sRGB decoded), or null near a texel edge. */
+function texelAt(texture: DataTexture, u: number, v: number): number[] | null {
+  const x = u * TEXELS;
+  const y = v * TEXELS;
+  const fx = x - Math.floor(x);
+  const fy = y - Math.floor(y);
+  if (Math.min(fx, 1 - fx, fy, 1 - fy) < 0.08) return null;
+  const i = Math.min(Math.max(Math.floor(x), 0), TEXELS - 1);
+  const j = Math.min(Math.max(Math.floor(y), 0), TEXELS - 1);
+  const data = texture.image.data as Uint8Array;
+  const t = Array.from(data.subarray(4 * (j * TEXELS + i), 4 * (j * TEXELS + i) + 4), (c) => c / 255);
+  if (texture.colorSpace === SRGBColorSpace)
+    for (let k = 0; k < 3; k++) t[k] = t[k] < 0.04045 ? t[k] / 12.92 : ((t[k] + 0.055) / 1.055) ** 2.4;
+  return t;
+}
+
+/** Deterministic vertex colours (linear, 0.35 … 1; alpha 0.3 … 1 for RGBA) from the positions. */
+function setVertexColors(geometry: BufferGeometry, rgba: boolean): void {
+  const position = geometry.getAttribute('position');
+  const size = rgba ? 4 : 3;
+  const colors = new Float32Array(size * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const x = position.getX(i);
+    const y = position.getY(i);
+    const z = position.getZ(i);
+    colors[size * i] = 0.675 + 0.325 * Math.sin(3 * x + 1);
+    colors[size * i + 1] = 0.675 + 0.325 * Math.sin(2 * y + 3 * z);
+    colors[size * i + 2] = 0.675 + 0.325 * Math.cos(4 * z - x);
+    if (rgba) colors[size * i + 3] = 0.65 + 0.35 * Math.sin(5 * x + 2 * y);
+  }
+  geometry.setAttribute('color', new Float32BufferAttribute(colors, size));
+}
+
+/** The surface options on `material` (a ShadingMaterial or its MeshPhongMaterial oracle). */
+function applySurface(material: ShadingMaterial | MeshPhongMaterial, surface: SceneSurface): void {
+  if (surface.map) material.map = surfaceTexture(1, surface.map === 'alpha', true);
+  if (surface.vertexColors) material.vertexColors = true;
+  if (surface.emissive) material.emissive = new Color(...surface.emissive);
+  if (surface.emissiveMap) material.emissiveMap = surfaceTexture(2, false, true);
+  if (surface.opacity !== undefined) material.opacity = surface.opacity;
+  if (surface.transparent) material.transparent = true;
+  if (surface.alphaTest !== undefined) material.alphaTest = surface.alphaTest;
+  if (surface.alphaMap) material.alphaMap = surfaceTexture(3, false, false);
 }
 
 /** One of three's lights (colours linear). */
@@ -909,8 +1008,8 @@ function skinnedCylinder(): BufferGeometry {
 }
 
 /** The sphere with one morph target at full influence: stretched to (1.6, 0.8, 1.2), normals to match. */
-function morphedSphere(level: number): BufferGeometry {
-  const g = sphereGeometry(level, true).clone();
+function morphedSphere(level: number, indexed = false): BufferGeometry {
+  const g = sphereGeometry(level, true, indexed).clone();
   const position = g.getAttribute('position');
   const k = [1.6, 0.8, 1.2];
   const p = new Float32Array(3 * position.count);
@@ -971,6 +1070,7 @@ function buildScene(config: SceneConfig): SceneSetup {
     ...(config.constant ? { kd: 0, ks: 0 } : {}),
   });
   if (config.toneMapped === false) material.toneMapped = false;
+  if (config.surface) applySurface(material as ShadingMaterial, config.surface);
   const flat = config.shading === 'flat';
   let geometry: BufferGeometry;
   const skinned = kind === 'skinned' || kind === 'instanced-skinned';
@@ -979,13 +1079,25 @@ function buildScene(config: SceneConfig): SceneSetup {
     geometry = flat
       ? config.flatCorners
         ? flatShadingGeometry(cylinder)
-        : cylinder.toNonIndexed()
+        : config.indexedFlat
+          ? cylinder
+          : cylinder.toNonIndexed()
       : cylinder;
+  } else if (kind === 'torus-knot' || kind === 'uv-sphere') {
+    // The knot hides parts of itself; three's UV sphere (uvs, normals, indexed) is convex: nothing shows
+    // through its alpha-tested holes or behind its blended pixels but the clear colour.
+    geometry =
+      kind === 'torus-knot' ? new TorusKnotGeometry(0.8, 0.28, 96, 12) : new SphereGeometry(1.2, 48, 24);
+    if (config.surface?.vertexColors) setVertexColors(geometry, config.surface.vertexColors === 'rgba');
+    // Flat shading: the triangle soup (exact, one colour per face) unless the plain indexed one is asked for.
+    if (flat && !config.indexedFlat) geometry = geometry.toNonIndexed();
   } else if (kind === 'morphed' || kind === 'instanced-morphed') {
-    const sphere = morphedSphere(level);
+    const sphere = morphedSphere(level, config.indexedFlat ?? false);
     geometry = flat ? (config.flatCorners ? flatShadingGeometry(sphere) : sphere) : sphere;
   } else if (flat) {
-    geometry = config.flatCorners ? flatSphereGeometry(level) : sphereGeometry(level, false);
+    geometry = config.flatCorners
+      ? flatSphereGeometry(level)
+      : sphereGeometry(level, false, config.indexedFlat ?? false);
   } else {
     geometry = sphereGeometry(level, !(config.analytic ?? false));
   }
@@ -1059,7 +1171,14 @@ function buildScene(config: SceneConfig): SceneSetup {
   }
   object.frustumCulled = false;
   object.scale.set(...(config.scale ?? [1, 1, 1]));
-  if (kind === 'mesh' || kind === 'morphed' || kind === 'skinned' || kind === 'impostor') {
+  if (
+    kind === 'mesh' ||
+    kind === 'morphed' ||
+    kind === 'skinned' ||
+    kind === 'impostor' ||
+    kind === 'torus-knot' ||
+    kind === 'uv-sphere'
+  ) {
     // A single object stands where instance 0 would.
     object.applyMatrix4(instances[0]);
     instances[0] = new Matrix4();
@@ -1214,6 +1333,15 @@ function sceneCompare(config: SceneConfig): SceneStats {
   oracle.clippingPlanes = material.clippingPlanes;
   oracle.clipIntersection = material.clipIntersection;
   oracle.toneMapped = material.toneMapped;
+  oracle.flatShading = config.shading === 'flat';
+  if (config.surface) {
+    applySurface(oracle, config.surface);
+    // The same textures (the oracle's only decide where and how opaque it draws).
+    const ours = material as ShadingMaterial;
+    oracle.map = ours.map;
+    oracle.alphaMap = ours.alphaMap;
+    oracle.emissiveMap = ours.emissiveMap;
+  }
   object.material = oracle;
   // The impostor's oracle is a fine sphere mesh (level 7) with the same transform.
   if (config.object === 'impostor') object.geometry = sphereGeometry(7, true);
@@ -1312,6 +1440,11 @@ function sceneCompare(config: SceneConfig): SceneStats {
   const centroids = new Float64Array(3 * triangles);
   const faceNormals = new Float64Array(3 * triangles);
   const faceTint = new Float64Array(3 * triangles);
+  // Per corner: uv and vertex colour (RGBA, alpha 1 for RGB), for the surface.
+  const cornerUv = new Float64Array(6 * triangles);
+  const cornerColor = new Float64Array(12 * triangles).fill(1);
+  const uvAttribute = geometry.getAttribute('uv');
+  const colorAttribute = config.surface?.vertexColors ? geometry.getAttribute('color') : undefined;
   const analytic = geometry.getAttribute('normal') === undefined;
   const p = [new Vector3(), new Vector3(), new Vector3()];
   const n = new Vector3();
@@ -1329,6 +1462,11 @@ function sceneCompare(config: SceneConfig): SceneStats {
         objectPosition(object, geometry, vertex, p[j]);
         const w = p[j].clone().applyMatrix4(model);
         world.set([w.x, w.y, w.z], 9 * t + 3 * j);
+        if (uvAttribute !== undefined)
+          cornerUv.set([uvAttribute.getX(vertex), uvAttribute.getY(vertex)], 6 * t + 2 * j);
+        if (colorAttribute !== undefined)
+          for (let k = 0; k < colorAttribute.itemSize; k++)
+            cornerColor[12 * t + 4 * j + k] = colorAttribute.getComponent(vertex, k);
         if (config.shading !== 'flat') {
           objectNormal(object, geometry, analytic, vertex, n).applyMatrix3(nm);
           const l = n.length();
@@ -1345,17 +1483,24 @@ function sceneCompare(config: SceneConfig): SceneStats {
       faceTint.set(tints[k], 3 * t);
     }
   }
+  // Flat shading of a plain indexed geometry: lit per fragment with the face normal (screen-space derivatives).
+  const derivatives = config.shading === 'flat' && index !== null && !config.flatCorners;
   const hits = raycastPixels(world, camera, size, object.matrixWorld.determinant() < 0);
   const edgeDistance = screenEdgeDistance(world, camera, size);
   const e = eyeOf(camera, new Vector4());
   const eye = [e.x, e.y, e.z, e.w];
-  const m: ShadeMaterial = {
+  const base: ShadeMaterial = {
     ka: material.ka.toArray(),
     kd: material.kd.toArray(),
     ks: material.ks.toArray(),
     shininess: material.shininess,
     lighting: material.lighting,
   };
+  let m = base;
+  const surface = config.surface;
+  const surfaceMaterial = material as ShadingMaterial;
+  const emissive = surface?.emissive ?? [0, 0, 0];
+  const pixelTint = [1, 1, 1];
   const lights: Array<ShadeLight | ShadeThreeLight> = threeLights.map(shadeThreeLight);
   if (config.phongLight !== false)
     lights.push({
@@ -1386,7 +1531,40 @@ function sceneCompare(config: SceneConfig): SceneStats {
       if (!interior) continue;
       const [b0, b1, b2] = hits.bary.subarray(3 * i, 3 * i + 3);
       const position = hits.point.subarray(3 * i, 3 * i + 3);
-      const tint = faceTint.subarray(3 * tri, 3 * tri + 3);
+      let tint: ArrayLike<number> = faceTint.subarray(3 * tri, 3 * tri + 3);
+      // The surface: texel × vertex colour multiplies ka and kd (the vertex's own colour with vertex lighting),
+      // emissive × its texel is added, alpha = opacity × texel alpha × vertex alpha × alphaMap.g.
+      let alpha = 1;
+      let vertexTint: (j: number) => ArrayLike<number> = () => tint;
+      if (surface !== undefined) {
+        const u = b0 * cornerUv[6 * tri] + b1 * cornerUv[6 * tri + 2] + b2 * cornerUv[6 * tri + 4];
+        const v = b0 * cornerUv[6 * tri + 1] + b1 * cornerUv[6 * tri + 3] + b2 * cornerUv[6 * tri + 5];
+        const texel = surfaceMaterial.map ? texelAt(surfaceMaterial.map as DataTexture, u, v) : [1, 1, 1, 1];
+        const glow = surfaceMaterial.emissiveMap
+          ? texelAt(surfaceMaterial.emissiveMap as DataTexture, u, v)
+          : [1, 1, 1, 1];
+        const mask = surfaceMaterial.alphaMap
+          ? texelAt(surfaceMaterial.alphaMap as DataTexture, u, v)
+          : [1, 1, 1, 1];
+        if (texel === null || glow === null || mask === null) continue; // a texel edge: either side
+        const c = (j: number, k: number) => cornerColor[12 * tri + 4 * j + k];
+        const interpolated = [0, 1, 2, 3].map((k) => b0 * c(0, k) + b1 * c(1, k) + b2 * c(2, k));
+        alpha = (surface.opacity ?? 1) * texel[3] * interpolated[3] * mask[1];
+        if (surface.alphaTest !== undefined && Math.abs(alpha - surface.alphaTest) < 0.02) continue;
+        const faceTintRgb = Array.from(tint);
+        vertexTint = (j) => [0, 1, 2].map((k) => faceTintRgb[k] * c(j, k) * texel[k]);
+        for (let k = 0; k < 3; k++) pixelTint[k] = faceTintRgb[k] * interpolated[k] * texel[k];
+        tint = config.shading === 'flat' && !derivatives ? vertexTint(2) : pixelTint;
+        m = { ...base, emissive: emissive.map((e, k) => e * glow[k]) };
+        if (surface.alphaTest !== undefined && alpha < surface.alphaTest) {
+          // Discarded: the clear colour, as the oracle's hole.
+          stats.compared++;
+          const err = Math.max(ours[4 * i], ours[4 * i + 1], Math.abs(ours[4 * i + 2] - 255));
+          stats.maxError = Math.max(stats.maxError, err);
+          if (err > 2) stats.mismatches++;
+          continue;
+        }
+      }
       if (config.shading === 'phong') {
         for (let k = 0; k < 3; k++)
           normal[k] =
@@ -1400,7 +1578,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
               position: world.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3),
               normal: normals.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3),
               eye,
-              tint,
+              tint: vertexTint(j),
             },
             m,
             lights,
@@ -1409,6 +1587,9 @@ function sceneCompare(config: SceneConfig): SceneStats {
           const bj = j === 0 ? b0 : j === 1 ? b1 : b2;
           for (let k = 0; k < 3; k++) linear[k] += bj * corner[k];
         }
+      } else if (derivatives) {
+        if (edgeDistance(tri, x + 0.5, y + 0.5) < 0.5) continue;
+        shade({ position, normal: faceNormals.subarray(3 * tri, 3 * tri + 3), eye, tint }, m, lights, linear);
       } else {
         if (edgeDistance(tri, x + 0.5, y + 0.5) < 0.1) continue;
         shade(
@@ -1435,9 +1616,12 @@ function sceneCompare(config: SceneConfig): SceneStats {
         continue; // a step fog: either side at its depth
       let err = 0;
       const expected = [0, 0, 0];
+      const blend = surface?.transparent ? alpha : 1;
       for (let k = 0; k < 3; k++) {
         const out = config.linearOutput ? Math.max(linear[k], 0) : srgb(linear[k]);
-        const mixed = out + (fogOut[k] - out) * f;
+        // Transparent: three's normal blending over the clear colour (0, 0, 1), in the output space.
+        const source = Math.min(Math.max(out + (fogOut[k] - out) * f, 0), 1);
+        const mixed = source * blend + (k === 2 ? 1 - blend : 0);
         expected[k] = Math.round(Math.min(Math.max(mixed, 0), 1) * 255);
         err = Math.max(err, Math.abs(expected[k] - ours[4 * i + k]));
       }
@@ -1632,7 +1816,13 @@ function threeLightExtremes(): { swept: number; programs: number; variants: numb
  * `side` DoubleSide or BackSide, lit by a far PhongLight on the camera's side: every pixel against shade() with
  * the normal the lecture's rule gives (the world normal flipped towards the viewer).
  */
-function sideCompare(config: { side: 'double' | 'back'; mirrored: boolean; shading: Shading }): {
+function sideCompare(config: {
+  side: 'double' | 'back';
+  mirrored: boolean;
+  shading: Shading;
+  /** Flat shading of the indexed plane (derivative normals) instead of its soup. */
+  indexed?: boolean;
+}): {
   compared: number;
   maxError: number;
   centre: number[];
@@ -1645,7 +1835,10 @@ function sideCompare(config: { side: 'double' | 'back'; mirrored: boolean; shadi
   const material = new ShadingMaterial({ shading: config.shading, ka: 0.2, ks: 0, lights: [light] });
   material.side = config.side === 'double' ? DoubleSide : BackSide;
   const plane = new PlaneGeometry(4, 4, 8, 8);
-  const mesh = new Mesh(config.shading === 'flat' ? plane.toNonIndexed() : plane, material);
+  const mesh = new Mesh(
+    config.shading === 'flat' && !config.indexed ? plane.toNonIndexed() : plane,
+    material,
+  );
   mesh.rotation.y = Math.PI; // its front face looks down −z, away from the camera
   if (config.mirrored) mesh.scale.x = -1;
   const scene = new Scene();
@@ -1702,7 +1895,87 @@ function sideCompare(config: { side: 'double' | 'back'; mirrored: boolean; shadi
   return { compared, maxError, centre, expected: expectedCentre };
 }
 
+/**
+ * Each surface feature (map, vertexColors, emissive, emissiveMap, transparent, alphaTest, alphaMap, and flat
+ * shading of a plain indexed geometry) flipped on and off `flips` times at random (fixed seed), the others off,
+ * rendering after each flip, with one ShadingMaterial: the live program count.
+ */
+function flipSurface(flips: number): { before: number; after: number; max: number; variants: number } {
+  const size = 16;
+  renderer.setSize(size, size, false);
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const material = new ShadingMaterial({ lights: [light] });
+  const indexed: BufferGeometry = new SphereGeometry(1, 12, 8);
+  setVertexColors(indexed, false);
+  const soup = indexed.toNonIndexed();
+  const mesh = new Mesh(indexed, material);
+  const scene = new Scene();
+  scene.add(light, mesh);
+  const camera = makeCamera(false);
+  const map = surfaceTexture(1, false, true);
+  const glow = surfaceTexture(2, false, true);
+  const mask = surfaceTexture(3, false, false);
+  const features: Array<(on: boolean) => void> = [
+    (on) => {
+      material.map = on ? map : null;
+    },
+    (on) => {
+      material.vertexColors = on;
+    },
+    (on) => {
+      material.emissive = on ? [0.1, 0, 0] : 0;
+    },
+    (on) => {
+      material.emissiveMap = on ? glow : null;
+    },
+    (on) => {
+      material.transparent = on;
+    },
+    (on) => {
+      material.alphaTest = on ? 0.5 : 0;
+    },
+    (on) => {
+      material.alphaMap = on ? mask : null;
+    },
+    (on) => {
+      material.shading = 'flat';
+      mesh.geometry = on ? indexed : soup;
+    },
+  ];
+  const reset = () => {
+    for (const f of features) f(false);
+    material.shading = 'phong';
+    mesh.geometry = indexed;
+  };
+  reset();
+  renderer.render(scene, camera);
+  const before = renderer.info.programs?.length ?? 0;
+  let max = before;
+  const variants = new Set<string>(['none']);
+  let seed = 1414;
+  const random = () => {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    return seed / 2147483648;
+  };
+  features.forEach((flip, k) => {
+    for (let i = 0; i < flips; i++) {
+      reset();
+      const on = random() < 0.5;
+      flip(on);
+      renderer.render(scene, camera);
+      variants.add(on ? `${k}` : k === features.length - 1 ? 'flat soup' : 'none');
+      max = Math.max(max, renderer.info.programs?.length ?? 0);
+    }
+  });
+  reset();
+  const after = renderer.info.programs?.length ?? 0;
+  material.dispose();
+  return { before, after, max, variants: variants.size };
+}
+
 const api = {
+  flipSurface,
   sideCompare,
   threeLightExtremes,
   inPlaceEdits,

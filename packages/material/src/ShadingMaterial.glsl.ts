@@ -6,6 +6,9 @@
 //   USE_ATTENUATION                                some light has b or c ≠ 0 or a ≠ 1
 //   SPHERE_NORMALS                                 object normal = position (no normal attribute)
 //   FLAT_CORNERS                                   flat shading of a flatShadingGeometry (indexed, per-vertex face)
+//   FLAT_DERIVATIVES                               flat shading of a plain indexed geometry: per-fragment lighting
+//                                                  with the face normal from screen-space derivatives
+//   SHADING_EMISSIVE                               emissive ≠ black (added after the lighting)
 // three's DOUBLE_SIDED / FLIP_SIDED (side): a back face is lit with its flipped normal (gl_FrontFacing).
 // and by three's program parameters (USE_INSTANCING, USE_SKINNING, USE_FOG, NUM_CLIPPING_PLANES, …: see
 // shadingChunks.glsl.ts). Everything is in world space. The rules for degenerate inputs match `shade()` in
@@ -13,6 +16,7 @@
 // the standard parts from three's.
 import {
   clippingFragment,
+  emissiveFragment,
   flatDeformVertex,
   instanceChunk,
   instanceVertex,
@@ -20,6 +24,9 @@ import {
   outputFragment,
   projectVertex,
   sceneFeatures,
+  surfaceFragment,
+  surfaceFragmentPars,
+  surfaceVertexPars,
 } from './shadingChunks.glsl.js';
 
 /** Vertex stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights (see {@link withLightCount}). */
@@ -32,13 +39,20 @@ export const vertexShader = /* glsl */ `
 #include <logdepthbuf_pars_vertex>
 #include <clipping_planes_pars_vertex>
 ${sceneFeatures}
+${surfaceVertexPars}
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
 ${instanceChunk}
 
-#if defined(SHADING_FLAT)
+#if defined(SHADING_FLAT) && !defined(FLAT_DERIVATIVES)
 flat out vec3 vColor;
 #ifdef DOUBLE_SIDED
 flat out vec3 vColorBack; // the back face's colour, lit with the flipped normal
+#endif
+#ifdef SHADING_SPLIT
+flat out vec3 vSpecular; // the ks part (vColor is then the ka/kd part, multiplied by the texel per fragment)
+#ifdef DOUBLE_SIDED
+flat out vec3 vSpecularBack;
+#endif
 #endif
 #ifdef FLAT_CORNERS
 // flatShadingGeometry: this vertex provokes one face; these are its other two corners (object space).
@@ -62,15 +76,23 @@ out vec3 vColor;
 #ifdef DOUBLE_SIDED
 out vec3 vColorBack;
 #endif
+#ifdef SHADING_SPLIT
+out vec3 vSpecular;
+#ifdef DOUBLE_SIDED
+out vec3 vSpecularBack;
+#endif
+#endif
 #else
 out vec3 vWorldPosition;
+#ifndef FLAT_DERIVATIVES
 out vec3 vNormal;
+#endif
 #ifdef SHADING_TINT
 out vec3 vShadingTint;
 #endif
 #endif
 
-#if !defined(SHADING_PHONG)
+#if !defined(SHADING_PHONG) && !defined(FLAT_DERIVATIVES)
 ${lighting}
 #endif
 
@@ -79,12 +101,16 @@ ${projectVertex}
   // three's logarithmic depth buffer (when the renderer has one), like its own materials.
   #include <logdepthbuf_vertex>
 ${instanceVertex}
-#if defined(SHADING_TINT) && defined(SHADING_PHONG)
+  #include <uv_vertex>
+#ifdef USE_COLOR_ALPHA
+  vShadingAlpha = color.a;
+#endif
+#if defined(SHADING_TINT) && ( defined(SHADING_PHONG) || defined(FLAT_DERIVATIVES) )
   vShadingTint = tint;
 #elif defined(SHADING_TINT)
   shadingTint = tint;
 #endif
-#if defined(SHADING_FLAT)
+#if defined(SHADING_FLAT) && !defined(FLAT_DERIVATIVES)
   // Once per face: at the centroid of the triangle this vertex belongs to (or provokes), with the face normal.
 #ifdef FLAT_CORNERS
   vec3 p0 = flatCornerA;
@@ -118,47 +144,83 @@ ${flatDeformVertex}
 #if defined( DOUBLE_SIDED ) || defined( FLIP_SIDED )
   // three's sides: a back face is lit with its flipped normal (both colours when both sides are drawn).
   vec3 backColor = shadeColor(faceCentre, -(shadingNormalMatrix * faceNormal));
+#ifdef SHADING_SPLIT
+  vec3 backSpecular = shadingSpecular;
+#endif
 #ifdef DOUBLE_SIDED
   vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
   vColorBack = backColor;
+#ifdef SHADING_SPLIT
+  vSpecular = shadingSpecular;
+  vSpecularBack = backSpecular;
+#endif
 #else
   vColor = backColor;
+#ifdef SHADING_SPLIT
+  vSpecular = backSpecular;
+#endif
 #endif
 #else
   vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
+#ifdef SHADING_SPLIT
+  vSpecular = shadingSpecular;
+#endif
 #endif
 #else
+#ifndef FLAT_DERIVATIVES
 #ifdef SPHERE_NORMALS
   vec3 objectNormal = position;
 #else
   vec3 objectNormal = normal;
 #endif
+#endif
 #ifdef SHADING_SCENE
+#ifndef FLAT_DERIVATIVES
   #include <morphnormal_vertex>
   #include <skinnormal_vertex>
+#endif
   vec4 shadingLocal = vec4( transformed, 1.0 );
 #ifdef SHADING_INSTANCE
   shadingLocal = shadingInstance * shadingLocal;
+#ifndef FLAT_DERIVATIVES
   objectNormal = shadingRescale( shadingInstanceNormal * objectNormal );
+#endif
 #endif
   vec3 worldPosition = ( modelMatrix * shadingLocal ).xyz;
 #else
   vec3 worldPosition = (modelMatrix * vec4(position, 1.0)).xyz;
 #endif
+#ifndef FLAT_DERIVATIVES
   vec3 worldNormal = shadingNormalMatrix * objectNormal;
+#endif
 #if defined(SHADING_GOURAUD) && ( defined( DOUBLE_SIDED ) || defined( FLIP_SIDED ) )
   vec3 backColor = shadeColor(worldPosition, -worldNormal);
+#ifdef SHADING_SPLIT
+  vec3 backSpecular = shadingSpecular;
+#endif
 #ifdef DOUBLE_SIDED
   vColor = shadeColor(worldPosition, worldNormal);
   vColorBack = backColor;
+#ifdef SHADING_SPLIT
+  vSpecular = shadingSpecular;
+  vSpecularBack = backSpecular;
+#endif
 #else
   vColor = backColor;
+#ifdef SHADING_SPLIT
+  vSpecular = backSpecular;
+#endif
 #endif
 #elif defined(SHADING_GOURAUD)
   vColor = shadeColor(worldPosition, worldNormal);
+#ifdef SHADING_SPLIT
+  vSpecular = shadingSpecular;
+#endif
 #else
+#ifndef FLAT_DERIVATIVES
   float normalLength = length(worldNormal);
   vNormal = normalLength > 0.0 ? worldNormal / normalLength : vec3(0.0);
+#endif
   vWorldPosition = worldPosition;
 #endif
 #endif
@@ -171,19 +233,36 @@ export const fragmentShader = /* glsl */ `
 #include <fog_pars_fragment>
 #include <clipping_planes_pars_fragment>
 ${sceneFeatures}
-#if defined(SHADING_FLAT)
+${surfaceFragmentPars}
+#if defined(SHADING_FLAT) && !defined(FLAT_DERIVATIVES)
 flat in vec3 vColor;
 #ifdef DOUBLE_SIDED
 flat in vec3 vColorBack;
+#endif
+#ifdef SHADING_SPLIT
+flat in vec3 vSpecular;
+#ifdef DOUBLE_SIDED
+flat in vec3 vSpecularBack;
+#endif
 #endif
 #elif defined(SHADING_GOURAUD)
 in vec3 vColor;
 #ifdef DOUBLE_SIDED
 in vec3 vColorBack;
 #endif
+#ifdef SHADING_SPLIT
+in vec3 vSpecular;
+#ifdef DOUBLE_SIDED
+in vec3 vSpecularBack;
+#endif
+#endif
 #else
 in vec3 vWorldPosition;
+#ifdef FLAT_DERIVATIVES
+vec3 vNormal; // the face's outward normal, from the derivatives (set in main; not a varying here)
+#else
 in vec3 vNormal;
+#endif
 #ifdef SHADING_TINT
 in vec3 vShadingTint;
 #endif
@@ -193,9 +272,28 @@ ${lighting}
 void main() {
   #include <logdepthbuf_fragment>
 ${clippingFragment}
-#if defined(SHADING_PHONG)
+${surfaceFragment}
+#if defined(SHADING_PHONG) || defined(FLAT_DERIVATIVES)
 #ifdef SHADING_TINT
   shadingTint = vShadingTint;
+#endif
+#ifdef USE_MAP
+  shadingTint *= diffuseColor.rgb; // the texel multiplies ka and kd, not ks
+#endif
+#ifdef FLAT_DERIVATIVES
+  // The plane of the fragment's triangle: cross(dFdx p, dFdy p) faces the viewer (each rescaled so the cross
+  // product neither overflows nor underflows); outward is that for a front face of the geometry, its opposite
+  // for a back face.
+  vec3 fdx = dFdx( vWorldPosition );
+  vec3 fdy = dFdy( vWorldPosition );
+  fdx /= max( max( max( abs( fdx.x ), abs( fdx.y ) ), abs( fdx.z ) ), 1e-30 );
+  fdy /= max( max( max( abs( fdy.x ), abs( fdy.y ) ), abs( fdy.z ) ), 1e-30 );
+  vNormal = cross( fdx, fdy );
+#ifdef FLIP_SIDED
+  vNormal = gl_FrontFacing ? - vNormal : vNormal; // BackSide: three turns the front face round
+#else
+  vNormal = gl_FrontFacing ? vNormal : - vNormal;
+#endif
 #endif
 #if defined( DOUBLE_SIDED )
   vec3 color = shadeColor(vWorldPosition, gl_FrontFacing ? vNormal : -vNormal);
@@ -206,11 +304,23 @@ ${clippingFragment}
 #endif
 #elif defined( DOUBLE_SIDED )
   vec3 color = gl_FrontFacing ? vColor : vColorBack;
+#ifdef SHADING_SPLIT
+  color = color * diffuseColor.rgb + ( gl_FrontFacing ? vSpecular : vSpecularBack );
+#endif
 #else
   vec3 color = vColor;
+#ifdef SHADING_SPLIT
+  color = color * diffuseColor.rgb + vSpecular;
 #endif
+#endif
+${emissiveFragment}
+#if defined( SHADING_SURFACE ) && ! defined( OPAQUE )
+  gl_FragColor = vec4(color, diffuseColor.a);
+#else
   gl_FragColor = vec4(color, 1.0);
+#endif
 ${outputFragment}
+  #include <premultiplied_alpha_fragment>
 }
 `;
 

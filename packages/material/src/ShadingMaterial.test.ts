@@ -3,6 +3,7 @@ import fc from 'fast-check';
 import {
   BufferGeometry,
   Color,
+  DataTexture,
   Float32BufferAttribute,
   Group,
   IcosahedronGeometry,
@@ -169,17 +170,20 @@ describe('ShadingMaterial variants (defines) and recompiles', () => {
     );
   });
 
-  it('flat shading takes a flatShadingGeometry or a soup, not a plain indexed one; gouraud and phong need normals unless a flagged sphere', () => {
+  it('flat shading takes a flatShadingGeometry, a soup or a plain indexed one (derivative normals); gouraud and phong need normals unless a flagged sphere', () => {
     const indexed = new BufferGeometry();
     indexed.setAttribute('position', new Float32BufferAttribute([0, 0, 0, 1, 0, 0, 0, 1, 0], 3));
     indexed.setIndex([0, 1, 2]);
     const m = new ShadingMaterial({ shading: 'flat' });
-    expect(() => draw(m, new Mesh(indexed, m))).toThrow(
-      /flat shading needs a flatShadingGeometry\(geometry\)/,
-    );
+    // A plain indexed geometry: no preparation, per-fragment lighting with the derivative face normal.
+    draw(m, new Mesh(indexed, m));
+    expect(m.defines.FLAT_DERIVATIVES).toBe('');
+    expect(m.defines.FLAT_CORNERS).toBeUndefined();
+    expect(m.uniforms.facePositions.value).toBeNull();
     // The indexed way: each face's last vertex carries the face (FLAT_CORNERS), no texture.
     draw(m, new Mesh(flatShadingGeometry(indexed), m));
     expect(m.defines.FLAT_CORNERS).toBe('');
+    expect(m.defines.FLAT_DERIVATIVES).toBeUndefined();
     expect(m.uniforms.facePositions.value).toBeNull();
     const bare = indexed.toNonIndexed();
     draw(m, new Mesh(bare, m)); // the soup way: positions only, fetched from a texture
@@ -437,5 +441,81 @@ describe('PhongLight', () => {
     expect([c.shading, c.lighting, c.celBands, c.shininess]).toEqual(['flat', 'blinn-phong', 3, 7]);
     expect(c.phongLights).toEqual([light]);
     expect(c.defines).toEqual(m.defines);
+  });
+});
+
+describe('ShadingMaterial surface (three’s map, vertexColors, emissive, opacity, alphaTest, alphaMap)', () => {
+  const texture = () => new DataTexture(new Uint8Array(4), 1, 1);
+
+  it('options and properties by three’s names; bad values throw naming the parameter, the value and the range', () => {
+    const map = texture();
+    const m = new ShadingMaterial({
+      map,
+      vertexColors: true,
+      emissive: [0.1, 0.2, 0.3],
+      opacity: 0.5,
+      transparent: true,
+      alphaTest: 0.25,
+    });
+    expect(m.map).toBe(map);
+    expect(m.vertexColors).toBe(true);
+    expect(m.emissive.toArray()).toEqual([0.1, 0.2, 0.3]);
+    expect([m.opacity, m.transparent, m.alphaTest]).toEqual([0.5, true, 0.25]);
+    expect(() => new ShadingMaterial({ opacity: 1.5 })).toThrow(
+      new RangeError('ShadingMaterial.opacity must be in 0 … 1, got 1.5'),
+    );
+    expect(() => {
+      m.opacity = Number.NaN;
+    }).toThrow(new RangeError('ShadingMaterial.opacity must be in 0 … 1, got NaN'));
+    expect(() => {
+      m.alphaTest = -0.1;
+    }).toThrow(new RangeError('ShadingMaterial.alphaTest must be in 0 … 1, got -0.1'));
+    expect(() => new ShadingMaterial({ emissive: [-1, 0, 0] })).toThrow(
+      /ShadingMaterial.emissive must have finite channels ≥ 0/,
+    );
+    expect(() => new ShadingMaterial({ map: 'brick.png' as never })).toThrow(
+      new TypeError('ShadingMaterial.map must be a THREE.Texture or null, got "brick.png"'),
+    );
+    expect([m.opacity, m.alphaTest]).toEqual([0.5, 0.25]); // unchanged by the refused values
+    // clone() copies the surface (sharing the textures, as three does).
+    const c = m.clone();
+    expect([c.map, c.opacity, c.alphaTest, c.transparent]).toEqual([map, 0.5, 0.25, true]);
+    expect(c.emissive.toArray()).toEqual([0.1, 0.2, 0.3]);
+  });
+
+  it('per draw: the uniforms three refreshes for its own materials (map and its uv transform, opacity, alphaTest, emissive)', () => {
+    const m = new ShadingMaterial({ shading: 'gouraud' });
+    const mesh = new Mesh(sphere(), m);
+    draw(m, mesh);
+    expect(m.defines.SHADING_EMISSIVE).toBeUndefined();
+    const map = texture();
+    map.offset.set(0.25, 0.5);
+    m.map = map;
+    m.alphaMap = texture();
+    m.opacity = 0.4;
+    m.alphaTest = 0.3;
+    m.emissive.setRGB(0.1, 0, 0);
+    const version = m.version;
+    draw(m, mesh);
+    expect(m.uniforms.map.value).toBe(map);
+    expect(m.uniforms.alphaMap.value).toBe(m.alphaMap);
+    expect(m.uniforms.mapTransform.value.elements).toEqual(map.matrix.elements);
+    expect(m.uniforms.mapTransform.value.elements[6]).toBeCloseTo(0.25, 12);
+    expect([m.uniforms.opacity.value, m.uniforms.alphaTest.value]).toEqual([0.4, 0.3]);
+    expect(m.uniforms.emissive.value.toArray()).toEqual([0.1, 0, 0]);
+    expect(m.defines.SHADING_EMISSIVE).toBe('');
+    expect(m.version).toBeGreaterThan(version); // a new program: the map, alpha map, alpha test and emissive
+    const again = m.version;
+    draw(m, mesh);
+    expect(m.version).toBe(again); // nothing changed: no recompile
+    // An emissive edited in place to a bad value is reported once, drawn with the last good one.
+    const error = vi.spyOn(console, 'error').mockImplementation(() => {});
+    m.emissive.setRGB(Number.NaN, 0, 0);
+    draw(m, mesh);
+    draw(m, mesh);
+    expect(error).toHaveBeenCalledTimes(1);
+    expect(String(error.mock.calls[0][0])).toMatch(/^ShadingMaterial.emissive must have finite channels/);
+    expect(m.uniforms.emissive.value.toArray()).toEqual([0.1, 0, 0]);
+    error.mockRestore();
   });
 });

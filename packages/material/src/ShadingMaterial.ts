@@ -9,6 +9,7 @@ import {
   type Scene,
   ShaderMaterial,
   type SkinnedMesh,
+  type Texture,
   UniformsLib,
   UniformsUtils,
   Vector4,
@@ -20,11 +21,20 @@ import { facePositionTexture, faceSkinTexture } from './facePositionTexture.js';
 import { PhongLight } from './PhongLight.js';
 import { fragmentShader, vertexShader, withLightCount } from './ShadingMaterial.glsl.js';
 import { LIGHTINGS, type Lighting } from './shade.js';
-import { type ColorInput, checkColorChannels, checkNonNegative, checkOneOf, setColor } from './validate.js';
+import {
+  type ColorInput,
+  checkColorChannels,
+  checkNonNegative,
+  checkOneOf,
+  checkTexture,
+  checkUnit,
+  setColor,
+} from './validate.js';
 
 /**
  * Where the lighting equation is evaluated (the lecture's shading):
- * - `'flat'`: once per face, at the triangle's centroid with its face normal; one colour per face;
+ * - `'flat'`: once per face, at the triangle's centroid with its face normal; one colour per face (a plain
+ *   indexed geometry: per fragment, with its triangle's face normal from screen-space derivatives);
  * - `'gouraud'`: per vertex, colours interpolated;
  * - `'phong'`: per fragment, normals interpolated and renormalised.
  */
@@ -61,6 +71,28 @@ export interface ShadingMaterialOptions {
    * every visible PhongLight in the rendered scene. @default []
    */
   lights?: readonly PhongLight[];
+  /**
+   * three's `map`: a colour texture whose texel (linear, decoded as three decodes its `colorSpace`) multiplies
+   * ka and kd, never ks; its alpha multiplies the opacity. @default null
+   */
+  map?: Texture | null;
+  /** three's `vertexColors`: the `color` attribute (RGB or RGBA, linear) multiplies ka and kd. @default false */
+  vertexColors?: boolean;
+  /**
+   * three's `emissive`: linear RGB added to the lit colour, outside the lighting (before fog and tone mapping);
+   * a number is a grey level (see {@link ColorInput}). @default 0 (black)
+   */
+  emissive?: ColorInput;
+  /** three's `emissiveMap`: its texel (linear) multiplies `emissive`. @default null */
+  emissiveMap?: Texture | null;
+  /** three's `opacity`, in 0 … 1: the fragment's alpha (with `transparent`, blended as three blends). @default 1 */
+  opacity?: number;
+  /** three's `transparent`: blend by alpha (else alpha is 1). @default false */
+  transparent?: boolean;
+  /** three's `alphaTest`, in 0 … 1: fragments with alpha below it are discarded; 0 = off. @default 0 */
+  alphaTest?: number;
+  /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
+  alphaMap?: Texture | null;
 }
 
 /** The `userData` flag that marks a geometry as a sphere centred at its origin (see {@link ShadingMaterial}). */
@@ -106,6 +138,18 @@ function sceneLightsOf(renderer: WebGLRenderer | null, scene: Scene | null): Sce
 }
 
 const _normalMatrix = /* @__PURE__ */ new Matrix3();
+
+/** A map's uniforms as three's refreshTransformUniform sets them: the texture and its uv transform. */
+function refreshMap(
+  texture: { value: Texture | null },
+  transform: { value: Matrix3 },
+  map: Texture | null,
+): void {
+  texture.value = map;
+  if (map === null) return;
+  if (map.matrixAutoUpdate) map.updateMatrix();
+  transform.value.copy(map.matrix);
+}
 const _eye = /* @__PURE__ */ new Vector4();
 
 /**
@@ -123,7 +167,9 @@ const _eye = /* @__PURE__ */ new Vector4();
  * === true`), use the exact normal = position. Flat shading lights each face once, at its centroid with its
  * face normal, and takes either a {@link flatShadingGeometry} (indexed; each face's last vertex carries the
  * face: the cheaper way) or a non-indexed geometry (each triangle owns its three vertices; the vertex shader
- * fetches them from a float texture, 12 bytes per vertex, cached per geometry).
+ * fetches them from a float texture, 12 bytes per vertex, cached per geometry); any other indexed geometry is
+ * drawn without preparation, each fragment lit at its world position with the face normal from screen-space
+ * derivatives (`FLAT_DERIVATIVES`, what three's `flatShading` does: no exact one colour per face).
  *
  * In any three.js scene, through three's own program parameters and shader chunks, each compiled only when
  * the scene uses it: `InstancedMesh` (its `instanceColor` multiplies ka and kd) and `BatchedMesh`,
@@ -177,8 +223,13 @@ export class ShadingMaterial extends ShaderMaterial {
   // What the last drawn geometry and lights asked for (part of the variant).
   #sphereNormals = false;
   #flatCorners = false;
+  #flatDerivatives = false;
   #attenuation = false;
   #threeLights = false;
+  readonly #emissive = new Color(0, 0, 0);
+  #opacity = 1;
+  // What of the surface three compiles (its program parameters), to raise needsUpdate when it changes.
+  #surfaceKey = '';
   // The message of the in-place problem last reported (null once the values are valid again).
   #reported: string | null = null;
 
@@ -195,6 +246,14 @@ export class ShadingMaterial extends ShaderMaterial {
     ks = [0.5, 0.5, 0.5],
     shininess = 32,
     lights = [],
+    map = null,
+    vertexColors = false,
+    emissive = 0,
+    emissiveMap = null,
+    opacity = 1,
+    transparent = false,
+    alphaTest = 0,
+    alphaMap = null,
   }: ShadingMaterialOptions = {}) {
     super({
       vertexShader: withLightCount(vertexShader, 0),
@@ -213,6 +272,15 @@ export class ShadingMaterial extends ShaderMaterial {
         shadingKa: { value: new Color() },
         shadingKd: { value: new Color() },
         shadingKs: { value: new Color() },
+        map: { value: null },
+        mapTransform: { value: new Matrix3() },
+        alphaMap: { value: null },
+        alphaMapTransform: { value: new Matrix3() },
+        emissive: { value: new Color() },
+        emissiveMap: { value: null },
+        emissiveMapTransform: { value: new Matrix3() },
+        opacity: { value: 1 },
+        alphaTest: { value: 0 },
         ...UniformsUtils.clone(UniformsLib.fog),
         ...UniformsUtils.clone(UniformsLib.lights),
       },
@@ -225,7 +293,56 @@ export class ShadingMaterial extends ShaderMaterial {
     this.ks = ks;
     this.shininess = shininess;
     this.phongLights = lights;
+    this.map = checkTexture('ShadingMaterial.map', map);
+    this.vertexColors = vertexColors === true;
+    this.emissive = emissive;
+    this.emissiveMap = checkTexture('ShadingMaterial.emissiveMap', emissiveMap);
+    this.opacity = opacity;
+    this.transparent = transparent === true;
+    this.alphaTest = alphaTest;
+    this.alphaMap = checkTexture('ShadingMaterial.alphaMap', alphaMap);
     this.#syncDefines();
+  }
+
+  /**
+   * three's `map`: a colour texture (its `colorSpace` decoded to linear as three decodes it) whose texel
+   * multiplies ka and kd (not ks); its alpha multiplies the opacity. Sampled per fragment in every shading
+   * (gouraud and flat pass the ka/kd part and the ks part of their colours separately). @default null
+   */
+  map: Texture | null = null;
+  /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
+  alphaMap: Texture | null = null;
+  /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingMaterial.emissive}. @default null */
+  emissiveMap: Texture | null = null;
+
+  /**
+   * three's `emissive`: linear RGB added to the lit colour outside the lighting, before fog and tone mapping
+   * (channels finite ≥ 0; set it with a {@link ColorInput}, a number being a grey level). Compiled only when not
+   * black or with an `emissiveMap`. @default Color(0, 0, 0)
+   */
+  get emissive(): Color {
+    return this.#emissive;
+  }
+  set emissive(value: ColorInput) {
+    setColor('ShadingMaterial.emissive', this.#emissive, value);
+  }
+
+  /** three's `opacity`, in 0 … 1 (a RangeError otherwise): the alpha, blended when `transparent`. @default 1 */
+  override get opacity(): number {
+    return #opacity in this ? this.#opacity : 1;
+  }
+  override set opacity(value: number) {
+    // three's Material constructor assigns the default before this class's fields exist.
+    if (!(#opacity in this)) return;
+    this.#opacity = checkUnit('ShadingMaterial.opacity', value);
+  }
+
+  /** three's `alphaTest`, in 0 … 1 (a RangeError otherwise): alpha below it is discarded; 0 = off. @default 0 */
+  override get alphaTest(): number {
+    return super.alphaTest;
+  }
+  override set alphaTest(value: number) {
+    super.alphaTest = checkUnit('ShadingMaterial.alphaTest', value);
   }
 
   /** Where the lighting is evaluated: `'flat'`, `'gouraud'` or `'phong'`. @default 'phong' */
@@ -344,24 +461,18 @@ export class ShadingMaterial extends ShaderMaterial {
     const u = this.uniforms;
     const hasNormal = geometry.getAttribute('normal') !== undefined;
     if (this.#shading === 'flat') {
-      this.#flatCorners = geometry.index !== null;
-      if (this.#flatCorners && geometry.getAttribute(FLAT_CORNERS[0]) === undefined) {
-        throw new TypeError(
-          `ShadingMaterial: flat shading needs a flatShadingGeometry(geometry) or a non-indexed geometry (each triangle owns its vertices), got an indexed ${geometry.type}`,
-        );
-      }
       const skinned = (object as SkinnedMesh).isSkinnedMesh === true;
-      if (
-        this.#flatCorners &&
-        (skinned || geometry.morphAttributes.position !== undefined) &&
-        geometry.getAttribute(FLAT_CORNER_INDEX) === undefined
-      ) {
-        throw new TypeError(
-          `ShadingMaterial: flat shading of a skinned or morphed mesh needs the flatShadingGeometry of its skinned or morphed geometry (with ${FLAT_CORNER_INDEX}), or a non-indexed geometry`,
-        );
-      }
-      u.facePositions.value = this.#flatCorners ? null : facePositionTexture(geometry);
-      u.faceSkin.value = skinned ? faceSkinTexture(geometry) : null;
+      const indexed = geometry.index !== null;
+      const deformed = skinned || geometry.morphAttributes.position !== undefined;
+      // An indexed geometry without the corners its deformation needs: per-fragment lighting with the face
+      // normal from screen-space derivatives (no preparation step, not one exact colour per face).
+      this.#flatDerivatives =
+        indexed &&
+        (geometry.getAttribute(FLAT_CORNERS[0]) === undefined ||
+          (deformed && geometry.getAttribute(FLAT_CORNER_INDEX) === undefined));
+      this.#flatCorners = indexed && !this.#flatDerivatives;
+      u.facePositions.value = indexed ? null : facePositionTexture(geometry);
+      u.faceSkin.value = skinned && !this.#flatDerivatives ? faceSkinTexture(geometry) : null;
     } else {
       const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true;
       if (!hasNormal && !sphere) {
@@ -377,6 +488,7 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#active = this.#lights.length > 0 ? this.#lights : seen.phong;
     this.#attenuation = this.#active.some((light) => light.attenuates);
     this.#threeLights = seen.threeLights;
+    this.#updateSurface();
     this.#syncDefines();
     this.#updateLightUniforms();
     computeNormalMatrix(object.matrixWorld, u.shadingNormalMatrix.value);
@@ -393,7 +505,10 @@ export class ShadingMaterial extends ShaderMaterial {
     if (this.#attenuation) defines.USE_ATTENUATION = '';
     if (this.#sphereNormals && this.#shading !== 'flat') defines.SPHERE_NORMALS = '';
     if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
+    if (this.#flatDerivatives && this.#shading === 'flat') defines.FLAT_DERIVATIVES = '';
     if (this.#threeLights) defines.SHADING_THREE_LIGHTS = '';
+    const e = this.#emissive;
+    if (e.r > 0 || e.g > 0 || e.b > 0) defines.SHADING_EMISSIVE = '';
     const old = this.defines ?? {};
     const keys = Object.keys(defines);
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);
@@ -409,6 +524,25 @@ export class ShadingMaterial extends ShaderMaterial {
   }
 
   /**
+   * three's program parameters read the maps, `vertexColors`, `transparent` and `alphaTest` from the material,
+   * but for a ShaderMaterial three neither notices their change nor refreshes their uniforms: raise
+   * `needsUpdate` when what is compiled changes, and copy the uniforms (a few references and 3 × 3 copies).
+   */
+  #updateSurface(): void {
+    const u = this.uniforms;
+    const key = `${this.map !== null},${this.alphaMap !== null},${this.emissiveMap !== null},${this.vertexColors},${this.transparent},${this.alphaTest > 0}`;
+    if (key !== this.#surfaceKey) {
+      if (this.#surfaceKey !== '') this.needsUpdate = true;
+      this.#surfaceKey = key;
+    }
+    u.opacity.value = this.#opacity;
+    u.alphaTest.value = this.alphaTest;
+    refreshMap(u.map, u.mapTransform, this.map);
+    refreshMap(u.alphaMap, u.alphaMapTransform, this.alphaMap);
+    refreshMap(u.emissiveMap, u.emissiveMapTransform, this.emissiveMap);
+  }
+
+  /**
    * Checks what may have been edited in place (ka, kd, ks, the lights' colours, their world positions); the
    * first problem as a RangeError, or null.
    */
@@ -417,6 +551,7 @@ export class ShadingMaterial extends ShaderMaterial {
       checkColorChannels('ShadingMaterial.ka', this.#ka);
       checkColorChannels('ShadingMaterial.kd', this.#kd);
       checkColorChannels('ShadingMaterial.ks', this.#ks);
+      checkColorChannels('ShadingMaterial.emissive', this.#emissive);
       this.#active.forEach((light, i) => {
         try {
           light.validate();
@@ -467,6 +602,7 @@ export class ShadingMaterial extends ShaderMaterial {
     u.shadingKa.value.copy(this.#ka);
     u.shadingKd.value.copy(this.#kd);
     u.shadingKs.value.copy(this.#ks);
+    u.emissive.value.copy(this.#emissive);
     const position: Float32Array = u.lightPosition.value;
     const diffuse: Float32Array = u.lightDiffuse.value;
     const specular: Float32Array = u.lightSpecular.value;
@@ -516,6 +652,11 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#ka.copy(source.ka);
     this.#kd.copy(source.kd);
     this.#ks.copy(source.ks);
+    this.#emissive.copy(source.emissive);
+    this.#opacity = source.opacity;
+    this.map = source.map;
+    this.alphaMap = source.alphaMap;
+    this.emissiveMap = source.emissiveMap;
     this.#attenuation = this.#lights.some((light) => light.attenuates);
     this.defines = { ...source.defines };
     return this;

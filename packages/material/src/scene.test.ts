@@ -190,12 +190,16 @@ describe('flat shading of skinned and morphed meshes', () => {
     // Not a SkinnedMesh: no skin texture.
     draw(material, new Mesh(geometry.toNonIndexed(), material));
     expect(material.uniforms.faceSkin.value).toBeNull();
-    // An old-style prepared geometry (corners but no indices) cannot move its corners: a TypeError says so.
+    // An old-style prepared geometry (corners but no indices) cannot move its corners: it is drawn like a plain
+    // indexed one, with the derivative face normal per fragment (no skin texture).
     const prepared = flatShadingGeometry(geometry);
     prepared.deleteAttribute(FLAT_CORNER_INDEX);
     const skinned = new SkinnedMesh(prepared, material);
     skinned.bind(new Skeleton([new Bone(), new Bone()]));
-    expect(() => draw(material, skinned)).toThrow(/flatCornerIndex/);
+    draw(material, skinned);
+    expect(material.defines.FLAT_DERIVATIVES).toBe('');
+    expect(material.defines.FLAT_CORNERS).toBeUndefined();
+    expect(material.uniforms.faceSkin.value).toBeNull();
     // An instanced mesh of a plain prepared sphere needs none.
     const sphere = flatShadingGeometry(
       new SubdivisionSphereGeometry({ level: 2, indexed: true, normals: 'none' }),

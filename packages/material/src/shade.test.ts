@@ -358,3 +358,38 @@ function smoothstepRef(e0: number, e1: number, x: number): number {
   const t = Math.min(Math.max((x - e0) / (e1 - e0), 0), 1);
   return t * t * (3 - 2 * t);
 }
+
+describe('shade() with a surface: texel × vertex colour as tint (ka, kd, not ks), emissive added outside', () => {
+  const light: ShadeLight = {
+    position: [1, 2, 5],
+    ambient: [0.2, 0.3, 0.4],
+    diffuse: [1, 0.9, 0.8],
+    specular: [0.7, 0.8, 0.9],
+  };
+  const material: ShadeMaterial = {
+    ka: [0.5, 0.4, 0.3],
+    kd: [0.6, 0.5, 0.4],
+    ks: [0.3, 0.3, 0.3],
+    shininess: 8,
+  };
+  const sample = { position: [0, 0, 0], normal: [0.2, 0.3, 1], eye: [0, 0, 3] } as const;
+
+  it('tint = texel × vertex colour scales the ka and kd terms exactly and leaves the ks term', () => {
+    const texel = [0.25, 0.5, 0.75];
+    const vertex = [0.8, 0.6, 0.4];
+    const tint = texel.map((t, k) => t * vertex[k]);
+    const plain = shade(sample, material, [light]);
+    const tinted = shade({ ...sample, tint }, material, [light]);
+    const specularOnly = shade(sample, { ...material, ka: [0, 0, 0], kd: [0, 0, 0] }, [light]);
+    for (let k = 0; k < 3; k++)
+      expect(tinted[k]).toBeCloseTo(tint[k] * (plain[k] - specularOnly[k]) + specularOnly[k], 12);
+  });
+
+  it('emissive is added once, outside the sum (not tinted, not attenuated, with no lights too)', () => {
+    const emissive = [0.1, 0.2, 0.3];
+    const plain = shade({ ...sample, tint: [0.5, 0.5, 0.5] }, material, [light, light]);
+    const lit = shade({ ...sample, tint: [0.5, 0.5, 0.5] }, { ...material, emissive }, [light, light]);
+    for (let k = 0; k < 3; k++) expect(lit[k]).toBeCloseTo(plain[k] + emissive[k], 12);
+    expect(shade(sample, { ...material, emissive }, [])).toEqual(emissive);
+  });
+});

@@ -105,6 +105,11 @@ export interface ShadeMaterial {
   readonly lighting?: Lighting;
   /** Cel bands: 0 = off, N ≥ 2 = N diffuse shades and a hard-edged highlight (see {@link celDiffuse}). @default 0 */
   readonly celBands?: number;
+  /**
+   * Emitted colour, linear RGB, added to the sum outside the lighting (three's `emissive`; with an
+   * `emissiveMap`, pass emissive × its texel). @default [0, 0, 0]
+   */
+  readonly emissive?: Vec3Like;
 }
 
 /** The point being lit, all in world space. */
@@ -124,7 +129,8 @@ export interface ShadeSample {
   readonly eye: Vec4Like;
   /**
    * A colour that multiplies ka and kd (not ks), linear RGB: what `ShadingMaterial` does with an
-   * `InstancedMesh`'s `instanceColor` or a `BatchedMesh`'s colour. @default [1, 1, 1]
+   * `InstancedMesh`'s `instanceColor`, a `BatchedMesh`'s colour, a vertex colour and a texel of `map` (pass
+   * their product). @default [1, 1, 1]
    */
   readonly tint?: Vec3Like;
 }
@@ -162,7 +168,8 @@ const UP: Vec3Like = [0, 1, 0];
  * I = Σ_L ka·Ia_L + att_L(t)·( kd·Id_L·max(l·n, 0) + ks·Is_L·spec ),  att(t) = 1 / max(a + b·t + c·t², 1e-6)
  *
  * with l the unit vector to the light, t its distance, v the unit vector to the eye, spec 0 where l·n ≤ 0;
- * a sample's `tint` (an instance colour) multiplies the ka and kd terms. three's lights ({@link ShadeThreeLight})
+ * a sample's `tint` (instance colour × vertex colour × texel) multiplies the ka and kd terms, and the material's
+ * `emissive` is added once, outside the sum. three's lights ({@link ShadeThreeLight})
  * enter the same sum with Id = Is = colour × intensity, three's falloff as att and no Ia, ambient and
  * hemisphere lights with Ia only.
  * Degenerate inputs stay finite: a light at the point (t = 0) lights it head-on (l = n); an eye at the
@@ -269,9 +276,10 @@ export function shade(
     g += tint[1] * (ka[1] * ia[1] + dTerm * kd[1] * id[1]) + sTerm * ks[1] * is[1];
     b += tint[2] * (ka[2] * ia[2] + dTerm * kd[2] * id[2]) + sTerm * ks[2] * is[2];
   }
-  out[0] = r;
-  out[1] = g;
-  out[2] = b;
+  const emissive = material.emissive;
+  out[0] = emissive === undefined ? r : r + emissive[0];
+  out[1] = emissive === undefined ? g : g + emissive[1];
+  out[2] = emissive === undefined ? b : b + emissive[2];
   return out;
 }
 

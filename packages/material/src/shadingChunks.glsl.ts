@@ -10,7 +10,7 @@
  * - `SHADING_SCENE` (vertex): the vertex goes through three's chunks (`transformed`, `mvPosition`);
  * - `SHADING_INSTANCE`: an InstancedMesh or BatchedMesh matrix moves the vertex (and its normal);
  * - `SHADING_DEFORM`: morph targets or skinning move the vertex;
- * - `SHADING_TINT`: an instance (or batch) colour multiplies ka and kd.
+ * - `SHADING_TINT`: an instance (or batch) colour, a vertex colour or a texel of `map` multiplies ka and kd.
  */
 export const sceneFeatures = /* glsl */ `
 #if defined( USE_INSTANCING ) || defined( USE_BATCHING ) || defined( USE_SKINNING ) || defined( USE_MORPHTARGETS ) || defined( USE_FOG ) || NUM_CLIPPING_PLANES > 0
@@ -22,8 +22,71 @@ export const sceneFeatures = /* glsl */ `
 #if defined( USE_MORPHTARGETS ) || defined( USE_SKINNING )
 #define SHADING_DEFORM
 #endif
-#if defined( USE_INSTANCING_COLOR ) || defined( USE_BATCHING_COLOR ) || defined( USE_COLOR ) || defined( USE_COLOR_ALPHA )
+#if defined( USE_INSTANCING_COLOR ) || defined( USE_BATCHING_COLOR ) || defined( USE_COLOR ) || defined( USE_COLOR_ALPHA ) || defined( USE_MAP )
 #define SHADING_TINT
+#endif
+`;
+
+/**
+ * The surface's textures and alpha, three's way (ShadingMaterial only), from three's USE_* macros:
+ * - `SHADING_SPLIT` (both stages): a texture with vertex lighting (gouraud, exact flat) — the vertex stage passes
+ *   the ka/kd part and the ks part of the colour separately, the fragment multiplies only the first by the texel;
+ * - `SHADING_SURFACE` (fragment): `diffuseColor` = (texel, opacity × texel alpha × vertex alpha × alphaMap.g),
+ *   alpha-tested and, unless opaque, written as the fragment's alpha.
+ */
+export const surfaceVertexPars = /* glsl */ `
+#if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES )
+#define SHADING_SPLIT
+#endif
+#include <uv_pars_vertex>
+#ifdef USE_COLOR_ALPHA
+out float vShadingAlpha;
+#endif
+`;
+
+/** Fragment declarations of the surface (see {@link surfaceVertexPars}). */
+export const surfaceFragmentPars = /* glsl */ `
+#if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES )
+#define SHADING_SPLIT
+#endif
+#if defined( USE_MAP ) || defined( USE_ALPHAMAP ) || defined( USE_ALPHATEST ) || ! defined( OPAQUE )
+#define SHADING_SURFACE
+uniform float opacity;
+#endif
+#if defined( SHADING_EMISSIVE ) || defined( USE_EMISSIVEMAP )
+uniform vec3 emissive;
+#endif
+#include <uv_pars_fragment>
+#include <map_pars_fragment>
+#include <alphamap_pars_fragment>
+#include <alphatest_pars_fragment>
+#include <emissivemap_pars_fragment>
+#ifdef USE_COLOR_ALPHA
+in float vShadingAlpha;
+#endif
+`;
+
+/**
+ * Fragment stage, after clipping: three's map, vertex alpha, alpha map and alpha test on `diffuseColor`
+ * (declared by {@link clippingFragment}).
+ */
+export const surfaceFragment = /* glsl */ `
+#ifdef SHADING_SURFACE
+  #include <map_fragment>
+#ifdef USE_COLOR_ALPHA
+  diffuseColor.a *= vShadingAlpha;
+#endif
+  #include <alphamap_fragment>
+  #include <alphatest_fragment>
+#endif
+`;
+
+/** Fragment stage: emissive (× emissiveMap, three's chunk) added to the lit colour, outside the lighting. */
+export const emissiveFragment = /* glsl */ `
+#if defined( SHADING_EMISSIVE ) || defined( USE_EMISSIVEMAP )
+  vec3 totalEmissiveRadiance = emissive;
+  #include <emissivemap_fragment>
+  color += totalEmissiveRadiance;
 #endif
 `;
 
@@ -45,6 +108,9 @@ uniform vec3 lightAttenuation[NUM_LIGHTS]; // a, b, c
 #endif
 #ifdef SHADING_TINT
 vec3 shadingTint = vec3( 1.0 ); // instance colour: multiplies ka and kd
+#endif
+#ifdef SHADING_SPLIT
+vec3 shadingSpecular = vec3( 0.0 ); // the ks part of the last shadeColor (which then returns the ka/kd part)
 #endif
 
 #ifdef USE_ATTENUATION
@@ -84,7 +150,12 @@ vec3 lightTerm(vec3 p, vec3 n, vec3 v, vec3 lightPos, vec3 kdId, vec3 ksIs, vec3
   diffuse *= att;
   spec *= att;
 #endif
+#ifdef SHADING_SPLIT
+  shadingSpecular += spec * ksIs;
+  return diffuse * kdId;
+#else
   return diffuse * kdId + spec * ksIs;
+#endif
 }
 
 #ifdef SHADING_THREE_LIGHTS
@@ -110,7 +181,12 @@ vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
   d = min(floor(d * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
   s = step(0.5, s);
 #endif
+#ifdef SHADING_SPLIT
+  shadingSpecular += c * s * shadingKs;
+  return c * d * shadingKd * shadingTint;
+#else
   return c * (d * shadingKd * shadingTint + s * shadingKs);
+#endif
 }
 vec3 threeLights(vec3 p, vec3 n, vec3 v) {
   p = (viewMatrix * vec4(p, 1.0)).xyz;
@@ -148,6 +224,9 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
 #endif
 
 vec3 shadeColor(vec3 p, vec3 normal) {
+#ifdef SHADING_SPLIT
+  shadingSpecular = vec3( 0.0 );
+#endif
   vec3 toEye = shadingEye.xyz - p * shadingEye.w;
   float e2 = dot(toEye, toEye);
   vec3 v = e2 > 0.0 ? toEye * inversesqrt(e2) : vec3(0.0, 0.0, 1.0);
@@ -225,7 +304,7 @@ export const projectVertex = /* glsl */ `
 
 /**
  * Vertex stage: the instance (or batch) matrix and its normal matrix (`shadingInstance`,
- * `shadingInstanceNormal`), and the instance colour (`tint`).
+ * `shadingInstanceNormal`), and the tint: instance colour × vertex colour (`tint`).
  */
 export const instanceVertex = /* glsl */ `
 #ifdef SHADING_INSTANCE
@@ -245,6 +324,11 @@ export const instanceVertex = /* glsl */ `
 #endif
 #ifdef USE_BATCHING_COLOR
   tint *= getBatchingColor( getIndirectIndex( gl_DrawID ) ).rgb;
+#endif
+#if defined( USE_COLOR_ALPHA )
+  tint *= color.rgb;
+#elif defined( USE_COLOR )
+  tint *= color;
 #endif
 #endif
 `;
@@ -282,9 +366,14 @@ export const flatDeformVertex = /* glsl */ `
 #endif
 `;
 
-/** Fragment declarations for three's clipping chunk (which scales `diffuseColor.a` with alpha to coverage). */
+/**
+ * Fragment: `diffuseColor` (the surface's, see {@link surfaceFragmentPars}, or for three's clipping chunk, which
+ * scales its alpha with alpha to coverage), then three's clipping.
+ */
 export const clippingFragment = /* glsl */ `
-#if NUM_CLIPPING_PLANES > 0 && defined( ALPHA_TO_COVERAGE )
+#if defined( SHADING_SURFACE )
+  vec4 diffuseColor = vec4( vec3( 1.0 ), opacity );
+#elif NUM_CLIPPING_PLANES > 0 && defined( ALPHA_TO_COVERAGE )
   vec4 diffuseColor = vec4( 1.0 );
 #endif
   #include <clipping_planes_fragment>

@@ -38,6 +38,24 @@ export function checkNonNegative(name: string, value: unknown): number {
   return value;
 }
 
+/** Throws unless `value` is a number in 0 … 1 (opacity, alphaTest). */
+export function checkUnit(name: string, value: unknown): number {
+  if (typeof value !== 'number') throw new TypeError(`${name} must be a number, got ${show(value)}`);
+  if (!(value >= 0 && value <= 1)) throw new RangeError(`${name} must be in 0 … 1, got ${show(value)}`);
+  return value;
+}
+
+/** Throws unless `value` is null or a three.js Texture. */
+export function checkTexture<T>(name: string, value: T): T {
+  if (
+    value !== null &&
+    (typeof value !== 'object' || (value as { isTexture?: unknown }).isTexture !== true)
+  ) {
+    throw new TypeError(`${name} must be a THREE.Texture or null, got ${show(value)}`);
+  }
+  return value;
+}
+
 /** Throws unless `value` is one of `allowed`. */
 export function checkOneOf<T extends string>(name: string, value: unknown, allowed: readonly T[]): T {
   if (!allowed.includes(value as T)) {
