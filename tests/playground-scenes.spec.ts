@@ -50,7 +50,9 @@ test.describe('scene pictures', () => {
     await shot(page, 'scene-textured-flat.png');
   });
 
-  test('skinned scene, cel shading with the outline (skinned and morphed as the mesh is)', async ({ page }) => {
+  test('skinned scene, cel shading with the outline (skinned and morphed as the mesh is)', async ({
+    page,
+  }) => {
     await open(page, { scene: 'skinned', material: { celBands: 3, outline: true } });
     await shot(page, 'scene-skinned-cel-outline.png');
   });
@@ -96,6 +98,7 @@ test('each scene picked in the panel is the scene the URL opens, and survives a 
     await choose(page, 'View.scene', LABELS[scene]);
     expect(await urlScene(page)).toBe(scene);
     await expect(page.getByTestId('scene-note')).not.toContainText('every option applies');
+    await expect(page.getByRole('img', { name: `Lit scene: ${LABELS[scene]}.`, exact: false })).toBeVisible();
     const chosen = await picture(page);
     pictures.add(chosen);
     // The URL the page wrote opens the same picture.

@@ -2,7 +2,7 @@ import { Leva } from 'leva';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
-import { sceneNote } from './engine/scenes';
+import { SCENE_LABELS, sceneNote } from './engine/scenes';
 import {
   COMPARE_COLUMNS,
   compareLayout,
@@ -218,7 +218,7 @@ export function App() {
           data-testid="viewport"
           tabIndex={0}
           role="img"
-          aria-label={`Lit sphere. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
+          aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
           onPointerDown={(e) => e.currentTarget.focus()}
         />
         {state.view === 'compare' && (
