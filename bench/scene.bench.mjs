@@ -6,8 +6,8 @@
 //    before issue 14 began (BEFORE, bundled here from git) and of this checkout; target: after/before ≤ 1.02×.
 // 3. flat: flat shading of an indexed TorusKnotGeometry and the level-3 and level-6 spheres, prepared
 //    (flatShadingGeometry), non-indexed, and indexed as it is: error against shade() per face, frame time, bytes.
-// Variants run round-robin in `rounds` rounds, so that load from other processes spreads over all of them; the
-// frames of all rounds are pooled and the medians compared.
+// Variants run interleaved frame by frame (the page's cycle) in `rounds` rounds, so that load from other processes
+// hits all of them alike; ratios are the median of the ratios of frames from the same cycle (and of the medians).
 //
 // The realistic scene is slow in SwiftShader (hundreds of ms a frame): `--frames` frames per variant in
 // `--rounds` rounds; the lecture and flat scenes take `--small-frames` in `--small-rounds`.
@@ -83,32 +83,41 @@ async function bundleMaterialAt(rev) {
 /** @typedef {import('../playground/harness/scene-bench').TimedResult} TimedResult */
 /** @typedef {{ frameMs: ReturnType<typeof summarize>, gpuMs: ReturnType<typeof summarize> | null, programs: number } | { error: string }} Row */
 
+/** Every timed frame of each variant, in the order of the cycles (for the paired ratios). */
+/** @type {Map<string, number[]>} */
+const framesOf = new Map();
+
 /**
- * Run `variants` round-robin and summarise each: frame-time (and GPU-time) median, min, max.
- * @template V
+ * Time `variants` interleaved frame by frame (the page's cycle) in `count.rounds` rounds, and summarise each:
+ * frame-time (and GPU-time) median, min, max. Frame k of every variant comes from the same cycle.
  * @param {import('@playwright/test').Page} page
- * @param {Array<[string, V]>} variants
- * @param {(page: import('@playwright/test').Page, variant: V, frames: number, warmup: number) => Promise<TimedResult>} runOne
+ * @param {string} prefix a name for this group, which keeps its frames apart from other groups'
+ * @param {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} variants
  * @param {{ frames: number, rounds: number }} count frames per variant, in this many rounds
  * @returns {Promise<Record<string, Row>>}
  */
-async function roundRobin(page, variants, runOne, count) {
+async function roundRobin(page, prefix, variants, count) {
   /** @type {Record<string, { frames: number[], gpu: number[], programs: number, error?: string }>} */
-  const pooled = {};
+  const pooled = Object.fromEntries(variants.map(([name]) => [name, { frames: [], gpu: [], programs: 0 }]));
   for (let round = 0; round < count.rounds; round++) {
-    for (const [name, variant] of variants) {
-      if (pooled[name]?.error) continue;
-      const r = await runOne(page, variant, Math.ceil(count.frames / count.rounds), round === 0 ? 5 : 2);
-      pooled[name] ??= { frames: [], gpu: [], programs: 0 };
+    const live = variants.filter(([name]) => !pooled[name].error);
+    const results = await page.evaluate((a) => window.sceneBench.cycle(a.specs, a.frames, a.warmup), {
+      specs: live.map(([, spec]) => spec),
+      frames: Math.ceil(count.frames / count.rounds),
+      warmup: round === 0 ? 3 : 1,
+    });
+    live.forEach(([name], k) => {
+      const r = results[k];
       if (r.error) pooled[name].error = r.error;
       pooled[name].frames.push(...r.frames);
       pooled[name].gpu.push(...r.gpu);
       pooled[name].programs = r.programs;
-    }
+    });
   }
   /** @type {Record<string, Row>} */
   const rows = {};
   for (const [name, p] of Object.entries(pooled)) {
+    framesOf.set(`${prefix}/${name}`, p.frames);
     rows[name] = p.error
       ? { error: p.error }
       : { frameMs: summarize(p.frames), gpuMs: p.gpu.length ? summarize(p.gpu) : null, programs: p.programs };
@@ -116,12 +125,24 @@ async function roundRobin(page, variants, runOne, count) {
   return rows;
 }
 
-/** Ratio of the frame-time medians (and minima) of rows `a` and `b`, or null when either did not render. */
-function ratio(/** @type {Record<string, Row>} */ rows, /** @type {string} */ a, /** @type {string} */ b) {
+/**
+ * Rows `a` against `b` of group `prefix`: `paired`, the median of the ratios of frames timed in the same cycle
+ * (what a change of load during the run moves least); `median` and `min`, the ratios of the medians and of the
+ * minima. Null when either did not render.
+ * @param {string} prefix @param {Record<string, Row>} rows @param {string} a @param {string} b
+ */
+function ratio(prefix, rows, a, b) {
   const ra = rows[a];
   const rb = rows[b];
   if (!ra || !rb || 'error' in ra || 'error' in rb) return null;
-  return { median: ra.frameMs.median / rb.frameMs.median, min: ra.frameMs.min / rb.frameMs.min };
+  const fa = framesOf.get(`${prefix}/${a}`) ?? [];
+  const fb = framesOf.get(`${prefix}/${b}`) ?? [];
+  const pairs = fa.slice(0, Math.min(fa.length, fb.length)).map((t, i) => t / fb[i]);
+  return {
+    paired: summarize(pairs).median,
+    median: ra.frameMs.median / rb.frameMs.median,
+    min: ra.frameMs.min / rb.frameMs.min,
+  };
 }
 
 /** @param {Record<string, Row>} rows */
@@ -160,7 +181,7 @@ const results = {
 
 if (only.includes('realistic')) {
   /** @type {Array<[string, import('../playground/harness/scene-bench').RealisticVariant]>} */
-  const variants = [
+  const realisticVariants = [
     ['ShadingMaterial phong', { kind: 'shadelab', shading: 'phong' }],
     ['ShadingMaterial gouraud', { kind: 'shadelab', shading: 'gouraud' }],
     [
@@ -175,14 +196,10 @@ if (only.includes('realistic')) {
     ['MeshPhongMaterial', { kind: 'three-phong' }],
     ['MeshLambertMaterial', { kind: 'three-lambert' }],
   ];
-  const rows = await roundRobin(
-    page,
-    variants,
-    (p, variant, n, warmup) =>
-      p.evaluate((a) => window.sceneBench.realistic(a.variant, a.n, a.warmup), { variant, n, warmup }),
-    { frames, rounds },
-  );
-  const vsPhong = (/** @type {string} */ name) => ratio(rows, name, 'MeshPhongMaterial');
+  /** @type {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} */
+  const variants = realisticVariants.map(([name, variant]) => [name, { scene: 'realistic', variant }]);
+  const rows = await roundRobin(page, 'realistic', variants, { frames, rounds });
+  const vsPhong = (/** @type {string} */ name) => ratio('realistic', rows, name, 'MeshPhongMaterial');
   const targets = {
     phongVsMeshPhong: { ratio: vsPhong('ShadingMaterial phong'), target: '≤ 1.0' },
     gouraudVsMeshPhong: { ratio: vsPhong('ShadingMaterial gouraud'), target: '< 1.0 (cheaper)' },
@@ -197,12 +214,12 @@ if (only.includes('realistic')) {
     lambertVsMeshPhong: { ratio: vsPhong('MeshLambertMaterial'), target: null },
   };
   for (const t of Object.values(targets)) {
-    /** @type {{ ratio: { median: number } | null, target: string | null, met?: boolean | null }} */ (t).met =
+    /** @type {{ ratio: { paired: number } | null, target: string | null, met?: boolean | null }} */ (t).met =
       t.ratio === null || t.target === null
         ? null
         : t.target.startsWith('≤')
-          ? t.ratio.median <= 1
-          : t.ratio.median < 1;
+          ? t.ratio.paired <= 1
+          : t.ratio.paired < 1;
   }
   results.realistic = {
     scene:
@@ -216,30 +233,24 @@ if (only.includes('realistic')) {
   console.log(`\nrealistic scene, 1280×720, median of ${frames} frames in ${rounds} rounds`);
   printRows(rows);
   for (const [name, t] of Object.entries(targets)) {
-    console.log(`${name}: ${t.ratio ? t.ratio.median.toFixed(3) : 'n/a'} (target ${t.target ?? 'none'})`);
+    console.log(`${name}: ${t.ratio ? t.ratio.paired.toFixed(3) : 'n/a'} (target ${t.target ?? 'none'})`);
   }
 }
 
 if (only.includes('lecture') && before) {
   const exported = await page.evaluate((code) => window.sceneBench.loadModule('before', code), before.code);
-  /** @type {Array<[string, import('../playground/harness/scene-bench').LectureVariant]>} */
+  /** @type {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} */
   const variants = [];
   for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {
-    variants.push([`${shading} before`, { build: 'before', shading }]);
-    variants.push([`${shading} after`, { build: 'after', shading }]);
+    variants.push([`${shading} before`, { scene: 'lecture', variant: { build: 'before', shading } }]);
+    variants.push([`${shading} after`, { scene: 'lecture', variant: { build: 'after', shading } }]);
   }
-  const rows = await roundRobin(
-    page,
-    variants,
-    (p, variant, n, warmup) =>
-      p.evaluate((a) => window.sceneBench.lecture(a.variant, a.n, a.warmup), { variant, n, warmup }),
-    { frames: smallFrames, rounds: smallRounds },
-  );
-  /** @type {Record<string, { ratio: { median: number, min: number } | null, target: string, met: boolean | null }>} */
+  const rows = await roundRobin(page, 'lecture', variants, { frames: smallFrames, rounds: smallRounds });
+  /** @type {Record<string, { ratio: { paired: number, median: number, min: number } | null, target: string, met: boolean | null }>} */
   const afterVsBefore = {};
   for (const shading of ['flat', 'gouraud', 'phong']) {
-    const r = ratio(rows, `${shading} after`, `${shading} before`);
-    afterVsBefore[shading] = { ratio: r, target: '≤ 1.02', met: r === null ? null : r.median <= 1.02 };
+    const r = ratio('lecture', rows, `${shading} after`, `${shading} before`);
+    afterVsBefore[shading] = { ratio: r, target: '≤ 1.02', met: r === null ? null : r.paired <= 1.02 };
   }
   results.lecture = {
     scene:
@@ -254,7 +265,7 @@ if (only.includes('lecture') && before) {
   );
   printRows(rows);
   for (const [shading, t] of Object.entries(afterVsBefore)) {
-    console.log(`${shading}: after/before ${t.ratio ? t.ratio.median.toFixed(3) : 'n/a'} (target ≤ 1.02)`);
+    console.log(`${shading}: after/before ${t.ratio ? t.ratio.paired.toFixed(3) : 'n/a'} (target ≤ 1.02)`);
   }
 }
 
@@ -263,19 +274,17 @@ if (only.includes('flat')) {
   const meshes = ['torus-knot', 'sphere-3', 'sphere-6'];
   /** @type {Array<import('../playground/harness/scene-bench').FlatMode>} */
   const modes = ['prepared', 'non-indexed', 'indexed'];
-  /** @type {Array<[string, { mesh: (typeof meshes)[number], mode: (typeof modes)[number] }]>} */
-  const variants = meshes.flatMap((mesh) => modes.map((mode) => [`${mesh} ${mode}`, { mesh, mode }]));
-  const rows = await roundRobin(
-    page,
-    variants,
-    (p, variant, n, warmup) =>
-      p.evaluate((a) => window.sceneBench.flatTime(a.variant.mesh, a.variant.mode, a.n, a.warmup), {
-        variant,
-        n,
-        warmup,
-      }),
-    { frames: smallFrames, rounds: smallRounds },
+  /** @type {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} */
+  const variants = meshes.flatMap((mesh) =>
+    modes.map(
+      (mode) =>
+        /** @type {[string, import('../playground/harness/scene-bench').TimedScene]} */ ([
+          `${mesh} ${mode}`,
+          { scene: 'flat', mesh, mode },
+        ]),
+    ),
   );
+  const rows = await roundRobin(page, 'flat', variants, { frames: smallFrames, rounds: smallRounds });
   /** @type {Record<string, unknown>} */
   const perMesh = {};
   for (const mesh of meshes) {
@@ -287,7 +296,7 @@ if (only.includes('flat')) {
       perMode[mode] = {
         error,
         time: rows[`${mesh} ${mode}`],
-        vsPrepared: ratio(rows, `${mesh} ${mode}`, `${mesh} prepared`),
+        vsPrepared: ratio('flat', rows, `${mesh} ${mode}`, `${mesh} prepared`),
         bytes: bytes[mode],
       };
     }

@@ -534,8 +534,12 @@ const frameCell = (row) =>
     : row.error
       ? 'does not render'
       : `${row.frameMs.median.toFixed(1)} (${row.frameMs.min.toFixed(1)})`;
-/** A ratio of medians (of minima). @param {{ median: number, min: number } | null | undefined} x */
-const ratioCell = (x) => (x ? `${x.median.toFixed(2)} (min ${x.min.toFixed(2)})` : '—');
+/**
+ * A ratio of frame times: the median of the ratios of frames timed in the same cycle, and the ratio of the
+ * medians in brackets. @param {{ paired?: number, median: number, min: number } | null | undefined} x
+ */
+const ratioCell = (x) =>
+  !x ? '—' : x.paired === undefined ? x.median.toFixed(2) : `${x.paired.toFixed(2)} (${x.median.toFixed(2)})`;
 /** Whether a target was met. @param {boolean | null | undefined} met */
 const metCell = (met) => (met === true ? 'met' : met === false ? '**not met**' : '—');
 
@@ -549,7 +553,7 @@ function sceneRealistic(r) {
     '',
     fromLine('scene', r),
     '',
-    `Issue 14's scene: ${s.scene}. \`ShadingMaterial\` in each shading against three's \`MeshPhongMaterial\` (shininess 32) and \`MeshLambertMaterial\` in the same run, ${r.frames} frames per variant in ${r.rounds} interleaved rounds, a 1×1 \`readPixels\` after each. Flat shading draws \`flatShadingGeometry\` of the sphere, the non-indexed sphere, or the indexed sphere as it is (no preparation). Frame ms: median (minimum)${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}. ${r.note ?? ''}`.trim(),
+    `Issue 14's scene: ${s.scene}. \`ShadingMaterial\` in each shading against three's \`MeshPhongMaterial\` (shininess 32) and \`MeshLambertMaterial\` in the same run: ${r.frames} frames per variant in ${r.rounds} rounds, the variants interleaved frame by frame (each cycle renders one frame of every variant), a 1×1 \`readPixels\` after each; ratios are the median of the ratios of frames from the same cycle, and the ratio of the medians in brackets. Flat shading draws \`flatShadingGeometry\` of the sphere, the non-indexed sphere, or the indexed sphere as it is (no preparation). Frame ms: median (minimum)${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}. ${r.note ?? ''}`.trim(),
     '',
     ...table(
       ['variant', 'frame ms', 'GPU ms', '/ MeshPhongMaterial'],
@@ -565,7 +569,7 @@ function sceneRealistic(r) {
       ? ['', ...errors.map(([name, row]) => `- ${name} does not render: ${/** @type {any} */ (row).error}`)]
       : []),
     '',
-    "Issue 14's targets (ratios of medians, of minima in brackets):",
+    "Issue 14's targets (the median of the ratios of frames from the same cycle; the ratio of the medians in brackets):",
     '',
     ...table(
       ['ratio', 'measured', 'target', 'result'],
@@ -593,7 +597,7 @@ function sceneLecture(r) {
     '',
     fromLine('scene', r),
     '',
-    `What the lecture's scene pays for issue 14's features (instancing, skinning, fog, three's lights, …) that it does not use: ${s.scene}, rendered in the same run with the \`ShadingMaterial\` of \`${s.before.rev}\` (\`${s.before.commit.slice(0, 7)}\`, the commit before issue 14 began, bundled from git by the bench) and of the run's commit. ${r.smallFrames ?? r.frames} frames per variant in ${r.smallRounds ?? r.rounds} interleaved rounds; frame ms: median (minimum).`,
+    `What the lecture's scene pays for issue 14's features (instancing, skinning, fog, three's lights, …) that it does not use: ${s.scene}, rendered in the same run with the \`ShadingMaterial\` of \`${s.before.rev}\` (\`${s.before.commit.slice(0, 7)}\`, the commit before issue 14 began, bundled from git by the bench) and of the run's commit. ${r.smallFrames ?? r.frames} frames per variant in ${r.smallRounds ?? r.rounds} rounds, interleaved frame by frame; frame ms: median (minimum); after / before: the median of the ratios of frames from the same cycle (the ratio of the medians in brackets).`,
     '',
     ...table(
       ['shading', 'before', 'after', 'after / before', 'target', 'result'],
@@ -626,7 +630,7 @@ function sceneFlat(r) {
     '',
     fromLine('scene', r),
     '',
-    `The lecture's flat shading is one colour per face. Three ways to get it from an indexed mesh: the prepared \`flatShadingGeometry\` (each face's last vertex carries the face), the non-indexed mesh (each triangle owns its vertices; the material reads the face from a texture of positions), and the indexed mesh as it is, with a face normal from screen-space derivatives and the lighting per fragment. Scene: ${s.scene}. Error against ${s.reference}; 1/255 per channel. Frame ms: median (minimum) of ${r.smallFrames ?? r.frames} frames in ${r.smallRounds ?? r.rounds} interleaved rounds. Bytes: the geometry's attributes and index as given to the material (the sources keep three's normals and uvs, which flat shading does not read), and what the GPU holds besides (the non-indexed path's face-position texture).`,
+    `The lecture's flat shading is one colour per face. Three ways to get it from an indexed mesh: the prepared \`flatShadingGeometry\` (each face's last vertex carries the face), the non-indexed mesh (each triangle owns its vertices; the material reads the face from a texture of positions), and the indexed mesh as it is, with a face normal from screen-space derivatives and the lighting per fragment. Scene: ${s.scene}. Error against ${s.reference}; 1/255 per channel. Frame ms: median (minimum) of ${r.smallFrames ?? r.frames} frames in ${r.smallRounds ?? r.rounds} rounds, interleaved frame by frame; / prepared: the median of the ratios of frames from the same cycle (the ratio of the medians in brackets). Bytes: the geometry's attributes and index as given to the material (the sources keep three's normals and uvs, which flat shading does not read), and what the GPU holds besides (the non-indexed path's face-position texture).`,
     '',
     ...table(
       [

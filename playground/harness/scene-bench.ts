@@ -95,45 +95,61 @@ const gl = renderer.getContext() as WebGL2RenderingContext;
 const timer = gl.getExtension('EXT_disjoint_timer_query_webgl2') as { TIME_ELAPSED_EXT: number } | null;
 const pixel = new Uint8Array(4);
 
-/** Render `frames` timed frames of `scene` (after `warmup` untimed ones), each followed by a 1×1 readPixels. */
-async function time(
-  scene: Scene,
-  camera: PerspectiveCamera,
-  frames: number,
-  warmup: number,
-): Promise<TimedResult> {
-  const frame = () => {
-    renderer.render(scene, camera);
+/** One scene of this page to time: the realistic scene, the lecture's, or a flat-shading one. */
+export type TimedScene =
+  | { scene: 'realistic'; variant: RealisticVariant }
+  | { scene: 'lecture'; variant: LectureVariant }
+  | { scene: 'flat'; mesh: FlatMesh; mode: FlatMode };
+
+function sceneOf(spec: TimedScene): { scene: Scene; camera: PerspectiveCamera } {
+  if (spec.scene === 'realistic') return realisticScene(spec.variant);
+  if (spec.scene === 'lecture') return lectureScene(spec.variant);
+  return flatScene(spec.mesh, spec.mode);
+}
+
+/**
+ * Time `specs` interleaved frame by frame: `warmup` untimed frames of each, then `frames` cycles that render
+ * one timed frame of every spec in turn (each followed by a 1×1 readPixels), so that a change of the machine's
+ * load hits every spec of a cycle alike. A spec that throws is left out with its error.
+ */
+async function cycle(specs: TimedScene[], frames: number, warmup: number): Promise<TimedResult[]> {
+  const built = specs.map(sceneOf);
+  const results: TimedResult[] = specs.map(() => ({ frames: [], gpu: [], programs: 0 }));
+  const frame = (k: number) => {
+    renderer.render(built[k].scene, built[k].camera);
     gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   };
-  try {
-    for (let i = 0; i < warmup; i++) frame();
-  } catch (error) {
-    return {
-      frames: [],
-      gpu: [],
-      programs: 0,
-      error: error instanceof Error ? error.message : String(error),
-    };
+  for (let k = 0; k < specs.length; k++) {
+    try {
+      for (let i = 0; i < warmup; i++) frame(k);
+    } catch (error) {
+      results[k].error = error instanceof Error ? error.message : String(error);
+    }
   }
-  const times: number[] = [];
-  const queries: WebGLQuery[] = [];
+  const queries: WebGLQuery[][] = specs.map(() => []);
   for (let i = 0; i < frames; i++) {
-    let query: WebGLQuery | null = null;
-    if (timer !== null) {
-      query = gl.createQuery();
-      gl.beginQuery(timer.TIME_ELAPSED_EXT, query);
+    for (let k = 0; k < specs.length; k++) {
+      if (results[k].error !== undefined) continue;
+      let query: WebGLQuery | null = null;
+      if (timer !== null) {
+        query = gl.createQuery();
+        gl.beginQuery(timer.TIME_ELAPSED_EXT, query);
+      }
+      const t0 = performance.now();
+      renderer.render(built[k].scene, built[k].camera);
+      if (query !== null && timer !== null) {
+        gl.endQuery(timer.TIME_ELAPSED_EXT);
+        queries[k].push(query);
+      }
+      gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      results[k].frames.push(performance.now() - t0);
     }
-    const t0 = performance.now();
-    renderer.render(scene, camera);
-    if (query !== null && timer !== null) {
-      gl.endQuery(timer.TIME_ELAPSED_EXT);
-      queries.push(query);
-    }
-    gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    times.push(performance.now() - t0);
   }
-  return { frames: times, gpu: await gpuTimes(queries), programs: renderer.info.programs?.length ?? 0 };
+  for (let k = 0; k < specs.length; k++) {
+    results[k].gpu = await gpuTimes(queries[k]);
+    results[k].programs = renderer.info.programs?.length ?? 0;
+  }
+  return results;
 }
 
 async function gpuTimes(queries: WebGLQuery[]): Promise<number[]> {
@@ -245,12 +261,6 @@ function realisticScene(variant: RealisticVariant): { scene: Scene; camera: Pers
   return built;
 }
 
-/** Time the realistic scene in one variant. */
-function realistic(variant: RealisticVariant, frames: number, warmup: number): Promise<TimedResult> {
-  const { scene, camera } = realisticScene(variant);
-  return time(scene, camera, frames, warmup);
-}
-
 // ── The lecture's scene, before and after issue 14 ──────────────────────────────────────────────────────
 
 const modules = new Map<string, MaterialModule>();
@@ -300,11 +310,6 @@ function lectureScene(variant: LectureVariant): { scene: Scene; camera: Perspect
   built = { scene, camera };
   lectureScenes.set(key, built);
   return built;
-}
-
-function lecture(variant: LectureVariant, frames: number, warmup: number): Promise<TimedResult> {
-  const { scene, camera } = lectureScene(variant);
-  return time(scene, camera, frames, warmup);
 }
 
 // ── Flat shading without preparation: error, time, bytes ───────────────────────────────────────────────
@@ -381,11 +386,6 @@ function flatScene(name: FlatMesh, mode: FlatMode): { scene: Scene; camera: Pers
   built = { scene, camera, mesh };
   flatScenes.set(key, built);
   return built;
-}
-
-function flatTime(name: FlatMesh, mode: FlatMode, frames: number, warmup: number): Promise<TimedResult> {
-  const { scene, camera } = flatScene(name, mode);
-  return time(scene, camera, frames, warmup);
 }
 
 /** Renders the face index + 1 of every pixel (0: background) as 24-bit RGB, from a non-indexed geometry. */
@@ -573,7 +573,7 @@ function flatBytes(
   return out;
 }
 
-const api = { realistic, loadModule, lecture, flatTime, flatError, flatBytes, hasTimer: timer !== null };
+const api = { cycle, loadModule, flatError, flatBytes, hasTimer: timer !== null };
 declare global {
   interface Window {
     sceneBench: typeof api;
