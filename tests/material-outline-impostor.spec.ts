@@ -1,5 +1,10 @@
 import { expect, type Page, test } from '@playwright/test';
-import type { OutlineConfig, OutlineStats } from '../playground/harness/outline-impostor';
+import type {
+  ImpostorConfig,
+  ImpostorStats,
+  OutlineConfig,
+  OutlineStats,
+} from '../playground/harness/outline-impostor';
 
 // The outline and the impostor in any three.js scene (issue 14): createOutline on a SkinnedMesh with a moved
 // bone, a mesh with morph targets at full influence and an InstancedMesh draws the hull around the deformed
@@ -13,6 +18,10 @@ async function open(page: Page): Promise<void> {
 
 function outline(page: Page, config: OutlineConfig): Promise<OutlineStats> {
   return page.evaluate((c) => window.outlineImpostorHarness.outlineCompare(c), config);
+}
+
+function impostors(page: Page, config: ImpostorConfig): Promise<ImpostorStats> {
+  return page.evaluate((c) => window.outlineImpostorHarness.impostorCompare(c), config);
 }
 
 test.describe.configure({ mode: 'parallel' });
@@ -58,4 +67,63 @@ test('createOutline on a plain mesh still matches the CPU hull (the control)', a
   expect(stats.ring, info).toBeGreaterThan(300);
   expect(stats.mismatches, info).toBe(0);
   expect(stats.staleMismatches, info).toBe(0);
+});
+
+/** Four coloured instances: spheres of different radii, and an ellipsoid (rotated, non-uniform scale). */
+const SPHERES: ImpostorConfig['instances'] = [
+  { position: [-2.2, 0.6, 0], scale: [0.8, 0.8, 0.8], color: [1, 0.5, 0.25] },
+  { position: [0, 0, 0.5], scale: [1.1, 1.1, 1.1], color: [0.25, 1, 0.5] },
+  { position: [2.2, -0.4, -0.5], rotation: [0.3, 0.2, 0.7], scale: [1.2, 0.6, 0.8], color: [0.5, 0.25, 1] },
+  { position: [0.3, -1.9, 1], scale: [0.5, 0.5, 0.5], color: [1, 1, 1] },
+];
+
+function expectImpostors(stats: ImpostorStats, minCovered: number, minCompared: number): void {
+  const info = JSON.stringify(stats);
+  // Where: every pixel away from the oracle's edges is drawn exactly where MeshPhongMaterial draws the spheres.
+  expect(stats.covered, info).toBeGreaterThan(minCovered);
+  expect(stats.coverageCompared, info).toBeGreaterThan(30000);
+  expect(stats.coverageMismatches, info).toBe(0);
+  // What colour: shade() at the exact hit with the instance colour as the tint, within 2/255, no NaN.
+  expect(stats.compared, info).toBeGreaterThan(minCompared);
+  expect(stats.maxError, info).toBeLessThanOrEqual(2);
+  expect(stats.mismatches, info).toBe(0);
+  expect(stats.darkPixels, info).toBe(0);
+  // Each instance is one impostor at M × instance matrix: the same pixels as a SphereImpostor per sphere.
+  expect(stats.objectsCovered, info).toBe(stats.covered);
+  expect(stats.objectsMismatches, info).toBe(0);
+}
+
+test('SphereImpostorMaterial on an InstancedMesh: each instance a sphere (an ellipsoid under a non-uniform scale) where MeshPhongMaterial draws it, coloured as shade() × instanceColor', async ({
+  page,
+}) => {
+  await open(page);
+  const stats = await impostors(page, { instances: SPHERES });
+  expectImpostors(stats, 5000, 4000);
+  for (const n of stats.perInstance) expect(n, JSON.stringify(stats)).toBeGreaterThan(150);
+});
+
+test('the instanced impostor under the InstancedMesh’s own non-uniform scale: M × instance matrix', async ({
+  page,
+}) => {
+  await open(page);
+  const stats = await impostors(page, { instances: SPHERES, scale: [0.8, 1.3, 1] });
+  expectImpostors(stats, 5000, 4000);
+});
+
+test('instanced impostor extremes: zero-scale and 1e±20-scale instances draw nothing wrong and leave the others exact', async ({
+  page,
+}) => {
+  await open(page);
+  const stats = await impostors(page, {
+    instances: [
+      ...SPHERES,
+      { position: [0, 1.6, 0], scale: [0, 0, 0], color: [1, 0, 0] },
+      { position: [1, 1.6, 0], scale: [1, 0, 1], color: [1, 0, 0] },
+      { position: [-1, 1.8, 0], scale: [1e-20, 1e-20, 1e-20], color: [1, 0, 0] },
+      // 1e20 behind the far plane (seen through it), and around the camera (the eye inside it).
+      { position: [0, 0, -3e20], scale: [1e20, 1e20, 1e20], color: [1, 0, 0] },
+      { position: [0, 0, 0], scale: [1e20, 1e20, 1e20], color: [1, 0, 0] },
+    ],
+  });
+  expectImpostors(stats, 5000, 4000);
 });

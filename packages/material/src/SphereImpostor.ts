@@ -5,7 +5,12 @@ import type { SphereImpostorMaterial } from './SphereImpostorMaterial.js';
 /**
  * The impostor's geometry: one quad, 4 vertices with `position` (x, y = ±1, z = 0) and 6 Uint16 indices:
  * 48 + 12 bytes. Flagged as a sphere (`userData.isSphere`) with the unit sphere as its bounding sphere, so
- * three's frustum culling uses the real extent.
+ * three's frustum culling uses the real extent. It is also the geometry of an `InstancedMesh` of impostors (one
+ * sphere per instance, see {@link SphereImpostorMaterial}), whose bounding sphere three builds from it.
+ *
+ * @example
+ * const field = new InstancedMesh(createImpostorQuad(), new SphereImpostorMaterial({ lights: [light] }), 1000);
+ * field.setMatrixAt(0, new Matrix4().makeTranslation(2, 0, 0)); // instance 0: a unit sphere at x = 2
  */
 export function createImpostorQuad(): BufferGeometry {
   const geometry = new BufferGeometry();

@@ -216,3 +216,69 @@ describe('projectedBounds', () => {
     expect(projectedBounds(mvp, 100, 100, new Vector4()).toArray()).toEqual([-1, -1, 1, 1]);
   });
 });
+
+describe('SphereImpostorMaterial on an InstancedMesh', () => {
+  type CompileShader = Parameters<SphereImpostorMaterial['onBeforeCompile']>[0];
+  const compile = (material: SphereImpostorMaterial, instancing: boolean, instancingColor: boolean) => {
+    const shader = { instancing, instancingColor, fragmentShader: material.fragmentShader } as CompileShader;
+    material.onBeforeCompile(shader, renderer);
+    return shader.fragmentShader;
+  };
+
+  it('tells the fragment stage of an instanced program (three defines USE_INSTANCING in the vertex stage only)', () => {
+    const material = new SphereImpostorMaterial();
+    const source = material.fragmentShader;
+    expect(compile(material, false, false)).toBe(source); // one impostor: the program is unchanged
+    expect(compile(material, true, false)).toBe(`#define IMPOSTOR_INSTANCED\n${source}`);
+    expect(compile(material, true, true)).toBe(
+      `#define IMPOSTOR_INSTANCED\n#define IMPOSTOR_INSTANCED_COLOR\n${source}`,
+    );
+    // Both stages read the instance: the vertex stage computes its bounds and inverse, the fragment casts.
+    expect(material.vertexShader).toContain('impostorMvp * instanceMatrix');
+    expect(source).toContain('flat in mat4 vImpostorInverse');
+  });
+
+  it('fills the view-projection matrix the instanced fragment stage needs, per draw', () => {
+    const material = new SphereImpostorMaterial();
+    const camera = lectureCamera();
+    const quad = createImpostorQuad();
+    const object = new SphereImpostor(material);
+    object.updateMatrixWorld();
+    material.onBeforeRender(renderer, new Scene(), camera, quad, object, null as never);
+    const expected = new Matrix4().multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
+    expect(material.uniforms.impostorViewProjection.value.elements).toEqual(expected.elements);
+  });
+});
+
+describe('SphereImpostorMaterial at extreme scales (32-bit floats on the GPU)', () => {
+  const draw = (scale: number, z: number) => {
+    const material = new SphereImpostorMaterial();
+    const camera = lectureCamera();
+    const object = new SphereImpostor(material);
+    object.scale.setScalar(scale);
+    object.position.set(0, 0, z);
+    object.updateMatrixWorld();
+    material.onBeforeRender(renderer, new Scene(), camera, object.geometry, object, null as never);
+    const mvp = new Matrix4()
+      .multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse)
+      .multiply(object.matrixWorld);
+    return { u: material.uniforms, inverse: mvp.clone().invert() };
+  };
+
+  it('keeps the inverse P·V·M as it is (its w row is P⁻¹’s, whatever the model scale)', () => {
+    for (const [scale, z] of [
+      [1, 0],
+      [1e20, -3e20],
+      [1e-20, -1],
+    ]) {
+      const { u, inverse } = draw(scale, z);
+      expect(u.impostorInverseMvp.value.elements).toEqual(inverse.elements);
+    }
+  });
+
+  it('draws nothing when the eye is inside the sphere (its front surface is behind the eye)', () => {
+    for (const scale of [10, 1e20])
+      expect(draw(scale, 0).u.impostorBounds.value.toArray()).toEqual([2, 2, 2, 2]);
+    expect(draw(1, 0).u.impostorBounds.value.x).toBeLessThan(1);
+  });
+});

@@ -5,8 +5,11 @@ import {
   type Group,
   Matrix4,
   type Object3D,
+  type PerspectiveCamera,
   type Scene,
+  Vector3,
   Vector4,
+  type WebGLProgramParametersWithUniforms,
   type WebGLRenderer,
 } from 'three';
 import type { PhongLight } from './PhongLight.js';
@@ -19,6 +22,8 @@ export type SphereImpostorMaterialOptions = Omit<ShadingMaterialOptions, 'shadin
 
 const _mvp = /* @__PURE__ */ new Matrix4();
 const _viewport = /* @__PURE__ */ new Vector4();
+const _eye = /* @__PURE__ */ new Vector3();
+const _inverse = /* @__PURE__ */ new Matrix4();
 
 /**
  * The accurate end of the speed/accuracy trade: the unit sphere (an ellipsoid under the object's scale) drawn
@@ -34,19 +39,29 @@ const _viewport = /* @__PURE__ */ new Vector4();
  * The quad covers the exact screen bounds of the projected ellipsoid, computed on the CPU per draw from the
  * quadric (the planes x = a·w tangent to it in clip space: a² (r₄Dr₄) − 2a (r₁Dr₄) + r₁Dr₁ = 0 with r the rows
  * of P·V·M and D = diag(1, 1, 1, −1)), widened by one pixel; when the eye plane touches the ellipsoid (camera
- * inside or beside it) the quad covers the whole viewport. Only the front surface is drawn, clipped by the
- * near and far planes like a mesh (no caps). Depth is written in the renderer's depth mode (standard,
+ * beside it) the quad covers the whole viewport. Only the front surface is drawn, clipped by the near and far
+ * planes like a mesh (no caps): with a perspective camera inside the ellipsoid nothing is drawn (its front
+ * surface is behind the eye). Depth is written in the renderer's depth mode (standard,
  * logarithmic or reversed-Z), as three's materials write theirs. The hit is clipped (`clippingPlanes`, the
  * renderer's), fogged (`scene.fog`, `fog`) and tone-mapped (`toneMapped`) by the same chunks as a mesh, at its
- * exact view position; an `InstancedMesh` of impostors is not supported (one sphere per object). A singular
- * model matrix (a zero scale) draws nothing
- * (unlike a mesh, which draws the flattened shape). Writing depth disables early depth tests, so
- * overdraw costs a full fragment each.
+ * exact view position. A singular model matrix (a zero scale) draws nothing (unlike a mesh, which draws the
+ * flattened shape). Writing depth disables early depth tests, so overdraw costs a full fragment each.
+ *
+ * **Instanced**: on an `InstancedMesh` of {@link createImpostorQuad} (three's USE_INSTANCING), each instance
+ * is drawn as one impostor whose model matrix is the mesh's `matrixWorld` × the instance's matrix: a sphere
+ * where that matrix puts it, and, like one impostor under a non-uniform scale, exactly the ellipsoid a
+ * non-uniform (or sheared) instance matrix makes, normals included (no single radius is chosen). The bounds
+ * and the inverse matrix are computed per instance in the vertex stage (in 32-bit floats: an instance scaled
+ * by 1e±20 stays finite; a zero-scale instance draws nothing); `instanceColor` multiplies ka and kd (not ks)
+ * as on `ShadingMaterial`. Only the instance matrix and colour are read: a `BatchedMesh`, skinning and morph
+ * targets do not apply to a sphere.
  *
  * @example
  * const impostor = new SphereImpostor(new SphereImpostorMaterial({ lighting: 'blinn-phong', lights: [light] }));
  * impostor.scale.set(2, 1, 2); // the lecture's ellipsoid
  * scene.add(impostor, light);
+ * // 1,000 spheres in one draw: an InstancedMesh of the impostor's quad
+ * const field = new InstancedMesh(createImpostorQuad(), new SphereImpostorMaterial({ lights: [light] }), 1000);
  */
 export class SphereImpostorMaterial extends ShadingMaterial {
   /** Always true. */
@@ -60,6 +75,7 @@ export class SphereImpostorMaterial extends ShadingMaterial {
       impostorMvp: { value: new Matrix4() },
       impostorInverseMvp: { value: new Matrix4() },
       impostorModelMatrix: { value: new Matrix4() },
+      impostorViewProjection: { value: new Matrix4() },
       impostorViewport: { value: new Vector4(0, 0, 1, 1) },
       impostorBounds: { value: new Vector4(-1, -1, 1, 1) },
     });
@@ -90,6 +106,19 @@ export class SphereImpostorMaterial extends ShadingMaterial {
     syncShaders(this);
   }
 
+  /**
+   * three's hook before it compiles a program: three defines USE_INSTANCING (and USE_INSTANCING_COLOR) in the
+   * vertex stage only, so the fragment stage of an instanced program gets IMPOSTOR_INSTANCED (and
+   * IMPOSTOR_INSTANCED_COLOR) here; other programs are left as they are. If you replace `onBeforeCompile`, call
+   * this one from yours.
+   */
+  override onBeforeCompile(shader: WebGLProgramParametersWithUniforms, _renderer: WebGLRenderer): void {
+    let defines = '';
+    if (shader.instancing) defines += '#define IMPOSTOR_INSTANCED\n';
+    if (shader.instancing && shader.instancingColor) defines += '#define IMPOSTOR_INSTANCED_COLOR\n';
+    shader.fragmentShader = defines + shader.fragmentShader;
+  }
+
   /** Per draw: ShadingMaterial's uniforms, then the ray-casting matrices, viewport and the quad's bounds. */
   override onBeforeRender(
     renderer: WebGLRenderer,
@@ -112,15 +141,25 @@ export class SphereImpostorMaterial extends ShadingMaterial {
     const mvp = _mvp
       .multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse)
       .multiply(object.matrixWorld);
+    u.impostorViewProjection.value.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
     u.impostorMvp.value.copy(mvp);
     u.impostorInverseMvp.value.copy(mvp).invert();
     u.impostorModelMatrix.value.copy(object.matrixWorld);
     const viewport = renderer.getCurrentViewport(_viewport);
     u.impostorViewport.value.copy(viewport);
     const det = mvp.determinant();
-    if (det !== 0 && Number.isFinite(det))
+    // A singular model matrix, or a perspective eye inside the ellipsoid (its front surface is behind the eye):
+    // nothing to draw, an empty quad off screen (the ray casting would find no hit either, but at a scale of
+    // 1e20 the model-space ray, about 1e−20 long, underflows in 32-bit floats).
+    const inside =
+      (camera as PerspectiveCamera).isPerspectiveCamera === true &&
+      _eye
+        .setFromMatrixPosition(camera.matrixWorld)
+        .applyMatrix4(_inverse.copy(object.matrixWorld).invert())
+        .lengthSq() < 1;
+    if (det !== 0 && Number.isFinite(det) && !inside)
       projectedBounds(mvp, viewport.z, viewport.w, u.impostorBounds.value);
-    else u.impostorBounds.value.set(2, 2, 2, 2); // singular model matrix: no ray casting, an empty quad off screen
+    else u.impostorBounds.value.set(2, 2, 2, 2);
   }
 }
 
