@@ -169,7 +169,7 @@ const hasTimer = await page.evaluate(() => window.sceneBench.hasTimer);
 
 /** @type {Record<string, unknown>} */
 const results = {
-  note: 'The machine was shared with other work during the run (2 cores): the ratios of medians of interleaved rounds are the result, the absolute milliseconds are not.',
+  note: 'The machine was shared with other work during the run (2 cores; load average in Runs): the same-cycle ratios are the result, the absolute milliseconds are not.',
   width: 1280,
   height: 720,
   frames,

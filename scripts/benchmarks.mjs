@@ -625,6 +625,16 @@ function sceneFlat(r) {
   const s = r.flat;
   if (!s) return ['## Flat shading without preparation', '', missing('scene')];
   const meshes = Object.keys(s.meshes);
+  const flatSummary = meshes.flatMap((mesh) => {
+    const { prepared, indexed } = s.meshes[mesh].modes;
+    if (!indexed?.error || indexed.error.error || !indexed.vsPrepared) return [];
+    const bytes =
+      (prepared.bytes.geometry + prepared.bytes.gpuExtra) / (indexed.bytes.geometry + indexed.bytes.gpuExtra);
+    return [
+      `- ${mesh}: without preparation, up to ${indexed.error.max}/255 off the face's colour (RMS ${indexed.error.rms.toFixed(2)}) at ${ratioCell(indexed.vsPrepared)} × the prepared frame time; the prepared geometry takes ${bytes.toFixed(1)} × its bytes.`,
+    ];
+  });
+  if (flatSummary.length) flatSummary.unshift('');
   return [
     '## Flat shading without preparation',
     '',
@@ -666,6 +676,7 @@ function sceneFlat(r) {
         }),
       ),
     ),
+    ...flatSummary,
   ];
 }
 
