@@ -88,8 +88,71 @@ test('flipping each surface feature (and flat shading of a plain indexed geometr
 }) => {
   await open(page);
   const result = await page.evaluate(() => window.materialHarness.flipSurface(1000));
-  // None, each of the 8 features alone, and the flat soup: 10 variants, each compiled once.
-  expect(result.variants).toBe(10);
+  // None, each of the 9 features alone, and the flat soup: 11 variants, each compiled once.
+  expect(result.variants).toBe(11);
   expect(result.max).toBeLessThanOrEqual(result.before + result.variants);
   expect(result.after).toBeLessThanOrEqual(result.before + result.variants);
 });
+
+/** A 3 × 3 plane turned towards the light, so that a perturbed normal changes the diffuse and the highlight. */
+const PLANE = {
+  shading: 'phong',
+  object: 'plane',
+  instances: [{ position: [0, 0, 0], rotation: [-0.5, 0.35, 0.1], scale: [1.2, 0.9, 1] }],
+} as const;
+
+for (const [name, surface] of [
+  ['tangent space', { normalMap: 'tangent' }],
+  ['tangent space, normalScale (−0.5, 1.8)', { normalMap: 'tangent', normalScale: [-0.5, 1.8] }],
+  ['tangent space with a map', { normalMap: 'tangent', map: true }],
+  ['object space (normalMapType)', { normalMap: 'object' }],
+] as Array<[string, SceneSurface]>) {
+  test(`normalMap, ${name}: the normal through three's tangent frame in world space, = shade() with that normal`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await scene(page, { ...PLANE, surface });
+    expectSurface(stats, 3000);
+    // The map matters: shade() with the unperturbed normal is far from what is drawn.
+    const plain = await scene(page, { ...PLANE, surface: { ...surface, unperturbed: true } });
+    expect(plain.maxError, JSON.stringify(plain)).toBeGreaterThan(20);
+  });
+}
+
+test('normalMap with gouraud or flat shading: ignored (no per-fragment normal), one console warning', async ({
+  page,
+}) => {
+  await open(page);
+  const warnings: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'warning' && m.text().includes('ShadingMaterial')) warnings.push(m.text());
+  });
+  for (const shading of ['gouraud', 'flat'] as const) {
+    const stats = await scene(page, { ...PLANE, shading, surface: { normalMap: 'tangent' } });
+    // Drawn as without the map: shade() with the geometry's normals.
+    expectSurface(stats, 1500);
+  }
+  expect(warnings).toEqual([
+    "ShadingMaterial: normalMap needs a per-fragment normal (shading 'phong'); gouraud shading ignores it",
+    "ShadingMaterial: normalMap needs a per-fragment normal (shading 'phong'); flat shading ignores it",
+  ]);
+});
+
+for (const side of ['double', 'back'] as const)
+  test(`normalMap on a back face (${side === 'double' ? 'DoubleSide' : 'BackSide'}): lit with the flipped perturbed normal, = shade()`, async ({
+    page,
+  }) => {
+    await open(page);
+    // The plane turned away: its back face looks at the camera and the light.
+    const config = {
+      ...PLANE,
+      instances: [{ position: [0, 0, 0], rotation: [0.5, Math.PI - 0.35, 0.1], scale: [1.2, 0.9, 1] }],
+    } as const;
+    const stats = await scene(page, { ...config, surface: { normalMap: 'tangent', side } });
+    expectSurface(stats, 3000);
+    const plain = await scene(page, {
+      ...config,
+      surface: { normalMap: 'tangent', side, unperturbed: true },
+    });
+    expect(plain.maxError, JSON.stringify(plain)).toBeGreaterThan(20);
+  });

@@ -49,6 +49,7 @@ import {
   NoColorSpace,
   NoToneMapping,
   type Object3D,
+  ObjectSpaceNormalMap,
   OrthographicCamera,
   PerspectiveCamera,
   Plane,
@@ -64,6 +65,7 @@ import {
   SphereGeometry,
   SpotLight,
   SRGBColorSpace,
+  TangentSpaceNormalMap,
   TorusKnotGeometry,
   Triangle,
   Uint16BufferAttribute,
@@ -135,7 +137,13 @@ interface Hits {
 }
 
 /** Per-pixel nearest triangle and barycentrics with three's Raycaster; candidates from screen tiles. */
-function raycastPixels(world: Float64Array, camera: Camera, size: number, mirrored: boolean): Hits {
+function raycastPixels(
+  world: Float64Array,
+  camera: Camera,
+  size: number,
+  mirrored: boolean,
+  side: 'front' | 'back' | 'double' = 'front',
+): Hits {
   const triangles = world.length / 9;
   const tile = 8;
   const tiles = Math.ceil(size / tile);
@@ -187,9 +195,13 @@ function raycastPixels(world: Float64Array, camera: Camera, size: number, mirror
         b.fromArray(world, 9 * t + 3);
         c.fromArray(world, 9 * t + 6);
         // Cull back faces as three does (its front face flips when the determinant is negative).
-        const hitTriangle = mirrored
-          ? raycaster.ray.intersectTriangle(a, c, b, true, hit)
-          : raycaster.ray.intersectTriangle(a, b, c, true, hit);
+        // BackSide draws only the back faces; DoubleSide both.
+        const hitTriangle =
+          side === 'double'
+            ? raycaster.ray.intersectTriangle(a, b, c, false, hit)
+            : mirrored !== (side === 'back')
+              ? raycaster.ray.intersectTriangle(a, c, b, true, hit)
+              : raycaster.ray.intersectTriangle(a, b, c, true, hit);
         if (hitTriangle === null) continue;
         const dist = hit.distanceTo(raycaster.ray.origin);
         if (dist < bestD) {
@@ -753,7 +765,8 @@ export interface SceneConfig {
     | 'instanced-morphed'
     | 'impostor'
     | 'torus-knot'
-    | 'uv-sphere';
+    | 'uv-sphere'
+    | 'plane';
   /** Flat shading of flatShadingGeometry(geometry) instead of the triangle soup. */
   flatCorners?: boolean;
   /**
@@ -814,6 +827,28 @@ export interface SceneSurface {
   alphaTest?: number;
   /** A 4 × 4 alpha map (green 0 … 1). */
   alphaMap?: boolean;
+  /** A 4 × 4 normal map (tilted normals), tangent space or object space. */
+  normalMap?: 'tangent' | 'object';
+  normalScale?: readonly [number, number];
+  /** The CPU leaves the normal map out (to show that it changes the picture). */
+  unperturbed?: boolean;
+  /** `material.side` DoubleSide or BackSide (phong shading only in the comparison). */
+  side?: 'double' | 'back';
+}
+
+/** A deterministic 4 × 4 normal map (linear): unit normals tilted up to ~40° from +z. */
+function normalTexture(): DataTexture {
+  const data = new Uint8Array(4 * TEXELS * TEXELS);
+  for (let i = 0; i < TEXELS * TEXELS; i++) {
+    const x = 0.45 * Math.sin(1.7 * i + 0.3);
+    const y = 0.45 * Math.cos(2.3 * i + 1.1);
+    const z = Math.sqrt(1 - x * x - y * y);
+    data.set([x, y, z].map((c) => Math.round(((c + 1) / 2) * 255)).concat(255), 4 * i);
+  }
+  const texture = new DataTexture(data, TEXELS, TEXELS, RGBAFormat);
+  texture.colorSpace = NoColorSpace;
+  texture.needsUpdate = true;
+  return texture;
 }
 
 /** The side of the harness's textures, in texels. */
@@ -883,6 +918,12 @@ function applySurface(material: ShadingMaterial | MeshPhongMaterial, surface: Sc
   if (surface.transparent) material.transparent = true;
   if (surface.alphaTest !== undefined) material.alphaTest = surface.alphaTest;
   if (surface.alphaMap) material.alphaMap = surfaceTexture(3, false, false);
+  if (surface.normalMap) {
+    material.normalMap = normalTexture();
+    material.normalMapType = surface.normalMap === 'object' ? ObjectSpaceNormalMap : TangentSpaceNormalMap;
+  }
+  if (surface.normalScale) material.normalScale.set(...surface.normalScale);
+  if (surface.side) material.side = surface.side === 'double' ? DoubleSide : BackSide;
 }
 
 /** One of three's lights (colours linear). */
@@ -1083,11 +1124,16 @@ function buildScene(config: SceneConfig): SceneSetup {
           ? cylinder
           : cylinder.toNonIndexed()
       : cylinder;
-  } else if (kind === 'torus-knot' || kind === 'uv-sphere') {
+  } else if (kind === 'torus-knot' || kind === 'uv-sphere' || kind === 'plane') {
     // The knot hides parts of itself; three's UV sphere (uvs, normals, indexed) is convex: nothing shows
-    // through its alpha-tested holes or behind its blended pixels but the clear colour.
+    // through its alpha-tested holes or behind its blended pixels but the clear colour. The plane's normal is
+    // its face normal (a normal map's tangent frame is then exactly the uv gradients).
     geometry =
-      kind === 'torus-knot' ? new TorusKnotGeometry(0.8, 0.28, 96, 12) : new SphereGeometry(1.2, 48, 24);
+      kind === 'torus-knot'
+        ? new TorusKnotGeometry(0.8, 0.28, 96, 12)
+        : kind === 'plane'
+          ? new PlaneGeometry(3, 3, 4, 4)
+          : new SphereGeometry(1.2, 48, 24);
     if (config.surface?.vertexColors) setVertexColors(geometry, config.surface.vertexColors === 'rgba');
     // Flat shading: the triangle soup (exact, one colour per face) unless the plain indexed one is asked for.
     if (flat && !config.indexedFlat) geometry = geometry.toNonIndexed();
@@ -1177,7 +1223,8 @@ function buildScene(config: SceneConfig): SceneSetup {
     kind === 'skinned' ||
     kind === 'impostor' ||
     kind === 'torus-knot' ||
-    kind === 'uv-sphere'
+    kind === 'uv-sphere' ||
+    kind === 'plane'
   ) {
     // A single object stands where instance 0 would.
     object.applyMatrix4(instances[0]);
@@ -1341,6 +1388,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
     oracle.map = ours.map;
     oracle.alphaMap = ours.alphaMap;
     oracle.emissiveMap = ours.emissiveMap;
+    oracle.normalMap = ours.normalMap;
   }
   object.material = oracle;
   // The impostor's oracle is a fine sphere mesh (level 7) with the same transform.
@@ -1485,7 +1533,13 @@ function sceneCompare(config: SceneConfig): SceneStats {
   }
   // Flat shading of a plain indexed geometry: lit per fragment with the face normal (screen-space derivatives).
   const derivatives = config.shading === 'flat' && index !== null && !config.flatCorners;
-  const hits = raycastPixels(world, camera, size, object.matrixWorld.determinant() < 0);
+  const hits = raycastPixels(
+    world,
+    camera,
+    size,
+    object.matrixWorld.determinant() < 0,
+    config.surface?.side ?? 'front',
+  );
   const edgeDistance = screenEdgeDistance(world, camera, size);
   const e = eyeOf(camera, new Vector4());
   const eye = [e.x, e.y, e.z, e.w];
@@ -1501,6 +1555,41 @@ function sceneCompare(config: SceneConfig): SceneStats {
   const surfaceMaterial = material as ShadingMaterial;
   const emissive = surface?.emissive ?? [0, 0, 0];
   const pixelTint = [1, 1, 1];
+  // A normal map, as three's normal_fragment_maps: tangent space through getTangentFrame, which on a planar
+  // triangle whose normal is its face normal is exactly (∇u, ∇v) / max(|∇u|, |∇v|) (the uv gradients in the
+  // triangle's plane); object space through the normal matrix.
+  const objectNormalMatrix = computeNormalMatrix(object.matrixWorld, new Matrix3());
+  const perturb = (n: number[], tri: number, texel: number[], s: SceneSurface): void => {
+    const map = [texel[0] * 2 - 1, texel[1] * 2 - 1, texel[2] * 2 - 1];
+    if (s.normalMap === 'object') {
+      const w = new Vector3(...map).applyMatrix3(objectNormalMatrix);
+      n.splice(0, 3, w.x, w.y, w.z);
+      return;
+    }
+    const [sx, sy] = s.normalScale ?? [1, 1];
+    const p0 = new Vector3().fromArray(world, 9 * tri);
+    const e1 = new Vector3().fromArray(world, 9 * tri + 3).sub(p0);
+    const e2 = new Vector3().fromArray(world, 9 * tri + 6).sub(p0);
+    const f = new Vector3().crossVectors(e1, e2);
+    const gradient = (c: number) => {
+      const d1 = cornerUv[6 * tri + 2 + c] - cornerUv[6 * tri + c];
+      const d2 = cornerUv[6 * tri + 4 + c] - cornerUv[6 * tri + c];
+      return new Vector3()
+        .crossVectors(e2, f)
+        .multiplyScalar(d1)
+        .add(new Vector3().crossVectors(f, e1).multiplyScalar(d2))
+        .divideScalar(f.lengthSq());
+    };
+    const gu = gradient(0);
+    const gv = gradient(1);
+    const scale = 1 / Math.max(gu.length(), gv.length());
+    const nn = new Vector3(n[0], n[1], n[2]).normalize();
+    const out = gu
+      .multiplyScalar(scale * sx * map[0])
+      .add(gv.multiplyScalar(scale * sy * map[1]))
+      .add(nn.multiplyScalar(map[2]));
+    n.splice(0, 3, out.x, out.y, out.z);
+  };
   const lights: Array<ShadeLight | ShadeThreeLight> = threeLights.map(shadeThreeLight);
   if (config.phongLight !== false)
     lights.push({
@@ -1535,6 +1624,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
       // The surface: texel × vertex colour multiplies ka and kd (the vertex's own colour with vertex lighting),
       // emissive × its texel is added, alpha = opacity × texel alpha × vertex alpha × alphaMap.g.
       let alpha = 1;
+      let normalTexel: number[] | null = null;
       let vertexTint: (j: number) => ArrayLike<number> = () => tint;
       if (surface !== undefined) {
         const u = b0 * cornerUv[6 * tri] + b1 * cornerUv[6 * tri + 2] + b2 * cornerUv[6 * tri + 4];
@@ -1546,7 +1636,11 @@ function sceneCompare(config: SceneConfig): SceneStats {
         const mask = surfaceMaterial.alphaMap
           ? texelAt(surfaceMaterial.alphaMap as DataTexture, u, v)
           : [1, 1, 1, 1];
-        if (texel === null || glow === null || mask === null) continue; // a texel edge: either side
+        const bump = surfaceMaterial.normalMap
+          ? texelAt(surfaceMaterial.normalMap as DataTexture, u, v)
+          : [0.5, 0.5, 1, 1];
+        if (texel === null || glow === null || mask === null || bump === null) continue; // a texel edge
+        normalTexel = bump;
         const c = (j: number, k: number) => cornerColor[12 * tri + 4 * j + k];
         const interpolated = [0, 1, 2, 3].map((k) => b0 * c(0, k) + b1 * c(1, k) + b2 * c(2, k));
         alpha = (surface.opacity ?? 1) * texel[3] * interpolated[3] * mask[1];
@@ -1569,6 +1663,14 @@ function sceneCompare(config: SceneConfig): SceneStats {
         for (let k = 0; k < 3; k++)
           normal[k] =
             b0 * normals[9 * tri + k] + b1 * normals[9 * tri + 3 + k] + b2 * normals[9 * tri + 6 + k];
+        if (normalTexel !== null && surface?.normalMap && !surface.unperturbed)
+          perturb(normal, tri, normalTexel, surface);
+        // A back face (its outward face normal turned away from the eye) is lit with the flipped normal.
+        const f = faceNormals.subarray(3 * tri, 3 * tri + 3);
+        const w = eye[3];
+        let facing = 0;
+        for (let k = 0; k < 3; k++) facing += f[k] * (eye[k] - position[k] * w);
+        if (config.surface?.side && facing < 0) for (let k = 0; k < 3; k++) normal[k] = -normal[k];
         shade({ position, normal, eye, tint }, m, lights, linear);
       } else if (config.shading === 'gouraud') {
         linear.fill(0);
@@ -1896,7 +1998,7 @@ function sideCompare(config: {
 }
 
 /**
- * Each surface feature (map, vertexColors, emissive, emissiveMap, transparent, alphaTest, alphaMap, and flat
+ * Each surface feature (normalMap, map, vertexColors, emissive, emissiveMap, transparent, alphaTest, alphaMap, and flat
  * shading of a plain indexed geometry) flipped on and off `flips` times at random (fixed seed), the others off,
  * rendering after each flip, with one ShadingMaterial: the live program count.
  */
@@ -1916,7 +2018,11 @@ function flipSurface(flips: number): { before: number; after: number; max: numbe
   const map = surfaceTexture(1, false, true);
   const glow = surfaceTexture(2, false, true);
   const mask = surfaceTexture(3, false, false);
+  const bumps = normalTexture();
   const features: Array<(on: boolean) => void> = [
+    (on) => {
+      material.normalMap = on ? bumps : null;
+    },
     (on) => {
       material.map = on ? map : null;
     },

@@ -21,6 +21,7 @@ import {
   instanceChunk,
   instanceVertex,
   lightingChunk as lighting,
+  normalMapFragment,
   outputFragment,
   projectVertex,
   sceneFeatures,
@@ -295,7 +296,9 @@ ${surfaceFragment}
   vNormal = gl_FrontFacing ? vNormal : - vNormal;
 #endif
 #endif
-#if defined( DOUBLE_SIDED )
+#if defined( SHADING_NORMALMAP )
+${normalMapFragment}
+#elif defined( DOUBLE_SIDED )
   vec3 color = shadeColor(vWorldPosition, gl_FrontFacing ? vNormal : -vNormal);
 #elif defined( FLIP_SIDED )
   vec3 color = shadeColor(vWorldPosition, -vNormal);

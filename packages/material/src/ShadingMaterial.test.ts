@@ -1,6 +1,7 @@
 import { eyeOf, flatShadingGeometry, PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
 import fc from 'fast-check';
 import {
+  BackSide,
   BufferGeometry,
   Color,
   DataTexture,
@@ -13,6 +14,7 @@ import {
   PerspectiveCamera,
   PointLight,
   Scene,
+  Vector2,
   Vector3,
   Vector4,
   type WebGLRenderer,
@@ -517,5 +519,34 @@ describe('ShadingMaterial surface (three’s map, vertexColors, emissive, opacit
     expect(String(error.mock.calls[0][0])).toMatch(/^ShadingMaterial.emissive must have finite channels/);
     expect(m.uniforms.emissive.value.toArray()).toEqual([0.1, 0, 0]);
     error.mockRestore();
+  });
+});
+
+describe('ShadingMaterial normalMap', () => {
+  it('uniforms as three refreshes them (BackSide turns the scale round); one warning for a shading without per-fragment normals', () => {
+    const normalMap = new DataTexture(new Uint8Array([128, 128, 255, 255]), 1, 1);
+    const m = new ShadingMaterial({ normalMap, normalScale: new Vector2(0.5, -2) });
+    const mesh = new Mesh(sphere(), m);
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    draw(m, mesh);
+    expect(m.uniforms.normalMap.value).toBe(normalMap);
+    expect(m.uniforms.normalScale.value.toArray()).toEqual([0.5, -2]);
+    m.side = BackSide;
+    draw(m, mesh);
+    expect(m.uniforms.normalScale.value.toArray()).toEqual([-0.5, 2]);
+    expect(warn).not.toHaveBeenCalled();
+    m.shading = 'gouraud';
+    draw(m, mesh);
+    draw(m, mesh);
+    expect(warn).toHaveBeenCalledTimes(1);
+    expect(warn.mock.calls[0][0]).toBe(
+      "ShadingMaterial: normalMap needs a per-fragment normal (shading 'phong'); gouraud shading ignores it",
+    );
+    warn.mockRestore();
+    expect(() => new ShadingMaterial({ normalScale: [1, 1] as never })).toThrow(
+      new TypeError('ShadingMaterial.normalScale must be a THREE.Vector2, got 1,1'),
+    );
+    const c = m.clone();
+    expect([c.normalMap, c.normalScale.toArray()]).toEqual([normalMap, [0.5, -2]]);
   });
 });

@@ -1,17 +1,21 @@
 import {
+  BackSide,
   type BufferGeometry,
   type Camera,
   Color,
   type Group,
   type Light,
   Matrix3,
+  type NormalMapTypes,
   type Object3D,
   type Scene,
   ShaderMaterial,
   type SkinnedMesh,
+  TangentSpaceNormalMap,
   type Texture,
   UniformsLib,
   UniformsUtils,
+  Vector2,
   Vector4,
   type WebGLRenderer,
 } from 'three';
@@ -93,6 +97,13 @@ export interface ShadingMaterialOptions {
   alphaTest?: number;
   /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
   alphaMap?: Texture | null;
+  /**
+   * three's `normalMap` (tangent space by default, see `normalMapType`): perturbs the normal per fragment, in
+   * phong shading only (gouraud and flat have no per-fragment normal: a console warning, once). @default null
+   */
+  normalMap?: Texture | null;
+  /** three's `normalScale`: scales the normal map's x and y. @default Vector2(1, 1) */
+  normalScale?: Vector2;
 }
 
 /** The `userData` flag that marks a geometry as a sphere centred at its origin (see {@link ShadingMaterial}). */
@@ -230,6 +241,8 @@ export class ShadingMaterial extends ShaderMaterial {
   #opacity = 1;
   // What of the surface three compiles (its program parameters), to raise needsUpdate when it changes.
   #surfaceKey = '';
+  // The normal map was set with a shading that cannot use it, and the warning was given.
+  #warnedNormalMap = false;
   // The message of the in-place problem last reported (null once the values are valid again).
   #reported: string | null = null;
 
@@ -254,6 +267,8 @@ export class ShadingMaterial extends ShaderMaterial {
     transparent = false,
     alphaTest = 0,
     alphaMap = null,
+    normalMap = null,
+    normalScale = new Vector2(1, 1),
   }: ShadingMaterialOptions = {}) {
     super({
       vertexShader: withLightCount(vertexShader, 0),
@@ -281,6 +296,9 @@ export class ShadingMaterial extends ShaderMaterial {
         emissiveMapTransform: { value: new Matrix3() },
         opacity: { value: 1 },
         alphaTest: { value: 0 },
+        normalMap: { value: null },
+        normalMapTransform: { value: new Matrix3() },
+        normalScale: { value: new Vector2(1, 1) },
         ...UniformsUtils.clone(UniformsLib.fog),
         ...UniformsUtils.clone(UniformsLib.lights),
       },
@@ -301,6 +319,11 @@ export class ShadingMaterial extends ShaderMaterial {
     this.transparent = transparent === true;
     this.alphaTest = alphaTest;
     this.alphaMap = checkTexture('ShadingMaterial.alphaMap', alphaMap);
+    this.normalMap = checkTexture('ShadingMaterial.normalMap', normalMap);
+    if (!(normalScale instanceof Vector2)) {
+      throw new TypeError(`ShadingMaterial.normalScale must be a THREE.Vector2, got ${String(normalScale)}`);
+    }
+    this.normalScale.copy(normalScale);
     this.#syncDefines();
   }
 
@@ -314,6 +337,16 @@ export class ShadingMaterial extends ShaderMaterial {
   alphaMap: Texture | null = null;
   /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingMaterial.emissive}. @default null */
   emissiveMap: Texture | null = null;
+  /**
+   * three's `normalMap`: perturbs the normal per fragment through three's tangent frame from screen-space
+   * derivatives (a `tangent` attribute is not used), in world space; phong shading only (gouraud and flat
+   * shading have no per-fragment normal: it is ignored there, with one console warning). @default null
+   */
+  normalMap: Texture | null = null;
+  /** three's `normalMapType`: `TangentSpaceNormalMap` or `ObjectSpaceNormalMap`. @default TangentSpaceNormalMap */
+  normalMapType: NormalMapTypes = TangentSpaceNormalMap;
+  /** three's `normalScale`: scales the tangent-space normal map's x and y (finite). @default Vector2(1, 1) */
+  readonly normalScale = new Vector2(1, 1);
 
   /**
    * three's `emissive`: linear RGB added to the lit colour outside the lighting, before fog and tone mapping
@@ -530,7 +563,7 @@ export class ShadingMaterial extends ShaderMaterial {
    */
   #updateSurface(): void {
     const u = this.uniforms;
-    const key = `${this.map !== null},${this.alphaMap !== null},${this.emissiveMap !== null},${this.vertexColors},${this.transparent},${this.alphaTest > 0}`;
+    const key = `${this.map !== null},${this.alphaMap !== null},${this.emissiveMap !== null},${this.normalMap !== null},${this.normalMapType},${this.vertexColors},${this.transparent},${this.alphaTest > 0}`;
     if (key !== this.#surfaceKey) {
       if (this.#surfaceKey !== '') this.needsUpdate = true;
       this.#surfaceKey = key;
@@ -540,6 +573,20 @@ export class ShadingMaterial extends ShaderMaterial {
     refreshMap(u.map, u.mapTransform, this.map);
     refreshMap(u.alphaMap, u.alphaMapTransform, this.alphaMap);
     refreshMap(u.emissiveMap, u.emissiveMapTransform, this.emissiveMap);
+    refreshMap(u.normalMap, u.normalMapTransform, this.normalMap);
+    if (this.normalMap !== null) {
+      // As three's refreshUniformsCommon: a BackSide material's tangent frame is turned round.
+      const { x, y } = this.normalScale;
+      const sign = this.side === BackSide ? -1 : 1;
+      // Not finite: reported by the in-place check, drawn with the last finite scale.
+      if (Number.isFinite(x) && Number.isFinite(y)) u.normalScale.value.set(sign * x, sign * y);
+      if (this.#shading !== 'phong' && !this.#warnedNormalMap) {
+        this.#warnedNormalMap = true;
+        console.warn(
+          `ShadingMaterial: normalMap needs a per-fragment normal (shading 'phong'); ${this.#shading} shading ignores it`,
+        );
+      }
+    }
   }
 
   /**
@@ -552,6 +599,11 @@ export class ShadingMaterial extends ShaderMaterial {
       checkColorChannels('ShadingMaterial.kd', this.#kd);
       checkColorChannels('ShadingMaterial.ks', this.#ks);
       checkColorChannels('ShadingMaterial.emissive', this.#emissive);
+      if (!Number.isFinite(this.normalScale.x) || !Number.isFinite(this.normalScale.y)) {
+        throw new RangeError(
+          `ShadingMaterial.normalScale must be finite, got (${this.normalScale.x}, ${this.normalScale.y})`,
+        );
+      }
       this.#active.forEach((light, i) => {
         try {
           light.validate();
@@ -657,6 +709,9 @@ export class ShadingMaterial extends ShaderMaterial {
     this.map = source.map;
     this.alphaMap = source.alphaMap;
     this.emissiveMap = source.emissiveMap;
+    this.normalMap = source.normalMap;
+    this.normalMapType = source.normalMapType;
+    this.normalScale.copy(source.normalScale);
     this.#attenuation = this.#lights.some((light) => light.attenuates);
     this.defines = { ...source.defines };
     return this;

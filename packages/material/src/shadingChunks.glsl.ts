@@ -32,7 +32,9 @@ export const sceneFeatures = /* glsl */ `
  * - `SHADING_SPLIT` (both stages): a texture with vertex lighting (gouraud, exact flat) — the vertex stage passes
  *   the ka/kd part and the ks part of the colour separately, the fragment multiplies only the first by the texel;
  * - `SHADING_SURFACE` (fragment): `diffuseColor` = (texel, opacity × texel alpha × vertex alpha × alphaMap.g),
- *   alpha-tested and, unless opaque, written as the fragment's alpha.
+ *   alpha-tested and, unless opaque, written as the fragment's alpha;
+ * - `SHADING_NORMALMAP` (fragment, phong shading only): three's normal map perturbs the normal, in world space,
+ *   with three's derivative tangent frame (`getTangentFrame`; a `tangent` attribute is not used).
  */
 export const surfaceVertexPars = /* glsl */ `
 #if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES )
@@ -64,6 +66,37 @@ uniform vec3 emissive;
 #ifdef USE_COLOR_ALPHA
 in float vShadingAlpha;
 #endif
+#if defined( USE_NORMALMAP ) && defined( SHADING_PHONG )
+#define SHADING_NORMALMAP
+#undef USE_TANGENT
+#define normalMatrix shadingNormalMatrix
+#endif
+#include <normalmap_pars_fragment>
+`;
+
+/**
+ * Fragment stage, phong shading with a normal map: the normal (`vNormal`, turned to the drawn side) through
+ * three's tangent frame and `normal_fragment_maps` (tangent space, or object space through the object's normal
+ * matrix), in world space, then lit.
+ */
+export const normalMapFragment = /* glsl */ `
+  float faceDirection = gl_FrontFacing ? 1.0 : - 1.0;
+#if defined( DOUBLE_SIDED )
+  vec3 normal = normalize( vNormal ) * faceDirection;
+#elif defined( FLIP_SIDED )
+  vec3 normal = - normalize( vNormal );
+#else
+  vec3 normal = normalize( vNormal );
+#endif
+#ifdef USE_NORMALMAP_TANGENTSPACE
+  mat3 tbn = getTangentFrame( vWorldPosition, normal, vNormalMapUv );
+#ifdef DOUBLE_SIDED
+  tbn[ 0 ] *= faceDirection;
+  tbn[ 1 ] *= faceDirection;
+#endif
+#endif
+  #include <normal_fragment_maps>
+  vec3 color = shadeColor( vWorldPosition, normal );
 `;
 
 /**
