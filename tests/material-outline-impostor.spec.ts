@@ -69,12 +69,17 @@ test('createOutline on a plain mesh still matches the CPU hull (the control)', a
   expect(stats.staleMismatches, info).toBe(0);
 });
 
-/** Four coloured instances: spheres of different radii, and an ellipsoid (rotated, non-uniform scale). */
+/**
+ * Five coloured instances: spheres of different radii, an ellipsoid (rotated, non-uniform scale), and a sphere
+ * that intersects another.
+ */
 const SPHERES: ImpostorConfig['instances'] = [
   { position: [-2.2, 0.6, 0], scale: [0.8, 0.8, 0.8], color: [1, 0.5, 0.25] },
   { position: [0, 0, 0.5], scale: [1.1, 1.1, 1.1], color: [0.25, 1, 0.5] },
   { position: [2.2, -0.4, -0.5], rotation: [0.3, 0.2, 0.7], scale: [1.2, 0.6, 0.8], color: [0.5, 0.25, 1] },
   { position: [0.3, -1.9, 1], scale: [0.5, 0.5, 0.5], color: [1, 1, 1] },
+  // Through the second sphere: where they intersect, the exact depth of each hit decides.
+  { position: [0.9, 0.7, 0.9], scale: [0.6, 0.6, 0.6], color: [1, 1, 0.3] },
 ];
 
 function expectImpostors(stats: ImpostorStats, minCovered: number, minCompared: number): void {
@@ -127,3 +132,27 @@ test('instanced impostor extremes: zero-scale and 1e±20-scale instances draw no
   });
   expectImpostors(stats, 5000, 4000);
 });
+
+for (const [name, extra] of [
+  ['fog', { fog: { near: 4, far: 8 } }],
+  ['a clipping plane', { clip: [1, 0.3, 0, -0.2] }],
+  ['a logarithmic depth buffer', { logarithmic: true }],
+] as Array<[string, Partial<ImpostorConfig>]>) {
+  test(`the instanced impostor with ${name}: the same pixels as one SphereImpostor per sphere, covered where MeshPhongMaterial draws`, async ({
+    page,
+  }) => {
+    await open(page);
+    const stats = await impostors(page, { instances: SPHERES, ...extra });
+    const info = JSON.stringify(stats);
+    expect(stats.covered, info).toBeGreaterThan(3000);
+    expect(stats.coverageCompared, info).toBeGreaterThan(30000);
+    expect(stats.coverageMismatches, info).toBe(0);
+    expect(stats.darkPixels, info).toBe(0);
+    expect(stats.objectsCovered, info).toBe(stats.covered);
+    expect(stats.objectsMismatches, info).toBe(0);
+    if (extra.logarithmic) {
+      expect(stats.compared, info).toBeGreaterThan(4000);
+      expect(stats.maxError, info).toBeLessThanOrEqual(2);
+    }
+  });
+}

@@ -17,6 +17,7 @@ import {
   CylinderGeometry,
   Euler,
   Float32BufferAttribute,
+  Fog,
   InstancedMesh,
   Matrix3,
   Matrix4,
@@ -24,6 +25,7 @@ import {
   MeshBasicMaterial,
   MeshPhongMaterial,
   PerspectiveCamera,
+  Plane,
   Quaternion,
   Raycaster,
   Scene,
@@ -44,6 +46,21 @@ const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBu
 renderer.setPixelRatio(1);
 renderer.setClearColor(0x0000ff, 1);
 
+let logRenderer: WebGLRenderer | null = null;
+
+/** A renderer with a logarithmic depth buffer (made once). */
+function logarithmicRenderer(): WebGLRenderer {
+  logRenderer ??= new WebGLRenderer({
+    canvas: document.createElement('canvas'),
+    antialias: false,
+    preserveDrawingBuffer: true,
+    logarithmicDepthBuffer: true,
+  });
+  logRenderer.setPixelRatio(1);
+  logRenderer.setClearColor(0x0000ff, 1);
+  return logRenderer;
+}
+
 function makeCamera(size: number): PerspectiveCamera {
   const camera = new PerspectiveCamera(60, 1, 0.1, 20);
   camera.position.set(0, 0.3, 6);
@@ -55,9 +72,10 @@ function makeCamera(size: number): PerspectiveCamera {
   return camera;
 }
 
-function readPixels(scene: Scene, camera: Camera, size: number): Uint8Array {
-  renderer.render(scene, camera);
-  const gl = renderer.getContext();
+function readPixels(scene: Scene, camera: Camera, size: number, r = renderer): Uint8Array {
+  r.setSize(size, size, false);
+  r.render(scene, camera);
+  const gl = r.getContext();
   const pixels = new Uint8Array(4 * size * size);
   gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
   return pixels;
@@ -328,6 +346,12 @@ export interface ImpostorConfig {
   size?: number;
   /** The InstancedMesh's own scale. @default [1, 1, 1] */
   scale?: readonly [number, number, number];
+  /** scene.fog = Fog(near, far): only the pictures are compared (not shade()). */
+  fog?: { near: number; far: number };
+  /** One clipping plane (normal x, y, z, constant) on the materials: only the pictures are compared. */
+  clip?: readonly [number, number, number, number];
+  /** A renderer with a logarithmic depth buffer. */
+  logarithmic?: boolean;
 }
 
 export interface ImpostorStats {
@@ -369,6 +393,15 @@ function impostorCompare(config: ImpostorConfig): ImpostorStats {
   const light = new PhongLight({ ambient: [0.2, 0.2, 0.2], diffuse: [1, 1, 1], specular: [0.8, 0.8, 0.8] });
   light.position.set(-5, 10, 20);
   const material = new SphereImpostorMaterial({ lights: [light], ka: [0.9, 0.8, 0.7], shininess: 20 });
+  const r = config.logarithmic ? logarithmicRenderer() : renderer;
+  const planes = config.clip ? [new Plane(new Vector3(...config.clip.slice(0, 3)), config.clip[3])] : null;
+  renderer.localClippingEnabled = planes !== null;
+  r.localClippingEnabled = planes !== null;
+  const clipped = (m: SphereImpostorMaterial | MeshPhongMaterial) => {
+    m.clippingPlanes = planes;
+    return m;
+  };
+  clipped(material);
   const specs = config.instances;
   const matrices = specs.map(instanceMatrix);
   const colored = specs.some((s) => s.color !== undefined);
@@ -389,14 +422,15 @@ function impostorCompare(config: ImpostorConfig): ImpostorStats {
   const impostors = build(quad, material);
   const scene = new Scene();
   scene.add(impostors, light);
+  if (config.fog) scene.fog = new Fog(0x8080c0, config.fog.near, config.fog.far);
   scene.updateMatrixWorld();
-  const ours = readPixels(scene, camera, size);
+  const ours = readPixels(scene, camera, size, r);
   scene.remove(impostors);
-  const oracleMaterial = new MeshPhongMaterial({ color: 0xffffff });
+  const oracleMaterial = clipped(new MeshPhongMaterial({ color: 0xffffff }));
   const oracle = build(sphereGeometry(7, true), oracleMaterial);
   scene.add(oracle);
   scene.updateMatrixWorld();
-  const theirs = readPixels(scene, camera, size);
+  const theirs = readPixels(scene, camera, size, r);
   scene.remove(oracle);
   // One SphereImpostor per instance, at M·I, each with the instance colour folded into ka and kd.
   const objectMaterials: SphereImpostorMaterial[] = [];
@@ -407,6 +441,7 @@ function impostorCompare(config: ImpostorConfig): ImpostorStats {
       kd: material.kd.clone().multiply(tints[i]),
       shininess: material.shininess,
     });
+    clipped(tinted);
     objectMaterials.push(tinted);
     const object = new SphereImpostor(tinted);
     object.matrixAutoUpdate = false;
@@ -414,7 +449,10 @@ function impostorCompare(config: ImpostorConfig): ImpostorStats {
     scene.add(object);
   });
   scene.updateMatrixWorld();
-  const objects = readPixels(scene, camera, size);
+  const objects = readPixels(scene, camera, size, r);
+  renderer.localClippingEnabled = false;
+  r.localClippingEnabled = false;
+  const pictureOnly = config.fog !== undefined || planes !== null;
   // The CPU ray cast: the nearest hit of each pixel's ray with the instances' spheres.
   const models = matrices.map((m) => new Matrix4().multiplyMatrices(impostors.matrixWorld, m));
   const inverses = models.map((m) => m.clone().invert());
@@ -520,7 +558,7 @@ function impostorCompare(config: ImpostorConfig): ImpostorStats {
         stats.coverageCompared++;
         if (a !== b) stats.coverageMismatches++;
       }
-      if (!sameInstance) continue;
+      if (!sameInstance || pictureOnly) continue;
       const k = hitInstance[i];
       shade(
         {
