@@ -43,6 +43,16 @@ for (const [name, config] of [
     'an InstancedMesh with per-instance morph weights',
     { object: 'instanced-morphed', instances: INSTANCES.map((i) => ({ ...i, scale: [0.6, 0.6, 0.6] })) },
   ],
+  [
+    'a skinned mesh with instances (a SkinnedMesh with an instanceMatrix: instancing × skinning)',
+    {
+      object: 'instanced-skinned',
+      instances: [
+        { position: [-1.6, 0.2, 0], scale: [0.7, 0.7, 0.7] },
+        { position: [1.4, -0.3, -0.5], rotation: [0, 0.4, -0.3], scale: [0.6, 0.8, 0.6] },
+      ],
+    },
+  ],
 ] as Array<[string, Omit<OutlineConfig, 'thickness'>]>) {
   test(`createOutline on ${name}: the hull of the deformed surface (= three's deformation, CPU hull)`, async ({
     page,

@@ -18,6 +18,7 @@ import {
   Euler,
   Float32BufferAttribute,
   Fog,
+  InstancedBufferAttribute,
   InstancedMesh,
   Matrix3,
   Matrix4,
@@ -102,7 +103,7 @@ function instanceMatrix(instance: Instance): Matrix4 {
 
 export interface OutlineConfig {
   /** What is outlined. */
-  object: 'mesh' | 'skinned' | 'morphed' | 'instanced' | 'instanced-morphed';
+  object: 'mesh' | 'skinned' | 'morphed' | 'instanced' | 'instanced-morphed' | 'instanced-skinned';
   /** Outline width, world units. */
   thickness: number;
   /** The skinned cylinder's second bone about z, radians. @default 0.9 */
@@ -268,7 +269,7 @@ function outlineCompare(config: OutlineConfig): OutlineStats {
   const specs = config.instances ?? [{ position: [0, 0, 0] }];
   let object: Mesh;
   let matrices = [new Matrix4()];
-  if (config.object === 'skinned') {
+  if (config.object === 'skinned' || config.object === 'instanced-skinned') {
     const mesh = new SkinnedMesh(skinnedCylinder(), body);
     const root = new Bone();
     root.position.set(0, -1.5, 0);
@@ -279,6 +280,23 @@ function outlineCompare(config: OutlineConfig): OutlineStats {
     mesh.bind(new Skeleton([root, joint]));
     joint.rotation.z = config.bone ?? 0.9;
     mesh.rotation.y = 0.3;
+    if (config.object === 'instanced-skinned') {
+      // three has no InstancedSkinnedMesh class; its program parameters and chunks combine both when a
+      // SkinnedMesh has an InstancedMesh's instanceMatrix (what such classes in apps do).
+      matrices = specs.map(instanceMatrix);
+      const attribute = new InstancedBufferAttribute(new Float32Array(16 * matrices.length), 16);
+      matrices.forEach((m, i) => {
+        m.toArray(attribute.array, 16 * i);
+      });
+      Object.assign(mesh, {
+        isInstancedMesh: true,
+        instanceMatrix: attribute,
+        instanceColor: null,
+        morphTexture: null,
+        count: matrices.length,
+      });
+      mesh.frustumCulled = false;
+    }
     object = mesh;
   } else if (config.object === 'morphed') {
     object = new Mesh(morphedSphere(), body);
