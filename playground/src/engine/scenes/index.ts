@@ -57,7 +57,7 @@ export function sceneNote(name: SceneName): string {
     case 'skinned':
       return `A cylinder on four bones, posed, with a morph target swelling its middle. ${others}`;
     case 'textured':
-      return `A torus knot with a checker map (tints ka and kd) and a bump normal map, made in code. ${others}`;
+      return `A torus knot with a checker map (tints ka and kd) and a bump normal map (Phong shading only: gouraud and flat have no per-fragment normal), made in code. ${others}`;
     case 'lights':
       return `Lit by three's hemisphere, ambient, directional, point and spot lights (next to the panel's lights), with fog and a clipping plane. ${others}`;
   }
