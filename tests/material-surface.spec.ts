@@ -156,3 +156,25 @@ for (const side of ['double', 'back'] as const)
     });
     expect(plain.maxError, JSON.stringify(plain)).toBeGreaterThan(20);
   });
+
+for (const side of ['double', 'back'] as const)
+  test(`a textured, vertex-coloured back face (${side === 'double' ? 'DoubleSide' : 'BackSide'}), every shading: the ka/kd and ks parts of each side, = shade() with the flipped normal`, async ({
+    page,
+  }) => {
+    await open(page);
+    for (const [rotation, minCompared] of [
+      [[-0.5, 0.35, 0.1], 3000], // front faces (DoubleSide only)
+      [[0.5, Math.PI - 0.35, 0.1], 3000], // back faces
+    ] as const) {
+      if (side === 'back' && rotation[1] < 1) continue;
+      for (const [shadingName, variant] of SHADINGS) {
+        const stats = await scene(page, {
+          ...variant,
+          object: 'plane',
+          instances: [{ position: [0, 0, 0], rotation, scale: [1.2, 0.9, 1] }],
+          surface: { map: true, vertexColors: 'rgb', emissive: [0.02, 0.01, 0], side },
+        });
+        expectSurface(stats, shadingName.startsWith('flat') ? minCompared / 2 : minCompared);
+      }
+    }
+  });

@@ -1659,18 +1659,20 @@ function sceneCompare(config: SceneConfig): SceneStats {
           continue;
         }
       }
+      // A back face (its outward face normal turned away from the eye; drawn with `surface.side`) is lit with
+      // the flipped normal, in every shading.
+      const outward = faceNormals.subarray(3 * tri, 3 * tri + 3);
+      let facing = 0;
+      for (let k = 0; k < 3; k++) facing += outward[k] * (eye[k] - position[k] * eye[3]);
+      const flip = surface?.side !== undefined && facing < 0 ? -1 : 1;
+      const faceNormal = Array.from(outward, (c) => flip * c);
       if (config.shading === 'phong') {
         for (let k = 0; k < 3; k++)
           normal[k] =
             b0 * normals[9 * tri + k] + b1 * normals[9 * tri + 3 + k] + b2 * normals[9 * tri + 6 + k];
         if (normalTexel !== null && surface?.normalMap && !surface.unperturbed)
           perturb(normal, tri, normalTexel, surface);
-        // A back face (its outward face normal turned away from the eye) is lit with the flipped normal.
-        const f = faceNormals.subarray(3 * tri, 3 * tri + 3);
-        const w = eye[3];
-        let facing = 0;
-        for (let k = 0; k < 3; k++) facing += f[k] * (eye[k] - position[k] * w);
-        if (config.surface?.side && facing < 0) for (let k = 0; k < 3; k++) normal[k] = -normal[k];
+        for (let k = 0; k < 3; k++) normal[k] *= flip;
         shade({ position, normal, eye, tint }, m, lights, linear);
       } else if (config.shading === 'gouraud') {
         linear.fill(0);
@@ -1678,7 +1680,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
           shade(
             {
               position: world.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3),
-              normal: normals.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3),
+              normal: Array.from(normals.subarray(9 * tri + 3 * j, 9 * tri + 3 * j + 3), (c) => flip * c),
               eye,
               tint: vertexTint(j),
             },
@@ -1691,13 +1693,13 @@ function sceneCompare(config: SceneConfig): SceneStats {
         }
       } else if (derivatives) {
         if (edgeDistance(tri, x + 0.5, y + 0.5) < 0.5) continue;
-        shade({ position, normal: faceNormals.subarray(3 * tri, 3 * tri + 3), eye, tint }, m, lights, linear);
+        shade({ position, normal: faceNormal, eye, tint }, m, lights, linear);
       } else {
         if (edgeDistance(tri, x + 0.5, y + 0.5) < 0.1) continue;
         shade(
           {
             position: centroids.subarray(3 * tri, 3 * tri + 3),
-            normal: faceNormals.subarray(3 * tri, 3 * tri + 3),
+            normal: faceNormal,
             eye,
             tint,
           },

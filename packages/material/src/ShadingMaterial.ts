@@ -191,7 +191,10 @@ const _eye = /* @__PURE__ */ new Vector4();
  * DirectionalLight, SpotLight) light it through the same equation with three's light uniforms: Id = Is =
  * colour × intensity, three's distance and cone falloff in place of the attenuation, ambient and hemisphere
  * lights as Ia (see `ShadeThreeLight`); compiled only when the scene has one of three's lights (the scene is
- * searched once per frame).
+ * searched once per frame). three's surface properties by their names, through three's chunks, each compiled
+ * only when set: `map` and `vertexColors` multiply ka and kd (never ks), `emissive` (× `emissiveMap`) is added
+ * outside the lighting, alpha is `opacity` × map alpha × vertex alpha × `alphaMap` green (blended when
+ * `transparent`, discarded below `alphaTest`), and `normalMap` perturbs the normal in phong shading.
  *
  * Colours are linear (three's working colour space), tone-mapped when the renderer asks for it and written
  * through three's output colour space conversion. The object's normal matrix is sign(det)·cof(M) of its world matrix (see
