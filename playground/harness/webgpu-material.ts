@@ -1,0 +1,334 @@
+// Harness for tests/material-webgpu.spec.ts: ShadingNodeMaterial under WebGPURenderer (its WebGPU backend and,
+// with forceWebGL, its WebGL2 backend), rendered offscreen into a RenderTarget (presenting to a WebGPU canvas
+// headless loses the device) and read back; compared with shade() per pixel and with ShadingMaterial under
+// WebGLRenderer.
+import { PhongLight, type ShadeLight, type ShadeMaterial, ShadingMaterial, shade } from '@shadelab/material';
+import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
+import {
+  type BufferGeometry,
+  type Material,
+  Mesh,
+  PerspectiveCamera,
+  Raycaster,
+  Scene,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import { RenderTarget, WebGPURenderer } from 'three/webgpu';
+
+type Shading = 'flat' | 'gouraud' | 'phong';
+type Lighting = 'phong' | 'blinn-phong';
+export interface Variant {
+  shading: Shading;
+  lighting: Lighting;
+  celBands: number;
+}
+export type Backend = 'webgpu' | 'webgl2';
+
+const SIZE = 128;
+const geometry: BufferGeometry = new SubdivisionSphereGeometry({
+  level: 3,
+  base: 'tetrahedron',
+  indexed: false,
+});
+
+function scene(material: Material): {
+  scene: Scene;
+  camera: PerspectiveCamera;
+  mesh: Mesh;
+  light: PhongLight;
+} {
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const mesh = new Mesh(geometry, material);
+  mesh.scale.set(1.2, 1, 1.2);
+  mesh.rotation.set(0.3, 0.5, 0);
+  const s = new Scene();
+  s.add(mesh, light);
+  const camera = new PerspectiveCamera(60, 1, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  s.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  return { scene: s, camera, mesh, light };
+}
+
+const renderers = new Map<Backend, Promise<WebGPURenderer>>();
+function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
+  let r = renderers.get(backend);
+  if (r === undefined) {
+    const renderer = new WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl2' });
+    r = renderer.init().then(() => renderer);
+    renderers.set(backend, r);
+  }
+  return r;
+}
+
+/** Rows bottom-up, RGBA8, linear (a render target has no output colour space conversion). */
+async function renderGpu(backend: Backend, v: Variant) {
+  const renderer = await gpuRenderer(backend);
+  const material = new ShadingNodeMaterial({ ...v, lights: [] });
+  const setup = scene(material);
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  renderer.setRenderTarget(target);
+  renderer.setClearColor(0x0000ff, 1);
+  renderer.clear();
+  renderer.render(setup.scene, setup.camera);
+  const data = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+  renderer.setRenderTarget(null);
+  target.dispose();
+  material.dispose();
+  // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL): flip to bottom-up.
+  const pixels = new Uint8Array(data);
+  if ((renderer.backend as unknown as { isWebGPUBackend?: boolean }).isWebGPUBackend === true) {
+    const row = 4 * SIZE;
+    for (let y = 0; y < SIZE; y++) pixels.set(data.subarray((SIZE - 1 - y) * row, (SIZE - y) * row), y * row);
+  }
+  return { pixels, setup, material, backend: renderer.backend };
+}
+
+let gl: WebGLRenderer | null = null;
+function renderGl(v: Variant): Uint8Array {
+  gl ??= new WebGLRenderer({ antialias: false });
+  const material = new ShadingMaterial(v);
+  const setup = scene(material);
+  const target = new WebGLRenderTarget(SIZE, SIZE);
+  gl.setRenderTarget(target);
+  gl.setClearColor(0x0000ff, 1);
+  gl.clear();
+  gl.render(setup.scene, setup.camera);
+  const pixels = new Uint8Array(4 * SIZE * SIZE);
+  gl.readRenderTargetPixels(target, 0, 0, SIZE, SIZE, pixels);
+  gl.setRenderTarget(null);
+  target.dispose();
+  material.dispose();
+  return pixels;
+}
+
+/** Which backend runs and what the adapter is: proof that WebGPU is not a silent fallback to WebGL2. */
+async function backendInfo(backend: Backend) {
+  const renderer = await gpuRenderer(backend);
+  const b = renderer.backend as unknown as {
+    isWebGPUBackend?: boolean;
+    isWebGLBackend?: boolean;
+    device?: unknown;
+  };
+  const adapter =
+    'gpu' in navigator
+      ? await (navigator as unknown as { gpu: { requestAdapter(): Promise<unknown> } }).gpu.requestAdapter()
+      : null;
+  return {
+    isWebGPUBackend: b.isWebGPUBackend === true,
+    isWebGLBackend: b.isWebGLBackend === true,
+    device: typeof GPUDevice !== 'undefined' && b.device instanceof GPUDevice,
+    adapter: adapter !== null,
+  };
+}
+
+interface Stats {
+  covered: number;
+  compared: number;
+  maxError: number;
+  mismatches: number;
+  facesChecked: number;
+  facesMultiColour: number;
+  worst: unknown;
+}
+
+/** Per pixel away from triangle edges and lighting discontinuities: |GPU − shade()| in 1/255 (linear). */
+async function compare(backend: Backend, v: Variant): Promise<Stats> {
+  const { pixels, setup } = await renderGpu(backend, v);
+  const { mesh, camera, light } = setup;
+  const positions = geometry.getAttribute('position');
+  const normals = geometry.getAttribute('normal');
+  const count = positions.count;
+  const world: Vector3[] = [];
+  const worldNormal: Vector3[] = [];
+  const nm = mesh.normalMatrix.getNormalMatrix(mesh.matrixWorld);
+  for (let i = 0; i < count; i++) {
+    world.push(new Vector3().fromBufferAttribute(positions, i).applyMatrix4(mesh.matrixWorld));
+    worldNormal.push(new Vector3().fromBufferAttribute(normals, i).applyMatrix3(nm).normalize());
+  }
+  const eye = [camera.position.x, camera.position.y, camera.position.z, 1];
+  const m: ShadeMaterial = {
+    ka: [0.6, 0.35, 0.2],
+    kd: [0.6, 0.35, 0.2],
+    ks: [0.5, 0.5, 0.5],
+    shininess: 32,
+    ...v,
+  };
+  const lightPosition = light.getWorldPosition(new Vector3()).toArray();
+  const lights: ShadeLight[] = [
+    {
+      position: lightPosition,
+      ambient: light.ambient.toArray(),
+      diffuse: light.diffuse.toArray(),
+      specular: light.specular.toArray(),
+    },
+  ];
+  // Near a cel band edge, the cel highlight edge or the terminator, float32 and float64 may round either way.
+  const atDiscontinuity = (p: Vector3, n: Vector3): boolean => {
+    if (v.celBands === 0) return false;
+    const l = new Vector3().fromArray(lightPosition).sub(p).normalize();
+    const ndl = n.clone().normalize().dot(l);
+    if (Math.abs(ndl) < 0.01) return true;
+    const scaled = Math.max(ndl, 0) * v.celBands;
+    const edge = Math.round(scaled);
+    if (Math.abs(scaled - edge) < 0.02 && edge > 0 && edge < v.celBands) return true;
+    const raw = shade(
+      { position: p.toArray(), normal: n.toArray(), eye },
+      { ...m, celBands: 0, ka: [0, 0, 0], kd: [0, 0, 0], ks: [1, 1, 1] },
+      [{ ...lights[0], ambient: [0, 0, 0], specular: [1, 1, 1] }],
+    );
+    return Math.abs(raw[0] - 0.5) < 0.02;
+  };
+  const vertexColour = world.map((p, i) =>
+    shade({ position: p.toArray(), normal: worldNormal[i].toArray(), eye }, m, lights),
+  );
+  const vertexEdge = world.map((p, i) => atDiscontinuity(p, worldNormal[i]));
+  const faces = count / 3;
+  const faceColour: number[][] = [];
+  const faceEdge: boolean[] = [];
+  for (let t = 0; t < faces; t++) {
+    const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
+    const centroid = a.clone().add(b).add(c).divideScalar(3);
+    const normal = b.clone().sub(a).cross(c.clone().sub(a));
+    faceColour.push(shade({ position: centroid.toArray(), normal: normal.toArray(), eye }, m, lights));
+    faceEdge.push(atDiscontinuity(centroid, normal));
+  }
+  const screen = world.map((p) => {
+    const s = p.clone().project(camera);
+    return new Vector2(((s.x + 1) / 2) * SIZE, ((s.y + 1) / 2) * SIZE);
+  });
+  const edgeDistance = (t: number, x: number, y: number): number => {
+    let d = Number.POSITIVE_INFINITY;
+    for (let k = 0; k < 3; k++) {
+      const p = screen[3 * t + k];
+      const q = screen[3 * t + ((k + 1) % 3)];
+      const e = q.clone().sub(p);
+      d = Math.min(d, Math.abs((x - p.x) * e.y - (y - p.y) * e.x) / e.length());
+    }
+    return d;
+  };
+  const raycaster = new Raycaster();
+  const stats: Stats = {
+    covered: 0,
+    compared: 0,
+    maxError: 0,
+    mismatches: 0,
+    facesChecked: 0,
+    facesMultiColour: 0,
+    worst: null,
+  };
+  const faceSeen = new Map<number, string>();
+  const faceMulti = new Set<number>();
+  for (let y = 0; y < SIZE; y++) {
+    for (let x = 0; x < SIZE; x++) {
+      const o = 4 * (y * SIZE + x);
+      const covered = !(pixels[o] === 0 && pixels[o + 1] === 0 && pixels[o + 2] === 255);
+      raycaster.setFromCamera(new Vector2(((x + 0.5) / SIZE) * 2 - 1, ((y + 0.5) / SIZE) * 2 - 1), camera);
+      const hit = raycaster.intersectObject(mesh)[0];
+      if (covered) stats.covered++;
+      if (hit === undefined || hit.faceIndex === undefined || hit.faceIndex === null || !hit.barycoord)
+        continue;
+      const t = hit.faceIndex;
+      if (edgeDistance(t, x + 0.5, y + 0.5) < 1.5) continue;
+      let expected: number[];
+      const bc = hit.barycoord;
+      const w = [bc.x, bc.y, bc.z];
+      if (v.shading === 'flat') {
+        if (faceEdge[t]) continue;
+        expected = faceColour[t];
+        const key = `${pixels[o]},${pixels[o + 1]},${pixels[o + 2]}`;
+        const seen = faceSeen.get(t);
+        if (seen === undefined) faceSeen.set(t, key);
+        else if (seen !== key) faceMulti.add(t);
+      } else if (v.shading === 'gouraud') {
+        if (vertexEdge[3 * t] || vertexEdge[3 * t + 1] || vertexEdge[3 * t + 2]) continue;
+        expected = [0, 1, 2].map((k) => w.reduce((s, wi, i) => s + wi * vertexColour[3 * t + i][k], 0));
+      } else {
+        const n = new Vector3();
+        for (let i = 0; i < 3; i++) n.addScaledVector(worldNormal[3 * t + i], w[i]);
+        if (atDiscontinuity(hit.point, n)) continue;
+        expected = shade({ position: hit.point.toArray(), normal: n.toArray(), eye }, m, lights);
+      }
+      stats.compared++;
+      let error = 0;
+      for (let k = 0; k < 3; k++)
+        error = Math.max(error, Math.abs(pixels[o + k] - Math.min(Math.max(expected[k], 0), 1) * 255));
+      if (error > stats.maxError) {
+        stats.maxError = error;
+        stats.worst = {
+          x,
+          y,
+          t,
+          got: Array.from(pixels.subarray(o, o + 3)),
+          expected: expected.map((e) => e * 255),
+        };
+      }
+      if (error > 2) stats.mismatches++;
+    }
+  }
+  stats.facesChecked = faceSeen.size;
+  stats.facesMultiColour = faceMulti.size;
+  return stats;
+}
+
+/** WebGLRenderer + ShadingMaterial against WebGPURenderer + ShadingNodeMaterial, same scene: max |Δ| in 1/255. */
+async function crossRenderer(backend: Backend, v: Variant) {
+  const a = renderGl(v);
+  const { pixels: b } = await renderGpu(backend, v);
+  let maxDelta = 0;
+  let differing = 0;
+  let covered = 0;
+  let coverageMismatch = 0;
+  for (let i = 0; i < a.length; i += 4) {
+    const ca = !(a[i] === 0 && a[i + 1] === 0 && a[i + 2] === 255);
+    const cb = !(b[i] === 0 && b[i + 1] === 0 && b[i + 2] === 255);
+    if (ca !== cb) coverageMismatch++;
+    if (!ca || !cb) continue;
+    covered++;
+    const d = Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2]));
+    maxDelta = Math.max(maxDelta, d);
+    if (d > 2) differing++;
+  }
+  return { covered, maxDelta, differing, coverageMismatch };
+}
+
+/** The message each material throws for the same bad input (ShadingMaterial's, ShadingNodeMaterial's). */
+function errors() {
+  const cases: Record<string, unknown>[] = [
+    { shading: 'smooth' },
+    { lighting: 'toon' },
+    { celBands: 1 },
+    { celBands: 2.5 },
+    { celBands: 256 },
+    { celBands: '4' },
+    { ka: -1 },
+    { ks: 'not a colour' },
+    { shininess: Number.NaN },
+    { shininess: -1 },
+    { lights: [{}] },
+    { lights: 'none' },
+  ];
+  const message = (make: () => unknown): string => {
+    try {
+      make();
+      return 'no error';
+    } catch (e) {
+      return `${(e as Error).constructor.name}: ${(e as Error).message}`;
+    }
+  };
+  return cases.map((options) => ({
+    options: JSON.stringify(options),
+    webgl: message(() => new ShadingMaterial(options as never)),
+    node: message(() => new ShadingNodeMaterial(options as never)),
+  }));
+}
+
+const api = { backendInfo, compare, crossRenderer, errors };
+(window as unknown as { harness: typeof api }).harness = api;
+document.body.dataset.ready = '1';

@@ -1,0 +1,128 @@
+// ShadingNodeMaterial (@shadelab/material/webgpu) under WebGPURenderer: on its WebGPU backend (Chromium launched
+// with the kit's WebGPU flags: SwiftShader's adapter) and its WebGL2 backend (forceWebGL), rendered offscreen
+// into a RenderTarget and read back; every shading × lighting × cel variant against the CPU shade(), the same
+// scene against WebGLRenderer + ShadingMaterial, and the bad-input errors against ShadingMaterial's.
+// Harness: playground/harness/webgpu-material.ts.
+import { expect, type Page, test } from '@playwright/test';
+import { shadelabUse } from '@shadelab/playwright';
+
+test.use(shadelabUse({ webgpu: true }));
+
+type Backend = 'webgpu' | 'webgl2';
+interface Variant {
+  shading: 'flat' | 'gouraud' | 'phong';
+  lighting: 'phong' | 'blinn-phong';
+  celBands: number;
+}
+interface Harness {
+  backendInfo(
+    b: Backend,
+  ): Promise<{ isWebGPUBackend: boolean; isWebGLBackend: boolean; device: boolean; adapter: boolean }>;
+  compare(
+    b: Backend,
+    v: Variant,
+  ): Promise<{
+    covered: number;
+    compared: number;
+    maxError: number;
+    mismatches: number;
+    facesChecked: number;
+    facesMultiColour: number;
+    worst: unknown;
+  }>;
+  crossRenderer(
+    b: Backend,
+    v: Variant,
+  ): Promise<{ covered: number; maxDelta: number; differing: number; coverageMismatch: number }>;
+  errors(): { options: string; webgl: string; node: string }[];
+}
+
+/** Opens the harness; returns the page errors and console errors seen (none are expected). */
+async function open(page: Page): Promise<string[]> {
+  const problems: string[] = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
+      problems.push(m.text());
+  });
+  await page.goto('/harness/webgpu-material.html');
+  await page.waitForFunction(() => document.body.dataset.ready === '1');
+  return problems;
+}
+
+const VARIANTS: Variant[] = (['flat', 'gouraud', 'phong'] as const).flatMap((shading) =>
+  (['phong', 'blinn-phong'] as const).flatMap((lighting) =>
+    [0, 4].map((celBands) => ({ shading, lighting, celBands })),
+  ),
+);
+
+test('WebGPURenderer runs the WebGPU backend on a WebGPU device (no silent WebGL2 fallback), and forceWebGL the WebGL2 one', async ({
+  page,
+}) => {
+  await open(page);
+  expect(
+    await page.evaluate(() => (window as never as { harness: Harness }).harness.backendInfo('webgpu')),
+  ).toEqual({ isWebGPUBackend: true, isWebGLBackend: false, device: true, adapter: true });
+  const webgl2 = await page.evaluate(() =>
+    (window as never as { harness: Harness }).harness.backendInfo('webgl2'),
+  );
+  expect(webgl2.isWebGPUBackend).toBe(false);
+  expect(webgl2.isWebGLBackend).toBe(true);
+});
+
+for (const backend of ['webgpu', 'webgl2'] as const) {
+  test(`${backend} backend: every shading × lighting × cel variant = shade() within 2/255 away from edges; flat is one colour per face`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    for (const variant of VARIANTS) {
+      const stats = await page.evaluate(
+        ([b, v]) => (window as never as { harness: Harness }).harness.compare(b, v),
+        [backend, variant] as const,
+      );
+      const label = `${backend} ${JSON.stringify(variant)} ${JSON.stringify(stats.worst)}`;
+      expect(stats.compared, label).toBeGreaterThan(2000);
+      expect(stats.mismatches, label).toBe(0);
+      expect(stats.maxError, label).toBeLessThanOrEqual(2);
+      if (variant.shading === 'flat') {
+        expect(stats.facesChecked, label).toBeGreaterThan(40);
+        expect(stats.facesMultiColour, label).toBe(0);
+      }
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: the lecture scene = WebGLRenderer + ShadingMaterial within 2/255, same coverage`, async ({
+    page,
+  }) => {
+    const problems = await open(page);
+    for (const variant of [
+      { shading: 'phong', lighting: 'phong', celBands: 0 },
+      { shading: 'gouraud', lighting: 'blinn-phong', celBands: 4 },
+      { shading: 'flat', lighting: 'phong', celBands: 0 },
+    ] as const) {
+      const stats = await page.evaluate(
+        ([b, v]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v),
+        [backend, variant] as const,
+      );
+      const label = `${backend} ${JSON.stringify(variant)}`;
+      expect(stats.covered, label).toBeGreaterThan(5000);
+      expect(stats.coverageMismatch, label).toBe(0);
+      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+    }
+    expect(problems).toEqual([]);
+  });
+}
+
+test("bad input throws ShadingMaterial's errors (same class, same message but for the material's name)", async ({
+  page,
+}) => {
+  await open(page);
+  const rows = await page.evaluate(() => (window as never as { harness: Harness }).harness.errors());
+  expect(rows.length).toBeGreaterThan(10);
+  for (const row of rows) {
+    expect(row.webgl, row.options).toMatch(/^(TypeError|RangeError): ShadingMaterial\./);
+    expect(row.node.replace('ShadingNodeMaterial.', 'ShadingMaterial.'), row.options).toBe(row.webgl);
+  }
+});
