@@ -9,6 +9,7 @@ import { shadelabUse } from '@shadelab/playwright';
 test.use(shadelabUse({ webgpu: true }));
 
 type Backend = 'webgpu' | 'webgl2';
+type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic';
 interface Variant {
   shading: 'flat' | 'gouraud' | 'phong';
   lighting: 'phong' | 'blinn-phong';
@@ -21,6 +22,7 @@ interface Harness {
   compare(
     b: Backend,
     v: Variant,
+    scenario?: Scenario,
   ): Promise<{
     covered: number;
     compared: number;
@@ -88,6 +90,32 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       if (variant.shading === 'flat') {
         expect(stats.facesChecked, label).toBeGreaterThan(40);
         expect(stats.facesMultiColour, label).toBe(0);
+      }
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: three's ambient, hemisphere, directional and point lights, an attenuated PhongLight with shininess 0 (0⁰ = 1), a sphere without normals = shade() within 2/255`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    const cases: [Scenario, Variant[]][] = [
+      ['three-lights', VARIANTS],
+      ['attenuated', VARIANTS.filter((v) => v.celBands === 0)],
+      ['analytic', VARIANTS.filter((v) => v.shading !== 'flat' && v.lighting === 'blinn-phong')],
+    ];
+    for (const [scenario, variants] of cases) {
+      for (const variant of variants) {
+        const stats = await page.evaluate(
+          ([b, v, sc]) => (window as never as { harness: Harness }).harness.compare(b, v, sc),
+          [backend, variant, scenario] as const,
+        );
+        const label = `${backend} ${scenario} ${JSON.stringify(variant)} ${JSON.stringify(stats.worst)}`;
+        expect(stats.compared, label).toBeGreaterThan(2000);
+        expect(stats.mismatches, label).toBe(0);
+        expect(stats.maxError, label).toBeLessThanOrEqual(2);
+        if (variant.shading === 'flat') expect(stats.facesMultiColour, label).toBe(0);
       }
     }
     expect(problems).toEqual([]);

@@ -2,14 +2,27 @@
 // with forceWebGL, its WebGL2 backend), rendered offscreen into a RenderTarget (presenting to a WebGPU canvas
 // headless loses the device) and read back; compared with shade() per pixel and with ShadingMaterial under
 // WebGLRenderer.
-import { PhongLight, type ShadeLight, type ShadeMaterial, ShadingMaterial, shade } from '@shadelab/material';
+import {
+  PhongLight,
+  type ShadeLight,
+  type ShadeMaterial,
+  type ShadeThreeLight,
+  ShadingMaterial,
+  shade,
+} from '@shadelab/material';
 import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
+  AmbientLight,
   type BufferGeometry,
+  Color,
+  DirectionalLight,
+  HemisphereLight,
+  type Light,
   type Material,
   Mesh,
   PerspectiveCamera,
+  PointLight,
   Raycaster,
   Scene,
   Vector2,
@@ -27,6 +40,12 @@ export interface Variant {
   celBands: number;
 }
 export type Backend = 'webgpu' | 'webgl2';
+/**
+ * The lights and the geometry: 'lecture' (one PhongLight, the lecture's), 'attenuated' (a near coloured
+ * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
+ * directional and point lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals).
+ */
+export type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic';
 
 const SIZE = 128;
 const geometry: BufferGeometry = new SubdivisionSphereGeometry({
@@ -34,27 +53,97 @@ const geometry: BufferGeometry = new SubdivisionSphereGeometry({
   base: 'tetrahedron',
   indexed: false,
 });
+const bareGeometry: BufferGeometry = new SubdivisionSphereGeometry({
+  level: 3,
+  base: 'tetrahedron',
+  indexed: false,
+  normals: 'none',
+});
 
-function scene(material: Material): {
+/** three's lights of the 'three-lights' scenario, with what shade() is given for each. */
+function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
+  const ambient = new AmbientLight(new Color(0.3, 0.25, 0.2), 0.5);
+  const hemisphere = new HemisphereLight(new Color(0.2, 0.3, 0.5), new Color(0.3, 0.2, 0.1), 0.8);
+  hemisphere.position.set(0.3, 1, 0.2);
+  const directional = new DirectionalLight(new Color(1, 0.95, 0.9), 0.8);
+  directional.position.set(-1, 2, 3);
+  const point = new PointLight(new Color(0.9, 0.9, 1), 4, 0, 2);
+  point.position.set(2, 1, 2);
+  const scaled = (c: Color, i: number) => [c.r * i, c.g * i, c.b * i];
+  return {
+    lights: [ambient, hemisphere, directional, point],
+    shade: [
+      { type: 'ambient', color: scaled(ambient.color, ambient.intensity) },
+      {
+        type: 'hemisphere',
+        color: scaled(hemisphere.color, hemisphere.intensity),
+        groundColor: scaled(hemisphere.groundColor, hemisphere.intensity),
+        direction: hemisphere.position.clone().normalize().toArray(),
+      },
+      {
+        type: 'directional',
+        color: scaled(directional.color, directional.intensity),
+        direction: directional.position.clone().normalize().toArray(),
+      },
+      {
+        type: 'point',
+        color: scaled(point.color, point.intensity),
+        position: point.position.toArray(),
+        distance: 0,
+        decay: 2,
+      },
+    ],
+  };
+}
+
+function scene(
+  material: Material,
+  scenario: Scenario = 'lecture',
+): {
   scene: Scene;
   camera: PerspectiveCamera;
   mesh: Mesh;
-  light: PhongLight;
+  lights: (ShadeLight | ShadeThreeLight)[];
 } {
-  const light = new PhongLight();
-  light.position.set(-5, 10, 20);
-  const mesh = new Mesh(geometry, material);
+  const mesh = new Mesh(scenario === 'analytic' ? bareGeometry : geometry, material);
   mesh.scale.set(1.2, 1, 1.2);
   mesh.rotation.set(0.3, 0.5, 0);
   const s = new Scene();
-  s.add(mesh, light);
+  s.add(mesh);
+  let lights: (ShadeLight | ShadeThreeLight)[];
+  if (scenario === 'three-lights') {
+    const three = threeLights();
+    s.add(...three.lights);
+    lights = three.shade;
+  } else {
+    const light = new PhongLight();
+    light.position.set(-5, 10, 20);
+    if (scenario === 'attenuated') {
+      light.position.set(-2, 3, 4);
+      light.diffuse = [1, 0.9, 0.7];
+      light.specular = [0.6, 0.7, 0.9];
+      light.attenuation = { a: 0.5, b: 0.2, c: 0.05 };
+    }
+    s.add(light);
+    lights = [
+      {
+        position: light.position.toArray(),
+        ambient: light.ambient.toArray(),
+        diffuse: light.diffuse.toArray(),
+        specular: light.specular.toArray(),
+        attenuation: light.attenuation,
+      },
+    ];
+  }
   const camera = new PerspectiveCamera(60, 1, 0.1, 10);
   camera.position.set(0, 0, 3);
   camera.lookAt(0, 0, 0);
   s.updateMatrixWorld();
   camera.updateMatrixWorld();
-  return { scene: s, camera, mesh, light };
+  return { scene: s, camera, mesh, lights };
 }
+
+const shininessOf = (scenario: Scenario): number => (scenario === 'attenuated' ? 0 : 32);
 
 const renderers = new Map<Backend, Promise<WebGPURenderer>>();
 function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
@@ -68,10 +157,10 @@ function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
 }
 
 /** Rows bottom-up, RGBA8, linear (a render target has no output colour space conversion). */
-async function renderGpu(backend: Backend, v: Variant) {
+async function renderGpu(backend: Backend, v: Variant, scenario: Scenario = 'lecture') {
   const renderer = await gpuRenderer(backend);
-  const material = new ShadingNodeMaterial({ ...v, lights: [] });
-  const setup = scene(material);
+  const material = new ShadingNodeMaterial({ ...v, shininess: shininessOf(scenario), lights: [] });
+  const setup = scene(material, scenario);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
   renderer.setRenderTarget(target);
   renderer.setClearColor(0x0000ff, 1);
@@ -139,11 +228,12 @@ interface Stats {
 }
 
 /** Per pixel away from triangle edges and lighting discontinuities: |GPU − shade()| in 1/255 (linear). */
-async function compare(backend: Backend, v: Variant): Promise<Stats> {
-  const { pixels, setup } = await renderGpu(backend, v);
-  const { mesh, camera, light } = setup;
+async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lecture'): Promise<Stats> {
+  const { pixels, setup } = await renderGpu(backend, v, scenario);
+  const { mesh, camera, lights } = setup;
   const positions = geometry.getAttribute('position');
-  const normals = geometry.getAttribute('normal');
+  // The analytic sphere's normal is its position.
+  const normals = scenario === 'analytic' ? positions : geometry.getAttribute('normal');
   const count = positions.count;
   const world: Vector3[] = [];
   const worldNormal: Vector3[] = [];
@@ -157,33 +247,43 @@ async function compare(backend: Backend, v: Variant): Promise<Stats> {
     ka: [0.6, 0.35, 0.2],
     kd: [0.6, 0.35, 0.2],
     ks: [0.5, 0.5, 0.5],
-    shininess: 32,
+    shininess: shininessOf(scenario),
     ...v,
   };
-  const lightPosition = light.getWorldPosition(new Vector3()).toArray();
-  const lights: ShadeLight[] = [
-    {
-      position: lightPosition,
-      ambient: light.ambient.toArray(),
-      diffuse: light.diffuse.toArray(),
-      specular: light.specular.toArray(),
-    },
-  ];
-  // Near a cel band edge, the cel highlight edge or the terminator, float32 and float64 may round either way.
+  // Near a cel band edge, the cel highlight edge or the terminator (where the specular jumps: cel, or 0⁰ = 1),
+  // float32 and float64 may round either way: for each light (a directional one as a far point light).
+  const toLight = (light: ShadeLight | ShadeThreeLight, p: Vector3): Vector3 | null => {
+    if ('type' in light) {
+      if (light.type === 'directional') return new Vector3().fromArray(light.direction ?? [0, 1, 0]);
+      if (light.type === 'point')
+        return new Vector3()
+          .fromArray(light.position ?? [0, 0, 0])
+          .sub(p)
+          .normalize();
+      return null;
+    }
+    return new Vector3().fromArray(light.position).sub(p).normalize();
+  };
   const atDiscontinuity = (p: Vector3, n: Vector3): boolean => {
-    if (v.celBands === 0) return false;
-    const l = new Vector3().fromArray(lightPosition).sub(p).normalize();
-    const ndl = n.clone().normalize().dot(l);
-    if (Math.abs(ndl) < 0.01) return true;
-    const scaled = Math.max(ndl, 0) * v.celBands;
-    const edge = Math.round(scaled);
-    if (Math.abs(scaled - edge) < 0.02 && edge > 0 && edge < v.celBands) return true;
-    const raw = shade(
-      { position: p.toArray(), normal: n.toArray(), eye },
-      { ...m, celBands: 0, ka: [0, 0, 0], kd: [0, 0, 0], ks: [1, 1, 1] },
-      [{ ...lights[0], ambient: [0, 0, 0], specular: [1, 1, 1] }],
-    );
-    return Math.abs(raw[0] - 0.5) < 0.02;
+    if (v.celBands === 0 && m.shininess !== 0) return false;
+    for (const light of lights) {
+      const l = toLight(light, p);
+      if (l === null) continue;
+      const ndl = n.clone().normalize().dot(l);
+      if (Math.abs(ndl) < 0.01) return true;
+      if (v.celBands === 0) continue;
+      const scaled = Math.max(ndl, 0) * v.celBands;
+      const edge = Math.round(scaled);
+      if (Math.abs(scaled - edge) < 0.02 && edge > 0 && edge < v.celBands) return true;
+      const far = p.clone().addScaledVector(l, 1e6).toArray();
+      const raw = shade(
+        { position: p.toArray(), normal: n.toArray(), eye },
+        { ...m, celBands: 0, ka: [0, 0, 0], kd: [0, 0, 0], ks: [1, 1, 1] },
+        [{ position: far, ambient: [0, 0, 0], diffuse: [0, 0, 0], specular: [1, 1, 1] }],
+      );
+      if (Math.abs(raw[0] - 0.5) < 0.02) return true;
+    }
+    return false;
   };
   const vertexColour = world.map((p, i) =>
     shade({ position: p.toArray(), normal: worldNormal[i].toArray(), eye }, m, lights),

@@ -1,12 +1,14 @@
 // ShadingMaterial's shading on three's WebGPURenderer (both of its backends): a node material with a lighting
 // model of the lecture's equation, PhongLights as light nodes beside three's own lights.
 import {
+  cameraViewMatrix,
   float,
   ivec2,
   lightingContext,
   lightViewPosition,
   max,
   min,
+  mix,
   modelViewMatrix,
   normalLocal,
   normalView,
@@ -140,6 +142,29 @@ class LectureLightingModel extends LightingModel {
     private readonly uniforms: { ka: N; kd: N; ks: N; shininess: N },
   ) {
     super();
+  }
+
+  /**
+   * three's lights (and the PhongLights, as material lightings), then the ambient. Hemisphere lights are
+   * evaluated here with the variant's normal: three's hemisphere node reads three's normalWorld, which the
+   * vertex stage (gouraud, flat) cannot give (no front-facing test there) and which is not the face's normal.
+   */
+  override start(builder: N): void {
+    const lightsNode = builder.lightsNode;
+    const nodes: N[] = lightsNode.getLightNodes(builder);
+    const hemispheres = nodes.filter((node) => node.light?.isHemisphereLight === true);
+    lightsNode.setupLights(
+      builder,
+      nodes.filter((node) => !hemispheres.includes(node)),
+    );
+    for (const node of hemispheres) {
+      // Registered for its per-frame update (colours, direction); its own setup is not built.
+      builder.addNode(node);
+      const direction = (cameraViewMatrix as N).mul(vec4(node.lightDirectionNode, 0)).xyz;
+      const weight = this.surface.n.dot(direction).mul(0.5).add(0.5);
+      builder.context.irradiance.addAssign(mix(node.groundColorNode, node.colorNode, weight));
+    }
+    this.indirect(builder);
   }
 
   override direct(data: N): void {
