@@ -29,6 +29,32 @@ import {
   surfaceFragmentPars,
   surfaceVertexPars,
 } from './shadingChunks.glsl.js';
+import {
+  shadowFeatures,
+  shadowFragmentPars,
+  shadowTermsCopy,
+  shadowTermsFragment,
+  shadowVertex,
+  shadowVertexPars,
+} from './shadowChunks.glsl.js';
+
+// Shadows of three's lights (shadowChunks.glsl.ts): applied in the light loop where the lighting is per fragment,
+// recorded per light where it is per vertex or face, and then shadowed per fragment.
+const shadowStages = /* glsl */ `
+${shadowFeatures}
+#ifdef SHADING_SHADOWS
+#if defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES )
+#define SHADING_SHADOW_FACTOR
+#else
+#define SHADING_SHADOW_TERMS
+#endif
+#if defined( SHADING_FLAT ) && ! defined( FLAT_DERIVATIVES )
+#define SHADING_INTERPOLATION flat
+#else
+#define SHADING_INTERPOLATION
+#endif
+#endif
+`;
 
 /** Vertex stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights (see {@link withLightCount}). */
 export const vertexShader = /* glsl */ `
@@ -43,6 +69,8 @@ ${sceneFeatures}
 ${surfaceVertexPars}
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
 ${instanceChunk}
+${shadowStages}
+${shadowVertexPars}
 
 #if defined(SHADING_FLAT) && !defined(FLAT_DERIVATIVES)
 flat out vec3 vColor;
@@ -149,7 +177,9 @@ ${flatDeformVertex}
   vec3 backSpecular = shadingSpecular;
 #endif
 #ifdef DOUBLE_SIDED
+${shadowTermsCopy('Back')}
   vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
+${shadowTermsCopy('')}
   vColorBack = backColor;
 #ifdef SHADING_SPLIT
   vSpecular = shadingSpecular;
@@ -157,12 +187,14 @@ ${flatDeformVertex}
 #endif
 #else
   vColor = backColor;
+${shadowTermsCopy('')}
 #ifdef SHADING_SPLIT
   vSpecular = backSpecular;
 #endif
 #endif
 #else
   vColor = shadeColor(faceCentre, shadingNormalMatrix * faceNormal);
+${shadowTermsCopy('')}
 #ifdef SHADING_SPLIT
   vSpecular = shadingSpecular;
 #endif
@@ -200,7 +232,9 @@ ${flatDeformVertex}
   vec3 backSpecular = shadingSpecular;
 #endif
 #ifdef DOUBLE_SIDED
+${shadowTermsCopy('Back')}
   vColor = shadeColor(worldPosition, worldNormal);
+${shadowTermsCopy('')}
   vColorBack = backColor;
 #ifdef SHADING_SPLIT
   vSpecular = shadingSpecular;
@@ -208,12 +242,14 @@ ${flatDeformVertex}
 #endif
 #else
   vColor = backColor;
+${shadowTermsCopy('')}
 #ifdef SHADING_SPLIT
   vSpecular = backSpecular;
 #endif
 #endif
 #elif defined(SHADING_GOURAUD)
   vColor = shadeColor(worldPosition, worldNormal);
+${shadowTermsCopy('')}
 #ifdef SHADING_SPLIT
   vSpecular = shadingSpecular;
 #endif
@@ -225,6 +261,17 @@ ${flatDeformVertex}
   vWorldPosition = worldPosition;
 #endif
 #endif
+#ifdef SHADING_SHADOWS
+#if defined( SHADING_FLAT ) && ! defined( FLAT_DERIVATIVES )
+#define SHADING_SHADOW_NORMAL ( shadingNormalMatrix * faceNormal )
+#elif defined( FLAT_DERIVATIVES )
+#undef HAS_NORMAL // no vertex normal: three's normalBias is not applied
+#define SHADING_SHADOW_NORMAL vec3( 0.0 )
+#else
+#define SHADING_SHADOW_NORMAL worldNormal
+#endif
+#endif
+${shadowVertex}
 }
 `;
 
@@ -235,6 +282,8 @@ export const fragmentShader = /* glsl */ `
 #include <clipping_planes_pars_fragment>
 ${sceneFeatures}
 ${surfaceFragmentPars}
+${shadowStages}
+${shadowFragmentPars}
 #if defined(SHADING_FLAT) && !defined(FLAT_DERIVATIVES)
 flat in vec3 vColor;
 #ifdef DOUBLE_SIDED
@@ -316,6 +365,7 @@ ${normalMapFragment}
   color = color * diffuseColor.rgb + vSpecular;
 #endif
 #endif
+${shadowTermsFragment}
 ${emissiveFragment}
 #if defined( SHADING_SURFACE ) && ! defined( OPAQUE )
   gl_FragColor = vec4(color, diffuseColor.a);

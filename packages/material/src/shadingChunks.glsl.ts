@@ -5,6 +5,8 @@
 // chunk here compiles to nothing unless its feature is on, so a scene without them compiles the same code as
 // before (tests/material-scene.spec.ts checks the active lines of every lecture program).
 
+import { shadowedLight, shadowLightMacros } from './shadowChunks.glsl.js';
+
 /**
  * Which of three's scene features this draw uses, from the USE_* macros three defines per program:
  * - `SHADING_SCENE` (vertex): the vertex goes through three's chunks (`transformed`, `mvPosition`);
@@ -13,7 +15,7 @@
  * - `SHADING_TINT`: an instance (or batch) colour, a vertex colour or a texel of `map` multiplies ka and kd.
  */
 export const sceneFeatures = /* glsl */ `
-#if defined( USE_INSTANCING ) || defined( USE_BATCHING ) || defined( USE_SKINNING ) || defined( USE_MORPHTARGETS ) || defined( USE_FOG ) || NUM_CLIPPING_PLANES > 0
+#if defined( USE_INSTANCING ) || defined( USE_BATCHING ) || defined( USE_SKINNING ) || defined( USE_MORPHTARGETS ) || defined( USE_FOG ) || NUM_CLIPPING_PLANES > 0 || defined( USE_SHADOWMAP )
 #define SHADING_SCENE
 #endif
 #if defined( USE_INSTANCING ) || defined( USE_BATCHING )
@@ -200,6 +202,7 @@ uniform vec3 shadingKa, shadingKd, shadingKs;
 #ifndef SHADING_TINT
 #define shadingTint 1.0
 #endif
+${shadowLightMacros}
 vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
   float d = dot(n, l);
 #ifdef LIGHTING_BLINN
@@ -225,32 +228,49 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
   p = (viewMatrix * vec4(p, 1.0)).xyz;
   n = normalize((viewMatrix * vec4(n, 0.0)).xyz);
   v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
-  vec3 c = ambientLightColor, l;
+  vec3 c = ambientLightColor, l, term;
   float t;
 #if NUM_HEMI_LIGHTS > 0
   for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
 #endif
   c *= shadingKa * shadingTint;
+  // Unrolled, as three's own light loops are (cheaper, and a shadow map array needs a constant index). A
+  // shadow-casting light's term is shadowed per fragment (see shadowChunks.glsl.ts).
 #if NUM_DIR_LIGHTS > 0
-  for (int i = 0; i < NUM_DIR_LIGHTS; i++) c += threeDirect(n, v, directionalLights[i].direction, directionalLights[i].color);
+  #pragma unroll_loop_start
+  for ( int i = 0; i < NUM_DIR_LIGHTS; i ++ ) {
+    SHADING_SHADOW_BEGIN
+    term = threeDirect( n, v, directionalLights[ i ].direction, directionalLights[ i ].color );
+${shadowedLight('Dir')}
+    c += term;
+  }
+  #pragma unroll_loop_end
 #endif
 #if NUM_POINT_LIGHTS > 0
-  for (int i = 0; i < NUM_POINT_LIGHTS; i++) {
-    PointLight q = pointLights[i];
-    l = q.position - p;
-    t = length(l);
+  #pragma unroll_loop_start
+  for ( int i = 0; i < NUM_POINT_LIGHTS; i ++ ) {
+    l = pointLights[ i ].position - p;
+    t = length( l );
     l = t > 0.0 ? l / t : n;
-    c += threeDirect(n, v, l, q.color * getDistanceAttenuation(t, q.distance, q.decay));
+    SHADING_SHADOW_BEGIN
+    term = threeDirect( n, v, l, pointLights[ i ].color * getDistanceAttenuation( t, pointLights[ i ].distance, pointLights[ i ].decay ) );
+${shadowedLight('Point')}
+    c += term;
   }
+  #pragma unroll_loop_end
 #endif
 #if NUM_SPOT_LIGHTS > 0
-  for (int i = 0; i < NUM_SPOT_LIGHTS; i++) {
-    SpotLight q = spotLights[i];
-    l = q.position - p;
-    t = length(l);
+  #pragma unroll_loop_start
+  for ( int i = 0; i < NUM_SPOT_LIGHTS; i ++ ) {
+    l = spotLights[ i ].position - p;
+    t = length( l );
     l = t > 0.0 ? l / t : n;
-    c += threeDirect(n, v, l, q.color * getSpotAttenuation(q.coneCos, q.penumbraCos, dot(l, q.direction)) * getDistanceAttenuation(t, q.distance, q.decay));
+    SHADING_SHADOW_BEGIN
+    term = threeDirect( n, v, l, spotLights[ i ].color * getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * getDistanceAttenuation( t, spotLights[ i ].distance, spotLights[ i ].decay ) );
+${shadowedLight('Spot')}
+    c += term;
   }
+  #pragma unroll_loop_end
 #endif
   return c;
 }
