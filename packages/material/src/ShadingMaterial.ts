@@ -191,7 +191,8 @@ const _eye = /* @__PURE__ */ new Vector4();
  * DirectionalLight, SpotLight) light it through the same equation with three's light uniforms: Id = Is =
  * colour × intensity, three's distance and cone falloff in place of the attenuation, ambient and hemisphere
  * lights as Ia (see `ShadeThreeLight`); compiled only when the scene has one of three's lights (the scene is
- * searched once per frame). three's surface properties by their names, through three's chunks, each compiled
+ * searched once per frame); with `receiveShadow`, three's shadow factor multiplies each shadow-casting light's
+ * term per fragment in every shading. three's surface properties by their names, through three's chunks, each compiled
  * only when set: `map` and `vertexColors` multiply ka and kd (never ks), `emissive` (× `emissiveMap`) is added
  * outside the lighting, alpha is `opacity` × map alpha × vertex alpha × `alphaMap` green (blended when
  * `transparent`, discarded below `alphaTest`), and `normalMap` perturbs the normal in phong shading.

@@ -54,7 +54,10 @@ export interface ShadeLight {
 export interface ShadeThreeLight {
   /** Which of three's lights. */
   readonly type: 'ambient' | 'hemisphere' | 'directional' | 'point' | 'spot';
-  /** Colour × intensity, linear RGB (a hemisphere light's sky colour × intensity). */
+  /**
+   * Colour × intensity, linear RGB (a hemisphere light's sky colour × intensity). A point in the light's shadow
+   * takes its colour × three's shadow factor (1 − `shadow.intensity` in full shadow), as `ShadingMaterial` does.
+   */
   readonly color: Vec3Like;
   /** World position (point, spot). @default [0, 0, 0] */
   readonly position?: Vec3Like;
