@@ -18,9 +18,13 @@ import {
   Color,
   DirectionalLight,
   HemisphereLight,
+  InstancedMesh,
   type Light,
   type Material,
+  Matrix3,
+  Matrix4,
   Mesh,
+  Object3D,
   PerspectiveCamera,
   PointLight,
   Raycaster,
@@ -43,15 +47,22 @@ export type Backend = 'webgpu' | 'webgl2';
 /**
  * The lights and the geometry: 'lecture' (one PhongLight, the lecture's), 'attenuated' (a near coloured
  * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
- * directional and point lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals).
+ * directional and point lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals),
+ * 'indexed' (an indexed sphere: flat shading by derivatives) and 'instanced' (one instance of an InstancedMesh
+ * carrying the transform: flat shading by derivatives).
  */
-export type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic';
+export type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic' | 'indexed' | 'instanced';
 
 const SIZE = 128;
 const geometry: BufferGeometry = new SubdivisionSphereGeometry({
   level: 3,
   base: 'tetrahedron',
   indexed: false,
+});
+const indexedGeometry: BufferGeometry = new SubdivisionSphereGeometry({
+  level: 3,
+  base: 'tetrahedron',
+  indexed: true,
 });
 const bareGeometry: BufferGeometry = new SubdivisionSphereGeometry({
   level: 3,
@@ -105,9 +116,22 @@ function scene(
   mesh: Mesh;
   lights: (ShadeLight | ShadeThreeLight)[];
 } {
-  const mesh = new Mesh(scenario === 'analytic' ? bareGeometry : geometry, material);
-  mesh.scale.set(1.2, 1, 1.2);
-  mesh.rotation.set(0.3, 0.5, 0);
+  const transform = new Object3D();
+  transform.scale.set(1.2, 1, 1.2);
+  transform.rotation.set(0.3, 0.5, 0);
+  transform.updateMatrix();
+  let mesh: Mesh;
+  if (scenario === 'instanced') {
+    const instanced = new InstancedMesh(geometry, material, 1);
+    instanced.setMatrixAt(0, transform.matrix);
+    mesh = instanced;
+  } else {
+    mesh = new Mesh(
+      scenario === 'analytic' ? bareGeometry : scenario === 'indexed' ? indexedGeometry : geometry,
+      material,
+    );
+    mesh.applyMatrix4(transform.matrix);
+  }
   const s = new Scene();
   s.add(mesh);
   let lights: (ShadeLight | ShadeThreeLight)[];
@@ -231,15 +255,29 @@ interface Stats {
 async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lecture'): Promise<Stats> {
   const { pixels, setup } = await renderGpu(backend, v, scenario);
   const { mesh, camera, lights } = setup;
-  const positions = geometry.getAttribute('position');
+  // Triangle k of the indexed sphere is triangle k of its soup.
+  const positions = (scenario === 'indexed' ? indexedGeometry.toNonIndexed() : geometry).getAttribute(
+    'position',
+  );
+  // Flat shading by derivatives: per fragment, the face normal at the fragment's position.
+  const perFragmentFlat = scenario === 'indexed' || scenario === 'instanced';
+  const matrix = mesh.matrixWorld.clone();
+  if (mesh instanceof InstancedMesh) {
+    const instance = new Matrix4();
+    mesh.getMatrixAt(0, instance);
+    matrix.multiply(instance);
+  }
   // The analytic sphere's normal is its position.
-  const normals = scenario === 'analytic' ? positions : geometry.getAttribute('normal');
+  const normals =
+    scenario === 'analytic'
+      ? positions
+      : (scenario === 'indexed' ? indexedGeometry.toNonIndexed() : geometry).getAttribute('normal');
   const count = positions.count;
   const world: Vector3[] = [];
   const worldNormal: Vector3[] = [];
-  const nm = mesh.normalMatrix.getNormalMatrix(mesh.matrixWorld);
+  const nm = new Matrix3().getNormalMatrix(matrix);
   for (let i = 0; i < count; i++) {
-    world.push(new Vector3().fromBufferAttribute(positions, i).applyMatrix4(mesh.matrixWorld));
+    world.push(new Vector3().fromBufferAttribute(positions, i).applyMatrix4(matrix));
     worldNormal.push(new Vector3().fromBufferAttribute(normals, i).applyMatrix3(nm).normalize());
   }
   const eye = [camera.position.x, camera.position.y, camera.position.z, 1];
@@ -339,7 +377,12 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
       let expected: number[];
       const bc = hit.barycoord;
       const w = [bc.x, bc.y, bc.z];
-      if (v.shading === 'flat') {
+      if (v.shading === 'flat' && perFragmentFlat) {
+        const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
+        const normal = b.clone().sub(a).cross(c.clone().sub(a));
+        if (atDiscontinuity(hit.point, normal)) continue;
+        expected = shade({ position: hit.point.toArray(), normal: normal.toArray(), eye }, m, lights);
+      } else if (v.shading === 'flat') {
         if (faceEdge[t]) continue;
         expected = faceColour[t];
         const key = `${pixels[o]},${pixels[o + 1]},${pixels[o + 2]}`;

@@ -275,8 +275,9 @@ function scenePhongLights(scene: Object3D | null | undefined): PhongLight[] {
  * Shading: `'phong'` per fragment; `'gouraud'` in the vertex stage, colours interpolated; `'flat'` once per face
  * at its centroid with its face normal when the geometry is non-indexed (each vertex of a triangle reads its
  * three corners from a float texture and computes the same colour, so the provoking vertex, the first on WebGPU
- * and the last on WebGL2, does not matter: exactly one colour per face on both), else per fragment with the face
- * normal from screen-space derivatives (as three's `flatShading`). A geometry without `normal` that is a sphere
+ * and the last on WebGL2, does not matter: exactly one colour per face on both), else (an indexed geometry, an
+ * instanced, batched, skinned or morphed mesh) per fragment with the face normal from screen-space derivatives
+ * (as three's `flatShading`). A geometry without `normal` that is a sphere
  * centred at its origin (`SubdivisionSphereGeometry` or `userData.isSphere`) uses normal = position.
  *
  * The variant (shading, lighting, cel bands, the lights) is compiled in; changing it through the setters
@@ -458,7 +459,15 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const n = unitOr(transformNormalToView(localNormal), v);
       return varying(light({ n, v }));
     }
-    if (geometry.index === null) {
+    const object = builder.object ?? {};
+    // The corner texture holds rest positions: an instanced, batched, skinned or morphed mesh is drawn by
+    // derivatives, whose positions are the ones three moved.
+    const deformed =
+      object.isInstancedMesh === true ||
+      object.isBatchedMesh === true ||
+      object.isSkinnedMesh === true ||
+      geometry.morphAttributes.position !== undefined;
+    if (geometry.index === null && !deformed) {
       // Every vertex of a triangle reads the triangle's three corners and lights its centroid: the same colour
       // from whichever vertex provokes.
       const texture = faceTexture(geometry);
