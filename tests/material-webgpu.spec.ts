@@ -37,6 +37,7 @@ interface Harness {
     v: Variant,
   ): Promise<{ covered: number; maxDelta: number; differing: number; coverageMismatch: number }>;
   errors(): { options: string; webgl: string; node: string }[];
+  inPlaceEdits(b: Backend): Promise<{ errors: string[]; sameAsFirst: boolean; index: number }[]>;
 }
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
@@ -124,6 +125,28 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       }
     }
     expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: ka or a PhongLight edited in place to a bad value is reported once and drawn with the last valid values`, async ({
+    page,
+  }) => {
+    await open(page);
+    const frames = await page.evaluate(
+      (b) => (window as never as { harness: Harness }).harness.inPlaceEdits(b),
+      backend,
+    );
+    expect(frames.map((f) => f.errors)).toEqual([
+      [],
+      [
+        'ShadingNodeMaterial.ka must have finite channels ≥ 0 (linear RGB), got Color(NaN, 0.35, 0.2) (edited in place; drawing with the last valid values)',
+      ],
+      [],
+      [
+        'ShadingNodeMaterial: PhongLight.diffuse must have finite channels ≥ 0 (linear RGB), got Color(1, -1, 1) (edited in place; drawing with the last valid values)',
+      ],
+      [],
+    ]);
+    expect(frames.map((f) => f.sameAsFirst)).toEqual([true, true, true, true, false]);
   });
 
   test(`${backend} backend: the lecture scene = WebGLRenderer + ShadingMaterial within 2/255, same coverage`, async ({

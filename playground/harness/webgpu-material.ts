@@ -472,6 +472,55 @@ function errors() {
   }));
 }
 
-const api = { backendInfo, compare, crossRenderer, errors };
+/**
+ * Values edited in place (bypassing the setters) to NaN or a negative channel: material.ka, then a PhongLight's
+ * diffuse. Each frame's pixels (rows as read) and the console errors logged while it was drawn.
+ */
+async function inPlaceEdits(backend: Backend) {
+  const renderer = await gpuRenderer(backend);
+  const material = new ShadingNodeMaterial({ lights: [] });
+  const { scene: s, camera } = scene(material);
+  const light = s.children.find((c) => c instanceof PhongLight) as PhongLight;
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  const logged: string[] = [];
+  const original = console.error;
+  console.error = (...args: unknown[]) => {
+    logged.push(args.map(String).join(' '));
+  };
+  const frame = async () => {
+    renderer.setRenderTarget(target);
+    renderer.setClearColor(0x0000ff, 1);
+    renderer.clear();
+    renderer.render(s, camera);
+    const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+    renderer.setRenderTarget(null);
+    const errors = logged.splice(0);
+    return { pixels: Array.from(pixels), errors };
+  };
+  try {
+    const frames: { pixels: number[]; errors: string[] }[] = [];
+    frames.push(await frame()); // 0: valid
+    material.ka.r = Number.NaN;
+    frames.push(await frame()); // 1: ka NaN → reported, drawn as frame 0
+    frames.push(await frame()); // 2: still NaN → not reported again
+    material.ka.r = 0.6;
+    light.diffuse.g = -1;
+    frames.push(await frame()); // 3: the light's diffuse negative → reported, drawn as frame 0
+    light.diffuse.g = 1;
+    material.kd.setRGB(0.2, 0.5, 0.8);
+    frames.push(await frame()); // 4: valid again, kd edited in place to a valid value → drawn with it
+    return frames.map((f, i) => ({
+      errors: f.errors,
+      sameAsFirst: f.pixels.every((v, k) => v === frames[0].pixels[k]),
+      index: i,
+    }));
+  } finally {
+    console.error = original;
+    target.dispose();
+    material.dispose();
+  }
+}
+
+const api = { backendInfo, compare, crossRenderer, errors, inPlaceEdits };
 (window as unknown as { harness: typeof api }).harness = api;
 document.body.dataset.ready = '1';

@@ -42,7 +42,7 @@ import { checkCelBands, checkLighting, checkPhongLights, checkShading, SHADING_D
 import { PhongLight } from './PhongLight.js';
 import { type Shading, SPHERE_FLAG } from './ShadingMaterial.js';
 import { type Lighting, MIN_ATTENUATION_DENOMINATOR } from './shade.js';
-import { type ColorInput, checkNonNegative, setColor } from './validate.js';
+import { type ColorInput, checkColorChannels, checkNonNegative, setColor } from './validate.js';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
 type N = any;
@@ -94,8 +94,9 @@ class PhongLightNode extends AnalyticLightNode<Light> {
     } catch (error) {
       // Edited in place to a bad value: reported once, drawn with the last valid values.
       const message = (error as Error).message;
-      if (message !== this.#reported)
-        console.error(`${OWNER}: ${message} (drawing with the last valid values)`);
+      if (message !== this.#reported) {
+        console.error(`${OWNER}: ${message} (edited in place; drawing with the last valid values)`);
+      }
       this.#reported = message;
       return;
     }
@@ -281,7 +282,9 @@ function scenePhongLights(scene: Object3D | null | undefined): PhongLight[] {
  * centred at its origin (`SubdivisionSphereGeometry` or `userData.isSphere`) uses normal = position.
  *
  * The variant (shading, lighting, cel bands, the lights) is compiled in; changing it through the setters
- * recompiles. With `lights` empty, the scene's PhongLights are found when the material is compiled: after
+ * recompiles. ka, kd, ks and the PhongLights' colours edited in place (bypassing the setters) to a non-finite or
+ * negative value are reported once with console.error, as `ShadingMaterial` reports them, and drawn with their
+ * last valid values. With `lights` empty, the scene's PhongLights are found when the material is compiled: after
  * adding or removing one, set `needsUpdate = true`.
  *
  * @example
@@ -304,6 +307,14 @@ export class ShadingNodeMaterial extends NodeMaterial {
   readonly #ka = new Color(...SHADING_DEFAULTS.ka);
   readonly #kd = new Color(...SHADING_DEFAULTS.kd);
   readonly #ks = new Color(...SHADING_DEFAULTS.ks);
+  // What the GPU draws with: ka, kd, ks as last found valid, checked and copied once per render.
+  readonly #uniforms = {
+    ka: uniform(new Color(...SHADING_DEFAULTS.ka)),
+    kd: uniform(new Color(...SHADING_DEFAULTS.kd)),
+    ks: uniform(new Color(...SHADING_DEFAULTS.ks)),
+  };
+  // The message of the in-place problem last reported (null once the values are valid again).
+  #reported: string | null = null;
   readonly #shininessNode = uniform(SHADING_DEFAULTS.shininess);
 
   /**
@@ -331,6 +342,34 @@ export class ShadingNodeMaterial extends NodeMaterial {
     this.ks = ks;
     this.shininess = shininess;
     this.phongLights = lights;
+    this.#uniforms.ka.onRenderUpdate(() => {
+      this.#refresh();
+    });
+    this.#refresh();
+  }
+
+  /**
+   * Copies ka, kd and ks to their uniforms. A value edited in place (bypassing the setters) to a non-finite or
+   * negative channel is reported once with console.error, as `ShadingMaterial` reports it, and the draw keeps
+   * the last valid values instead of uploading a NaN.
+   */
+  #refresh(): undefined {
+    try {
+      checkColorChannels(`${OWNER}.ka`, this.#ka);
+      checkColorChannels(`${OWNER}.kd`, this.#kd);
+      checkColorChannels(`${OWNER}.ks`, this.#ks);
+    } catch (error) {
+      if (!(error instanceof RangeError)) throw error;
+      if (error.message !== this.#reported) {
+        console.error(`${error.message} (edited in place; drawing with the last valid values)`);
+      }
+      this.#reported = error.message;
+      return;
+    }
+    this.#reported = null;
+    (this.#uniforms.ka.value as Color).copy(this.#ka);
+    (this.#uniforms.kd.value as Color).copy(this.#kd);
+    (this.#uniforms.ks.value as Color).copy(this.#ks);
   }
 
   /** Where the lighting is evaluated: `'flat'`, `'gouraud'` or `'phong'`. @default 'phong' */
@@ -417,9 +456,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const phong = this.#lights.length > 0 ? this.#lights : scenePhongLights(builder.scene as Scene);
     const lightNodes = phong.map(phongLightNode);
     const uniforms = {
-      ka: uniform(this.#ka),
-      kd: uniform(this.#kd),
-      ks: uniform(this.#ks),
+      ...this.#uniforms,
       shininess: this.#shininessNode,
     };
     const lightsNode = builder.lightsNode;
@@ -498,6 +535,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     this.#ka.copy(source.ka);
     this.#kd.copy(source.kd);
     this.#ks.copy(source.ks);
+    this.#refresh();
     this.#shininessNode.value = source.shininess;
     return this;
   }
