@@ -96,7 +96,7 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
     expect(problems).toEqual([]);
   });
 
-  test(`${backend} backend: three's ambient, hemisphere, directional and point lights, an attenuated PhongLight with shininess 0 (0⁰ = 1), a sphere without normals, flat shading of an indexed geometry and of an InstancedMesh (by derivatives) = shade() within 2/255`, async ({
+  test(`${backend} backend: three's ambient, hemisphere, directional, point and spot lights, an attenuated PhongLight with shininess 0 (0⁰ = 1), a sphere without normals, flat shading of an indexed geometry and of an InstancedMesh (by derivatives) = shade() within 2/255`, async ({
     page,
   }) => {
     test.setTimeout(120_000);
@@ -116,7 +116,8 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
           [backend, variant, scenario] as const,
         );
         const label = `${backend} ${scenario} ${JSON.stringify(variant)} ${JSON.stringify(stats.worst)}`;
-        expect(stats.compared, label).toBeGreaterThan(2000);
+        // Five lights with cel bands leave out more pixels near their edges (gouraud: whole triangles).
+        expect(stats.compared, label).toBeGreaterThan(1000);
         expect(stats.mismatches, label).toBe(0);
         expect(stats.maxError, label).toBeLessThanOrEqual(2);
         if (variant.shading === 'flat' && scenario !== 'indexed' && scenario !== 'instanced') {

@@ -29,6 +29,7 @@ import {
   PointLight,
   Raycaster,
   Scene,
+  SpotLight,
   Vector2,
   Vector3,
   WebGLRenderer,
@@ -47,7 +48,7 @@ export type Backend = 'webgpu' | 'webgl2';
 /**
  * The lights and the geometry: 'lecture' (one PhongLight, the lecture's), 'attenuated' (a near coloured
  * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
- * directional and point lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals),
+ * directional, point and spot lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals),
  * 'indexed' (an indexed sphere: flat shading by derivatives) and 'instanced' (one instance of an InstancedMesh
  * carrying the transform: flat shading by derivatives).
  */
@@ -80,9 +81,14 @@ function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
   directional.position.set(-1, 2, 3);
   const point = new PointLight(new Color(0.9, 0.9, 1), 4, 0, 2);
   point.position.set(2, 1, 2);
+  // Aimed at the origin (its target's default), the cone's soft edge across the sphere.
+  const spot = new SpotLight(new Color(1, 0.8, 0.6), 6, 0, 0.35, 0.5, 2);
+  spot.position.set(-1, -2, 2.5);
+  spot.updateMatrixWorld();
+  spot.target.updateMatrixWorld();
   const scaled = (c: Color, i: number) => [c.r * i, c.g * i, c.b * i];
   return {
-    lights: [ambient, hemisphere, directional, point],
+    lights: [ambient, hemisphere, directional, point, spot],
     shade: [
       { type: 'ambient', color: scaled(ambient.color, ambient.intensity) },
       {
@@ -102,6 +108,16 @@ function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
         position: point.position.toArray(),
         distance: 0,
         decay: 2,
+      },
+      {
+        type: 'spot',
+        color: scaled(spot.color, spot.intensity),
+        position: spot.position.toArray(),
+        direction: spot.position.clone().sub(spot.target.position).normalize().toArray(),
+        distance: 0,
+        decay: 2,
+        coneCos: Math.cos(spot.angle),
+        penumbraCos: Math.cos(spot.angle * (1 - spot.penumbra)),
       },
     ],
   };
@@ -293,7 +309,7 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
   const toLight = (light: ShadeLight | ShadeThreeLight, p: Vector3): Vector3 | null => {
     if ('type' in light) {
       if (light.type === 'directional') return new Vector3().fromArray(light.direction ?? [0, 1, 0]);
-      if (light.type === 'point')
+      if (light.type === 'point' || light.type === 'spot')
         return new Vector3()
           .fromArray(light.position ?? [0, 0, 0])
           .sub(p)

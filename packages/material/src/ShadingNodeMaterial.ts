@@ -33,6 +33,7 @@ import {
   LightingModel,
   NearestFilter,
   NodeMaterial,
+  NodeUpdateType,
   type Object3D,
   RGBAFormat,
   type Scene,
@@ -85,6 +86,9 @@ class PhongLightNode extends AnalyticLightNode<Light> {
     // AnalyticLightNode reads `color`, `intensity` and `shadow` only from three's lights.
     super(light as never);
     this.phongLight = light;
+    // Refreshed for every render call (three's lights: once per animation frame), so that a change between two
+    // renders of one frame is seen.
+    this.updateType = NodeUpdateType.RENDER;
   }
 
   override update(): undefined {
