@@ -135,3 +135,35 @@ test('the impostor and the outline in a scene with a shadow-casting light draw a
   expect(drawn).toBeGreaterThan(1000);
   expect(differing).toBe(0);
 });
+
+test("three's lights with an attenuated PhongLight, lit per fragment in view space (perspective, orthographic) or in world space (a scaled camera): = shade()", async ({
+  page,
+}) => {
+  await open(page);
+  for (const camera of ['perspective', 'orthographic', 'scaled'] as const) {
+    for (const shading of ['phong', 'gouraud'] as const) {
+      const stats = await compare(page, {
+        shading,
+        light: 'directional',
+        phongLight: true,
+        camera,
+        ks: 0.5,
+        shininess: 0,
+      });
+      expectOracleShadow(stats);
+      expectShade(stats);
+      expect(stats.viewSpace).toBe(shading === 'phong' && camera !== 'scaled');
+    }
+  }
+  // The same in phong shading with the highlight (shininess 16), which varies over the plane.
+  for (const camera of ['perspective', 'orthographic', 'scaled'] as const) {
+    const stats = await compare(page, {
+      shading: 'phong',
+      light: 'directional',
+      phongLight: true,
+      camera,
+      ks: 0.5,
+    });
+    expectShade(stats);
+  }
+});

@@ -5,6 +5,8 @@
 import {
   flatShadingGeometry,
   linearToSrgb8,
+  PhongLight,
+  type ShadeLight,
   type ShadeThreeLight,
   type Shading,
   ShadingMaterial,
@@ -17,6 +19,7 @@ import {
   BasicShadowMap,
   BoxGeometry,
   type BufferGeometry,
+  type Camera,
   Color,
   DataTexture,
   DirectionalLight,
@@ -26,6 +29,7 @@ import {
   Mesh,
   MeshBasicMaterial,
   MeshPhongMaterial,
+  OrthographicCamera,
   PCFShadowMap,
   PerspectiveCamera,
   Plane,
@@ -59,6 +63,13 @@ export interface ShadowConfig {
   map?: boolean;
   /** DoubleSide on the plane. @default false */
   doubleSide?: boolean;
+  /** An attenuated PhongLight in the scene too. @default false */
+  phongLight?: boolean;
+  /**
+   * The camera looking down at the plane: perspective, orthographic, or perspective with a view matrix scaled by
+   * 1/2 (not rigid: the material then lights in world space). @default 'perspective'
+   */
+  camera?: 'perspective' | 'orthographic' | 'scaled';
   /** Pixels per side. @default 160 */
   size?: number;
 }
@@ -76,6 +87,8 @@ export interface ShadowStats {
   mismatches: number;
   /** Of those, pixels in full shadow. */
   shadowCompared: number;
+  /** The variant lit the plane in view space (SHADING_VIEW_SPACE). */
+  viewSpace: boolean;
   worst: { x: number; y: number; ours: number[]; expected: number[] } | null;
 }
 
@@ -135,7 +148,7 @@ function shadeLight(light: Light, visibility: number): ShadeThreeLight {
   return { type: 'point', ...base };
 }
 
-function render(scene: Scene, camera: PerspectiveCamera, size: number): Uint8Array {
+function render(scene: Scene, camera: Camera, size: number): Uint8Array {
   renderer.render(scene, camera);
   const gl = renderer.getContext();
   const pixels = new Uint8Array(4 * size * size);
@@ -149,11 +162,28 @@ function shadowCompare(config: ShadowConfig): ShadowStats {
   renderer.shadowMap.type = config.mapType === 'pcf' ? PCFShadowMap : BasicShadowMap;
   renderer.shadowMap.needsUpdate = true;
   const scene = new Scene();
-  const camera = new PerspectiveCamera(40, 1, 0.5, 20);
+  const camera =
+    config.camera === 'orthographic'
+      ? new OrthographicCamera(-1.5, 1.5, 1.5, -1.5, 0.5, 20)
+      : new PerspectiveCamera(40, 1, 0.5, 20);
   camera.position.set(0, 5, 0);
   camera.up.set(0, 0, -1);
   camera.lookAt(0, 0, 0);
   camera.updateMatrixWorld();
+  if (config.camera === 'scaled') {
+    // three leaves a camera's scale out of its view matrix; set one that keeps it (not rigid).
+    camera.matrixWorld.scale(new Vector3(2, 2, 2));
+    camera.matrixWorldInverse.copy(camera.matrixWorld).invert();
+    camera.matrixWorldAutoUpdate = false;
+  }
+  const phong = new PhongLight({
+    ambient: 0.05,
+    diffuse: [0.3, 0.5, 0.4],
+    specular: 0.6,
+    attenuation: { a: 1, b: 0.1, c: 0.05 },
+  });
+  phong.position.set(1, 1.5, -0.5);
+  if (config.phongLight) scene.add(phong);
   const light = makeLight(config.light);
   light.shadow.intensity = config.intensity ?? 1;
   scene.add(light, new AmbientLight(0xffffff, AMBIENT));
@@ -193,6 +223,7 @@ function shadowCompare(config: ShadowConfig): ShadowStats {
   };
   const receive = config.receive ?? true;
   const ours = renderWith(material, receive);
+  const viewSpace = material.defines.SHADING_VIEW_SPACE !== undefined;
   const oursLit = renderWith(material, false);
   const oracle = new MeshPhongMaterial({ color: new Color(...KD), specular: 0x000000, shininess: 16 });
   const theirs = renderWith(oracle, true);
@@ -212,9 +243,17 @@ function shadowCompare(config: ShadowConfig): ShadowStats {
     maxError: 0,
     mismatches: 0,
     shadowCompared: 0,
+    viewSpace,
     worst: null,
   };
-  const eye = camera.position.toArray();
+  const eye: number[] = config.camera === 'orthographic' ? [0, 1, 0, 0] : camera.position.toArray();
+  const phongShade: ShadeLight = {
+    position: phong.position.toArray(),
+    ambient: phong.ambient.toArray(),
+    diffuse: phong.diffuse.toArray(),
+    specular: phong.specular.toArray(),
+    attenuation: phong.attenuation,
+  };
   const raycaster = new Raycaster();
   const ground0 = new Plane(new Vector3(0, 1, 0), 0);
   const hit = new Vector3();
@@ -228,8 +267,9 @@ function shadowCompare(config: ShadowConfig): ShadowStats {
     celBands: config.celBands ?? 0,
   };
   const tint = config.map ? TEXEL.map((c) => c / 255) : [1, 1, 1];
-  const litLights = [ambient, shadeLight(light, 1)];
-  const shadowLights = [ambient, shadeLight(light, 1 - light.shadow.intensity)];
+  const others = config.phongLight ? [ambient, phongShade] : [ambient];
+  const litLights = [...others, shadeLight(light, 1)];
+  const shadowLights = [...others, shadeLight(light, 1 - light.shadow.intensity)];
   for (let y = 1; y < size - 1; y++) {
     for (let x = 1; x < size - 1; x++) {
       const i = y * size + x;

@@ -253,6 +253,14 @@ ${shadowTermsCopy('')}
 #ifdef SHADING_SPLIT
   vSpecular = shadingSpecular;
 #endif
+#elif defined( SHADING_VIEW_SPACE )
+  // Lit in view space, where three's light uniforms are (the view matrix is rigid: see ShadingMaterial).
+#ifndef FLAT_DERIVATIVES
+  vec3 viewNormal = mat3( viewMatrix ) * worldNormal;
+  float normalLength = length(viewNormal);
+  vNormal = normalLength > 0.0 ? viewNormal / normalLength : vec3(0.0);
+#endif
+  vWorldPosition = ( viewMatrix * vec4( worldPosition, 1.0 ) ).xyz;
 #else
 #ifndef FLAT_DERIVATIVES
   float normalLength = length(worldNormal);

@@ -6,6 +6,7 @@ import {
   type Group,
   type Light,
   Matrix3,
+  type Matrix4,
   type NormalMapTypes,
   type Object3D,
   type Scene,
@@ -163,6 +164,21 @@ function refreshMap(
 }
 const _eye = /* @__PURE__ */ new Vector4();
 
+/** Whether `m`'s upper 3 × 3 is a rotation (or a reflection): orthonormal columns, within float32 rounding. */
+function isRigid(m: Matrix4): boolean {
+  const e = m.elements;
+  const dot = (a: number, b: number) => e[a] * e[b] + e[a + 1] * e[b + 1] + e[a + 2] * e[b + 2];
+  const near = (x: number, y: number) => Math.abs(x - y) < 1e-5;
+  return (
+    near(dot(0, 0), 1) &&
+    near(dot(4, 4), 1) &&
+    near(dot(8, 8), 1) &&
+    near(dot(0, 4), 0) &&
+    near(dot(0, 8), 0) &&
+    near(dot(4, 8), 0)
+  );
+}
+
 /**
  * Classic lighting on three.js: the lecture's flat, Gouraud and Phong shading crossed with Phong,
  * Blinn-Phong and cel lighting, lit by {@link PhongLight}s. Lighting is done in world space with the
@@ -241,6 +257,13 @@ export class ShadingMaterial extends ShaderMaterial {
   #flatDerivatives = false;
   #attenuation = false;
   #threeLights = false;
+  // Per-fragment lighting with three's lights (whose uniforms are in view space) runs in view space.
+  #viewSpace = false;
+  /**
+   * Whether per-fragment lighting with three's lights may run in view space (see `onBeforeRender`); false for
+   * a subclass whose fragment stage lights in world space itself (the impostor). @internal
+   */
+  protected readonly viewSpaceLighting: boolean = true;
   readonly #emissive = new Color(0, 0, 0);
   #opacity = 1;
   // What of the surface three compiles (its program parameters), to raise needsUpdate when it changes.
@@ -525,11 +548,21 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#active = this.#lights.length > 0 ? this.#lights : seen.phong;
     this.#attenuation = this.#active.some((light) => light.attenuates);
     this.#threeLights = seen.threeLights;
+    // three's lights are uniforms in view space: a fragment lit by them is lit in view space (the PhongLights and
+    // the eye go there on the CPU), instead of carrying its position, normal and view vector there per fragment.
+    // Only for a rigid view matrix (a camera without scale), where lengths and angles are those of world space.
+    const view = camera.matrixWorldInverse;
+    this.#viewSpace =
+      this.viewSpaceLighting &&
+      this.#threeLights &&
+      (this.#shading === 'phong' || (this.#shading === 'flat' && this.#flatDerivatives)) &&
+      isRigid(view);
     this.#updateSurface();
     this.#syncDefines();
-    this.#updateLightUniforms();
+    this.#updateLightUniforms(this.#viewSpace ? view : null);
     computeNormalMatrix(object.matrixWorld, u.shadingNormalMatrix.value);
     eyeOf(camera, u.shadingEye.value);
+    if (this.#viewSpace) u.shadingEye.value.applyMatrix4(view);
     this.uniformsNeedUpdate = true;
   }
 
@@ -544,6 +577,7 @@ export class ShadingMaterial extends ShaderMaterial {
     if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
     if (this.#flatDerivatives && this.#shading === 'flat') defines.FLAT_DERIVATIVES = '';
     if (this.#threeLights) defines.SHADING_THREE_LIGHTS = '';
+    if (this.#viewSpace) defines.SHADING_VIEW_SPACE = '';
     const e = this.#emissive;
     if (e.r > 0 || e.g > 0 || e.b > 0) defines.SHADING_EMISSIVE = '';
     const old = this.defines ?? {};
@@ -631,7 +665,8 @@ export class ShadingMaterial extends ShaderMaterial {
     return null;
   }
 
-  #updateLightUniforms(): void {
+  /** Uploads the lights' uniforms; their positions in world space, or through `view` (world → view) when given. */
+  #updateLightUniforms(view: Matrix4 | null): void {
     const lights = this.#active;
     const n = lights.length;
     const u = this.uniforms;
@@ -674,9 +709,16 @@ export class ShadingMaterial extends ShaderMaterial {
       const light = lights[i];
       const e = light.matrixWorld.elements;
       const j = 3 * i;
-      position[j] = e[12];
-      position[j + 1] = e[13];
-      position[j + 2] = e[14];
+      if (view === null) {
+        position[j] = e[12];
+        position[j + 1] = e[13];
+        position[j + 2] = e[14];
+      } else {
+        const v = view.elements;
+        position[j] = v[0] * e[12] + v[4] * e[13] + v[8] * e[14] + v[12];
+        position[j + 1] = v[1] * e[12] + v[5] * e[13] + v[9] * e[14] + v[13];
+        position[j + 2] = v[2] * e[12] + v[6] * e[13] + v[10] * e[14] + v[14];
+      }
       diffuse[j] = kd.r * light.diffuse.r;
       diffuse[j + 1] = kd.g * light.diffuse.g;
       diffuse[j + 2] = kd.b * light.diffuse.b;

@@ -68,6 +68,8 @@ export class SphereImpostorMaterial extends ShadingMaterial {
   readonly isSphereImpostorMaterial = true;
   /** three's type name: `'SphereImpostorMaterial'`. */
   override type = 'SphereImpostorMaterial';
+  // The ray-cast hit is lit in world space, also with three's lights.
+  protected override readonly viewSpaceLighting = false;
 
   constructor(options: SphereImpostorMaterialOptions = {}) {
     super({ shading: 'phong', ...options });

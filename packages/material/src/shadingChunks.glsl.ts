@@ -71,7 +71,11 @@ in float vShadingAlpha;
 #if defined( USE_NORMALMAP ) && defined( SHADING_PHONG )
 #define SHADING_NORMALMAP
 #undef USE_TANGENT
+#ifdef SHADING_VIEW_SPACE
+#define normalMatrix ( mat3( viewMatrix ) * shadingNormalMatrix )
+#else
 #define normalMatrix shadingNormalMatrix
+#endif
 #endif
 #include <normalmap_pars_fragment>
 `;
@@ -225,9 +229,12 @@ vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
 #endif
 }
 vec3 threeLights(vec3 p, vec3 n, vec3 v) {
+#ifndef SHADING_VIEW_SPACE
+  // three's light uniforms are in view space (SHADING_VIEW_SPACE: p, n and v are already).
   p = (viewMatrix * vec4(p, 1.0)).xyz;
   n = normalize((viewMatrix * vec4(n, 0.0)).xyz);
   v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
+#endif
   vec3 c = ambientLightColor, l, term;
   float t;
 #if NUM_HEMI_LIGHTS > 0
