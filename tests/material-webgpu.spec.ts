@@ -9,7 +9,7 @@ import { shadelabUse } from '@shadelab/playwright';
 test.use(shadelabUse({ webgpu: true }));
 
 type Backend = 'webgpu' | 'webgl2';
-type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic' | 'indexed' | 'instanced';
+type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic' | 'indexed' | 'instanced' | 'fog';
 interface Variant {
   shading: 'flat' | 'gouraud' | 'phong';
   lighting: 'phong' | 'blinn-phong';
@@ -35,8 +35,10 @@ interface Harness {
   crossRenderer(
     b: Backend,
     v: Variant,
+    scenario?: Scenario,
   ): Promise<{ covered: number; maxDelta: number; differing: number; coverageMismatch: number }>;
   errors(): { options: string; webgl: string; node: string }[];
+  fogEffect(b: Backend, v: Variant): Promise<number>;
   inPlaceEdits(b: Backend): Promise<{ errors: string[]; sameAsFirst: boolean; index: number }[]>;
 }
 
@@ -150,7 +152,7 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
     expect(frames.map((f) => f.sameAsFirst)).toEqual([true, true, true, true, false]);
   });
 
-  test(`${backend} backend: the lecture scene = WebGLRenderer + ShadingMaterial within 2/255, same coverage`, async ({
+  test(`${backend} backend: the lecture scene, and the same in three's Fog, = WebGLRenderer + ShadingMaterial within 2/255, same coverage`, async ({
     page,
   }) => {
     const problems = await open(page);
@@ -159,14 +161,22 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       { shading: 'gouraud', lighting: 'blinn-phong', celBands: 4 },
       { shading: 'flat', lighting: 'phong', celBands: 0 },
     ] as const) {
-      const stats = await page.evaluate(
-        ([b, v]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v),
+      for (const scenario of ['lecture', 'fog'] as const) {
+        const stats = await page.evaluate(
+          ([b, v, sc]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, sc),
+          [backend, variant, scenario] as const,
+        );
+        const label = `${backend} ${scenario} ${JSON.stringify(variant)}`;
+        expect(stats.covered, label).toBeGreaterThan(5000);
+        expect(stats.coverageMismatch, label).toBe(0);
+        expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+      }
+      // The fog is really there: it changes the picture.
+      const fogged = await page.evaluate(
+        ([b, v]) => (window as never as { harness: Harness }).harness.fogEffect(b, v),
         [backend, variant] as const,
       );
-      const label = `${backend} ${JSON.stringify(variant)}`;
-      expect(stats.covered, label).toBeGreaterThan(5000);
-      expect(stats.coverageMismatch, label).toBe(0);
-      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+      expect(fogged, `${backend} ${JSON.stringify(variant)}`).toBeGreaterThan(1000);
     }
     expect(problems).toEqual([]);
   });

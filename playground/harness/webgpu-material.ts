@@ -17,6 +17,7 @@ import {
   type BufferGeometry,
   Color,
   DirectionalLight,
+  Fog,
   HemisphereLight,
   InstancedMesh,
   type Light,
@@ -50,9 +51,16 @@ export type Backend = 'webgpu' | 'webgl2';
  * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
  * directional, point and spot lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals),
  * 'indexed' (an indexed sphere: flat shading by derivatives) and 'instanced' (one instance of an InstancedMesh
- * carrying the transform: flat shading by derivatives).
+ * carrying the transform: flat shading by derivatives), 'fog' (the lecture's scene in three's Fog).
  */
-export type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic' | 'indexed' | 'instanced';
+export type Scenario =
+  | 'lecture'
+  | 'attenuated'
+  | 'three-lights'
+  | 'analytic'
+  | 'indexed'
+  | 'instanced'
+  | 'fog';
 
 const SIZE = 128;
 const geometry: BufferGeometry = new SubdivisionSphereGeometry({
@@ -150,6 +158,7 @@ function scene(
   }
   const s = new Scene();
   s.add(mesh);
+  if (scenario === 'fog') s.fog = new Fog(new Color(0.2, 0.4, 0.6), 1.9, 3.2);
   let lights: (ShadeLight | ShadeThreeLight)[];
   if (scenario === 'three-lights') {
     const three = threeLights();
@@ -220,10 +229,10 @@ async function renderGpu(backend: Backend, v: Variant, scenario: Scenario = 'lec
 }
 
 let gl: WebGLRenderer | null = null;
-function renderGl(v: Variant): Uint8Array {
+function renderGl(v: Variant, scenario: Scenario = 'lecture'): Uint8Array {
   gl ??= new WebGLRenderer({ antialias: false });
   const material = new ShadingMaterial(v);
-  const setup = scene(material);
+  const setup = scene(material, scenario);
   const target = new WebGLRenderTarget(SIZE, SIZE);
   gl.setRenderTarget(target);
   gl.setClearColor(0x0000ff, 1);
@@ -437,9 +446,9 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
 }
 
 /** WebGLRenderer + ShadingMaterial against WebGPURenderer + ShadingNodeMaterial, same scene: max |Δ| in 1/255. */
-async function crossRenderer(backend: Backend, v: Variant) {
-  const a = renderGl(v);
-  const { pixels: b } = await renderGpu(backend, v);
+async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario = 'lecture') {
+  const a = renderGl(v, scenario);
+  const { pixels: b } = await renderGpu(backend, v, scenario);
   let maxDelta = 0;
   let differing = 0;
   let covered = 0;
@@ -455,6 +464,18 @@ async function crossRenderer(backend: Backend, v: Variant) {
     if (d > 2) differing++;
   }
   return { covered, maxDelta, differing, coverageMismatch };
+}
+
+/** How many pixels three's Fog changes by more than 2/255 on WebGPURenderer (the fog is really applied). */
+async function fogEffect(backend: Backend, v: Variant): Promise<number> {
+  const { pixels: clear } = await renderGpu(backend, v, 'lecture');
+  const { pixels: fogged } = await renderGpu(backend, v, 'fog');
+  let changed = 0;
+  for (let i = 0; i < clear.length; i += 4) {
+    const d = Math.max(...[0, 1, 2].map((k) => Math.abs(clear[i + k] - fogged[i + k])));
+    if (d > 2) changed++;
+  }
+  return changed;
 }
 
 /** The message each material throws for the same bad input (ShadingMaterial's, ShadingNodeMaterial's). */
@@ -537,6 +558,6 @@ async function inPlaceEdits(backend: Backend) {
   }
 }
 
-const api = { backendInfo, compare, crossRenderer, errors, inPlaceEdits };
+const api = { backendInfo, compare, crossRenderer, errors, fogEffect, inPlaceEdits };
 (window as unknown as { harness: typeof api }).harness = api;
 document.body.dataset.ready = '1';
