@@ -9,9 +9,11 @@ import {
   type Matrix4,
   type NormalMapTypes,
   type Object3D,
+  type PointLight,
   type Scene,
   ShaderMaterial,
   type SkinnedMesh,
+  type SpotLight,
   TangentSpaceNormalMap,
   type Texture,
   UniformsLib,
@@ -127,6 +129,10 @@ interface SceneLights {
   threeLights: boolean;
   /** The visible PhongLights, in traversal order. */
   phong: PhongLight[];
+  /** Some visible PointLight or SpotLight has a cut-off `distance` > 0 (three's falloff window is needed). */
+  cutoff: boolean;
+  /** Every visible PointLight and SpotLight has `decay` 2 (three's default): the falloff is 1/max(t², 0.01). */
+  inverseSquare: boolean;
 }
 
 const _sceneLights = /* @__PURE__ */ new WeakMap<Object3D, SceneLights>();
@@ -137,13 +143,21 @@ const _sceneLights = /* @__PURE__ */ new WeakMap<Object3D, SceneLights>();
  */
 function sceneLightsOf(renderer: WebGLRenderer | null, scene: Scene | null): SceneLights {
   const frame = renderer?.info?.render?.frame ?? Number.NaN;
-  if (scene === null || scene === undefined) return { frame, threeLights: false, phong: [] };
+  if (scene === null || scene === undefined) {
+    return { frame, threeLights: false, phong: [], cutoff: false, inverseSquare: true };
+  }
   const cached = _sceneLights.get(scene);
   if (cached !== undefined && cached.frame === frame) return cached;
-  const found: SceneLights = { frame, threeLights: false, phong: [] };
+  const found: SceneLights = { frame, threeLights: false, phong: [], cutoff: false, inverseSquare: true };
   scene.traverseVisible((object) => {
-    if ((object as Light).isLight === true) found.threeLights = true;
-    else if (object instanceof PhongLight) found.phong.push(object);
+    if ((object as Light).isLight === true) {
+      found.threeLights = true;
+      const point = object as PointLight;
+      if (point.isPointLight === true || (object as SpotLight).isSpotLight === true) {
+        if (point.distance > 0) found.cutoff = true;
+        if (point.decay !== 2) found.inverseSquare = false;
+      }
+    } else if (object instanceof PhongLight) found.phong.push(object);
   });
   _sceneLights.set(scene, found);
   return found;
@@ -257,6 +271,9 @@ export class ShadingMaterial extends ShaderMaterial {
   #flatDerivatives = false;
   #attenuation = false;
   #threeLights = false;
+  // What three's point and spot lights in the scene need of their falloff (see SceneLights).
+  #lightCutoff = false;
+  #inverseSquare = true;
   // Per-fragment lighting with three's lights (whose uniforms are in view space) runs in view space.
   #viewSpace = false;
   /**
@@ -548,6 +565,8 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#active = this.#lights.length > 0 ? this.#lights : seen.phong;
     this.#attenuation = this.#active.some((light) => light.attenuates);
     this.#threeLights = seen.threeLights;
+    this.#lightCutoff = seen.cutoff;
+    this.#inverseSquare = seen.inverseSquare;
     // three's lights are uniforms in view space: a fragment lit by them is lit in view space (the PhongLights and
     // the eye go there on the CPU), instead of carrying its position, normal and view vector there per fragment.
     // Only for a rigid view matrix (a camera without scale), where lengths and angles are those of world space.
@@ -577,6 +596,10 @@ export class ShadingMaterial extends ShaderMaterial {
     if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
     if (this.#flatDerivatives && this.#shading === 'flat') defines.FLAT_DERIVATIVES = '';
     if (this.#threeLights) defines.SHADING_THREE_LIGHTS = '';
+    // three's distance falloff, only what the scene's point and spot lights use: the cut-off window when some
+    // light has a distance, pow(t, decay) unless every decay is 2 (then t², exact and without pow).
+    if (this.#threeLights && this.#lightCutoff) defines.SHADING_LIGHT_CUTOFF = '';
+    if (this.#threeLights && this.#inverseSquare) defines.SHADING_INVERSE_SQUARE = '';
     if (this.#viewSpace) defines.SHADING_VIEW_SPACE = '';
     const e = this.#emissive;
     if (e.r > 0 || e.g > 0 || e.b > 0) defines.SHADING_EMISSIVE = '';

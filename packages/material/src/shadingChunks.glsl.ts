@@ -233,6 +233,19 @@ vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
   return c * (d * shadingKd * shadingTint + s * shadingKs);
 #endif
 }
+// three's getDistanceAttenuation at distance t (t2 = t²), compiled for what the scene's lights use: the cut-off
+// window only when some light has a distance, 1/max(t², 0.01) when every decay is 2 (no pow).
+float threeFalloff(float t, float t2, float cutoff, float decay) {
+#ifdef SHADING_INVERSE_SQUARE
+  float f = 1.0 / max(t2, 0.01);
+#else
+  float f = 1.0 / max(pow(t, decay), 0.01);
+#endif
+#ifdef SHADING_LIGHT_CUTOFF
+  if (cutoff > 0.0) f *= pow2(saturate(1.0 - pow4(t / cutoff)));
+#endif
+  return f;
+}
 vec3 threeLights(vec3 p, vec3 n, vec3 v) {
 #ifndef SHADING_VIEW_SPACE
   // three's light uniforms are in view space (SHADING_VIEW_SPACE: p, n and v are already).
@@ -241,7 +254,7 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
   v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
 #endif
   vec3 c = ambientLightColor, l, term;
-  float t, r;
+  float t, t2, r;
 #if NUM_HEMI_LIGHTS > 0
   for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
 #endif
@@ -262,12 +275,12 @@ ${shadowedLight('Dir')}
   #pragma unroll_loop_start
   for ( int i = 0; i < NUM_POINT_LIGHTS; i ++ ) {
     l = pointLights[ i ].position - p;
-    t = dot( l, l );
-    r = inversesqrt( t );
-    l = t > 0.0 ? l * r : n;
-    t = t > 0.0 ? t * r : 0.0;
+    t2 = dot( l, l );
+    r = inversesqrt( t2 );
+    l = t2 > 0.0 ? l * r : n;
+    t = t2 > 0.0 ? t2 * r : 0.0;
     SHADING_SHADOW_BEGIN
-    term = threeDirect( n, v, l, pointLights[ i ].color * getDistanceAttenuation( t, pointLights[ i ].distance, pointLights[ i ].decay ) );
+    term = threeDirect( n, v, l, pointLights[ i ].color * threeFalloff( t, t2, pointLights[ i ].distance, pointLights[ i ].decay ) );
 ${shadowedLight('Point')}
     c += term;
   }
@@ -277,12 +290,12 @@ ${shadowedLight('Point')}
   #pragma unroll_loop_start
   for ( int i = 0; i < NUM_SPOT_LIGHTS; i ++ ) {
     l = spotLights[ i ].position - p;
-    t = dot( l, l );
-    r = inversesqrt( t );
-    l = t > 0.0 ? l * r : n;
-    t = t > 0.0 ? t * r : 0.0;
+    t2 = dot( l, l );
+    r = inversesqrt( t2 );
+    l = t2 > 0.0 ? l * r : n;
+    t = t2 > 0.0 ? t2 * r : 0.0;
     SHADING_SHADOW_BEGIN
-    term = threeDirect( n, v, l, spotLights[ i ].color * getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * getDistanceAttenuation( t, spotLights[ i ].distance, spotLights[ i ].decay ) );
+    term = threeDirect( n, v, l, spotLights[ i ].color * getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * threeFalloff( t, t2, spotLights[ i ].distance, spotLights[ i ].decay ) );
 ${shadowedLight('Spot')}
     c += term;
   }
