@@ -163,8 +163,6 @@ function sceneLightsOf(renderer: WebGLRenderer | null, scene: Scene | null): Sce
   return found;
 }
 
-const _normalMatrix = /* @__PURE__ */ new Matrix3();
-
 /** A map's uniforms as three's refreshTransformUniform sets them: the texture and its uv transform. */
 function refreshMap(
   texture: { value: Texture | null },
@@ -176,7 +174,6 @@ function refreshMap(
   if (map.matrixAutoUpdate) map.updateMatrix();
   transform.value.copy(map.matrix);
 }
-const _eye = /* @__PURE__ */ new Vector4();
 
 /** Whether `m`'s upper 3 × 3 is a rotation (or a reflection): orthonormal columns, within float32 rounding. */
 function isRigid(m: Matrix4): boolean {

@@ -246,6 +246,15 @@ float threeFalloff(float t, float t2, float cutoff, float decay) {
 #endif
   return f;
 }
+// The unit direction from p to a light at q, its distance t and t² (one inversesqrt); a light at p lights it
+// head-on (l = n), as in lightTerm.
+vec3 threeToLight(vec3 q, vec3 p, vec3 n, out float t, out float t2) {
+  vec3 l = q - p;
+  t2 = dot(l, l);
+  float r = inversesqrt(t2);
+  t = t2 > 0.0 ? t2 * r : 0.0;
+  return t2 > 0.0 ? l * r : n;
+}
 vec3 threeLights(vec3 p, vec3 n, vec3 v) {
 #ifndef SHADING_VIEW_SPACE
   // three's light uniforms are in view space (SHADING_VIEW_SPACE: p, n and v are already).
@@ -254,7 +263,7 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
   v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
 #endif
   vec3 c = ambientLightColor, l, term;
-  float t, t2, r;
+  float t, t2;
 #if NUM_HEMI_LIGHTS > 0
   for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
 #endif
@@ -274,11 +283,7 @@ ${shadowedLight('Dir')}
 #if NUM_POINT_LIGHTS > 0
   #pragma unroll_loop_start
   for ( int i = 0; i < NUM_POINT_LIGHTS; i ++ ) {
-    l = pointLights[ i ].position - p;
-    t2 = dot( l, l );
-    r = inversesqrt( t2 );
-    l = t2 > 0.0 ? l * r : n;
-    t = t2 > 0.0 ? t2 * r : 0.0;
+    l = threeToLight( pointLights[ i ].position, p, n, t, t2 );
     SHADING_SHADOW_BEGIN
     term = threeDirect( n, v, l, pointLights[ i ].color * threeFalloff( t, t2, pointLights[ i ].distance, pointLights[ i ].decay ) );
 ${shadowedLight('Point')}
@@ -289,11 +294,7 @@ ${shadowedLight('Point')}
 #if NUM_SPOT_LIGHTS > 0
   #pragma unroll_loop_start
   for ( int i = 0; i < NUM_SPOT_LIGHTS; i ++ ) {
-    l = spotLights[ i ].position - p;
-    t2 = dot( l, l );
-    r = inversesqrt( t2 );
-    l = t2 > 0.0 ? l * r : n;
-    t = t2 > 0.0 ? t2 * r : 0.0;
+    l = threeToLight( spotLights[ i ].position, p, n, t, t2 );
     SHADING_SHADOW_BEGIN
     term = threeDirect( n, v, l, spotLights[ i ].color * getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * threeFalloff( t, t2, spotLights[ i ].distance, spotLights[ i ].decay ) );
 ${shadowedLight('Spot')}
