@@ -1,0 +1,399 @@
+// Benchmark page for bench/webgpu.bench.mjs (issue 15's measurements): the lecture's scene (the material bench's
+// level-6 sphere and one PhongLight) drawn by ShadingNodeMaterial on both backends of three's WebGPURenderer
+// (WebGPU; WebGL2 with forceWebGL) against three's MeshPhongNodeMaterial on the same backend, and by
+// ShadingMaterial and MeshPhongMaterial under WebGLRenderer, all in one page so that one cycle times them all.
+//
+// Every renderer draws offscreen into a linear RGBA8 render target of the same size (a WebGPU canvas loses its
+// device when presented headless), each frame followed by a 1×1 read-back so that the GPU work is waited for:
+// readRenderTargetPixelsAsync on the WebGPU backend, a synchronous readPixels on the WebGL2 backend (three's
+// asynchronous read-back there polls once per animation frame) and under WebGLRenderer. GPU time: three's
+// trackTimestamp (WebGPU 'timestamp-query'; EXT_disjoint_timer_query_webgl2 on the WebGL2 backend) and the same
+// extension under WebGLRenderer, when the browser has them.
+import { flatShadingGeometry, PhongLight, ShadingMaterial } from '@shadelab/material';
+import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
+import {
+  AmbientLight,
+  type BufferGeometry,
+  Color,
+  DirectionalLight,
+  type Material,
+  Mesh,
+  MeshPhongMaterial,
+  PerspectiveCamera,
+  PointLight,
+  Scene,
+  WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import { MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+
+/** Where a spec is drawn: WebGPURenderer's WebGPU or WebGL2 backend, or three's WebGLRenderer. */
+export type Backend = 'webgpu' | 'webgl2' | 'webgl';
+type Shading = 'flat' | 'gouraud' | 'phong';
+type Lighting = 'phong' | 'blinn-phong';
+
+/** One timed scene. */
+export interface BenchSpec {
+  backend: Backend;
+  /**
+   * 'shadelab': ShadingNodeMaterial (WebGPURenderer) or ShadingMaterial (WebGLRenderer); 'three-phong':
+   * MeshPhongNodeMaterial (WebGPURenderer) or MeshPhongMaterial (WebGLRenderer), shininess 32.
+   */
+  material: 'shadelab' | 'three-phong';
+  shading?: Shading;
+  lighting?: Lighting;
+  celBands?: number;
+  /**
+   * 'phong': the lecture's PhongLight at (−5, 10, 20) (Ia 0.2, Id 1, Is 0.8); three's materials get the
+   * equivalent AmbientLight(0.2) and PointLight(1, decay 0) there. 'three': three's AmbientLight(0.2), a
+   * PointLight (400, decay 2) at (−5, 10, 20) and a DirectionalLight (0.8) from (5, 10, 7), for every material.
+   */
+  lights?: 'phong' | 'three';
+  /** A/B: a patched copy of ShadingNodeMaterial's lighting (see experimentalMaterial), WebGPURenderer only. */
+  experiment?: Experiment;
+}
+
+export interface TimedResult {
+  /** Every timed frame, ms: the render call and the 1×1 read-back. */
+  frames: number[];
+  /** GPU time of every timed frame, ms; empty without a GPU timer on this backend. */
+  gpu: number[];
+  /** Set when the spec cannot render (it threw); nothing was timed. */
+  error?: string;
+}
+
+const params = new URLSearchParams(location.search);
+const width = Number(params.get('width') ?? 1280);
+const height = Number(params.get('height') ?? 720);
+const LEVEL = 6;
+const pixel = new Uint8Array(4);
+
+// ── Renderers ───────────────────────────────────────────────────────────────────────────────────────────────
+
+interface GpuRenderer {
+  renderer: WebGPURenderer;
+  target: RenderTarget;
+  /** Whether three tracks GPU time on this backend (timestamp-query, or the WebGL2 timer extension). */
+  timestamps: boolean;
+  /** The 1×1 read-back after a frame. */
+  read: () => Promise<unknown> | undefined;
+}
+
+async function gpuRenderer(backend: 'webgpu' | 'webgl2'): Promise<GpuRenderer> {
+  const renderer = new WebGPURenderer({
+    antialias: false,
+    forceWebGL: backend === 'webgl2',
+    trackTimestamp: true,
+  });
+  await renderer.init();
+  renderer.setPixelRatio(1);
+  renderer.setSize(width, height, false);
+  const target = new RenderTarget(width, height, { depthBuffer: true });
+  renderer.setRenderTarget(target);
+  // biome-ignore lint/suspicious/noExplicitAny: the backends' internals (three's types do not describe them).
+  const b = renderer.backend as any;
+  const isWebGPU = b.isWebGPUBackend === true;
+  if (isWebGPU !== (backend === 'webgpu')) throw new Error(`asked for ${backend}, got another backend`);
+  let read: () => Promise<unknown> | undefined;
+  if (isWebGPU) {
+    read = () => renderer.readRenderTargetPixelsAsync(target, width >> 1, height >> 1, 1, 1);
+  } else {
+    // A synchronous readPixels from the target's texture (three's async read-back polls per animation frame).
+    const gl = b.gl as WebGL2RenderingContext;
+    let fb: WebGLFramebuffer | null = null;
+    read = () => {
+      if (fb === null) {
+        fb = gl.createFramebuffer();
+        b.state.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
+        const texture = b.get(target.texture).textureGPU as WebGLTexture;
+        gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+      } else b.state.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
+      gl.readPixels(width >> 1, height >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      b.state.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+      return undefined;
+    };
+  }
+  return { renderer, target, timestamps: b.trackTimestamp === true, read };
+}
+
+const gpu: Partial<Record<'webgpu' | 'webgl2', GpuRenderer>> = {};
+const initErrors: Partial<Record<Backend, string>> = {};
+for (const backend of ['webgpu', 'webgl2'] as const) {
+  try {
+    gpu[backend] = await gpuRenderer(backend);
+  } catch (error) {
+    initErrors[backend] = error instanceof Error ? error.message : String(error);
+  }
+}
+
+const gl = new WebGLRenderer({ antialias: false });
+gl.setPixelRatio(1);
+gl.setSize(width, height, false);
+const glTarget = new WebGLRenderTarget(width, height);
+gl.setRenderTarget(glTarget);
+const glContext = gl.getContext() as WebGL2RenderingContext;
+const timer = glContext.getExtension('EXT_disjoint_timer_query_webgl2') as {
+  TIME_ELAPSED_EXT: number;
+} | null;
+
+/** What each backend is and offers, for the results' meta. */
+async function info() {
+  const adapter =
+    'gpu' in navigator
+      ? await (
+          navigator as unknown as { gpu: { requestAdapter(): Promise<{ features: Set<string> } | null> } }
+        ).gpu.requestAdapter()
+      : null;
+  const adapterInfo = adapter as unknown as { info?: Record<string, string> } | null;
+  return {
+    width,
+    height,
+    adapter:
+      adapter === null
+        ? null
+        : {
+            timestampQuery: adapter.features.has('timestamp-query'),
+            features: [...adapter.features].sort(),
+            vendor: adapterInfo?.info?.vendor ?? null,
+            architecture: adapterInfo?.info?.architecture ?? null,
+            description: adapterInfo?.info?.description ?? null,
+          },
+    webgpu: gpu.webgpu ? { timestamps: gpu.webgpu.timestamps } : { error: initErrors.webgpu },
+    webgl2: gpu.webgl2
+      ? {
+          timestamps: gpu.webgl2.timestamps,
+          renderer: String(
+            (gpu.webgl2.renderer.backend as unknown as { gl: WebGL2RenderingContext }).gl.getParameter(
+              0x1f01 /* RENDERER */,
+            ),
+          ),
+        }
+      : { error: initErrors.webgl2 },
+    webgl: { timer: timer !== null, renderer: String(glContext.getParameter(glContext.RENDERER)) },
+  };
+}
+
+// ── A/B experiments ─────────────────────────────────────────────────────────────────────────────────────────
+
+/** A named change to ShadingNodeMaterial's lighting, measured against it. */
+export type Experiment = string;
+
+function experimentalMaterial(name: Experiment, _options: object): Material {
+  throw new Error(`unknown experiment ${name}`);
+}
+
+// ── Scenes ──────────────────────────────────────────────────────────────────────────────────────────────────
+
+const geometries = new Map<string, BufferGeometry>();
+function sphere(normals: boolean, indexed: boolean): BufferGeometry {
+  const key = `${normals}/${indexed}`;
+  let g = geometries.get(key);
+  if (g === undefined) {
+    g = new SubdivisionSphereGeometry({
+      level: LEVEL,
+      base: 'tetrahedron',
+      normals: normals ? 'smooth' : 'none',
+      indexed,
+    });
+    geometries.set(key, g);
+  }
+  return g;
+}
+let flatPrepared: BufferGeometry | null = null;
+
+/**
+ * The geometry each material draws: ours read positions only (the analytic sphere normal); three's need
+ * normals. Flat shading: ShadingNodeMaterial's exact per-face path draws the triangle soup, ShadingMaterial the
+ * prepared flatShadingGeometry (as in the material bench); everything else the indexed sphere.
+ */
+function geometryOf(spec: BenchSpec): BufferGeometry {
+  if (spec.material !== 'shadelab') return sphere(true, true);
+  if ((spec.shading ?? 'phong') !== 'flat') return sphere(false, true);
+  if (spec.backend !== 'webgl') return sphere(false, false);
+  flatPrepared ??= flatShadingGeometry(sphere(false, true));
+  return flatPrepared;
+}
+
+const LIGHT_POSITION = [-5, 10, 20] as const;
+
+function materialOf(spec: BenchSpec, scene: Scene): Material {
+  const lights = spec.lights ?? 'phong';
+  const phongLights: PhongLight[] = [];
+  if (lights === 'phong' && spec.material === 'shadelab') {
+    const light = new PhongLight();
+    light.position.set(...LIGHT_POSITION);
+    scene.add(light);
+    phongLights.push(light);
+  } else if (lights === 'phong') {
+    scene.add(new AmbientLight(0xffffff, 0.2));
+    const point = new PointLight(0xffffff, 1, 0, 0);
+    point.position.set(...LIGHT_POSITION);
+    scene.add(point);
+  } else {
+    scene.add(new AmbientLight(0xffffff, 0.2));
+    const point = new PointLight(0xffffff, 400, 0, 2);
+    point.position.set(...LIGHT_POSITION);
+    scene.add(point);
+    const sun = new DirectionalLight(0xffffff, 0.8);
+    sun.position.set(5, 10, 7);
+    scene.add(sun);
+  }
+  if (spec.material === 'three-phong') {
+    const options = {
+      color: new Color(0.6, 0.35, 0.2),
+      specular: new Color(0.5, 0.5, 0.5),
+      shininess: 32,
+    };
+    return spec.backend === 'webgl' ? new MeshPhongMaterial(options) : new MeshPhongNodeMaterial(options);
+  }
+  const options = {
+    shading: spec.shading ?? 'phong',
+    lighting: spec.lighting ?? 'phong',
+    celBands: spec.celBands ?? 0,
+    lights: phongLights,
+  };
+  if (spec.backend === 'webgl') return new ShadingMaterial(options);
+  // tsconfig.test.json maps @shadelab/material to its sources but not @shadelab/material/webgpu (its dist):
+  // two PhongLight types for the checker, one class at run time (Vite resolves both to the sources).
+  const nodeOptions = { ...options, lights: phongLights as never };
+  if (spec.experiment !== undefined) return experimentalMaterial(spec.experiment, nodeOptions);
+  return new ShadingNodeMaterial(nodeOptions);
+}
+
+interface Built {
+  scene: Scene;
+  camera: PerspectiveCamera;
+  mesh: Mesh;
+}
+const scenes = new Map<string, Built>();
+
+/** The material bench's lecture scene: the sphere (radius 2) filling most of the canvas, camera 90° at z = 3. */
+function sceneOf(spec: BenchSpec): Built {
+  const key = JSON.stringify(spec);
+  let built = scenes.get(key);
+  if (built !== undefined) return built;
+  const scene = new Scene();
+  scene.background = new Color(0, 0, 0);
+  const mesh = new Mesh(geometryOf(spec), materialOf(spec, scene));
+  mesh.scale.setScalar(2);
+  scene.add(mesh);
+  const camera = new PerspectiveCamera(90, width / height, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  built = { scene, camera, mesh };
+  scenes.set(key, built);
+  return built;
+}
+
+// ── Timing ──────────────────────────────────────────────────────────────────────────────────────────────────
+
+/** One frame of `spec`, timed: render and 1×1 read-back; then its GPU time when there is a timer (untimed). */
+async function frame(spec: BenchSpec, built: Built): Promise<{ ms: number; gpu: number | null }> {
+  if (spec.backend === 'webgl') {
+    let query: WebGLQuery | null = null;
+    if (timer !== null) {
+      query = glContext.createQuery();
+      glContext.beginQuery(timer.TIME_ELAPSED_EXT, query);
+    }
+    const t0 = performance.now();
+    gl.render(built.scene, built.camera);
+    if (query !== null && timer !== null) glContext.endQuery(timer.TIME_ELAPSED_EXT);
+    gl.readRenderTargetPixels(glTarget, width >> 1, height >> 1, 1, 1, pixel);
+    const ms = performance.now() - t0;
+    return { ms, gpu: query === null ? null : await queryMs(query) };
+  }
+  const r = gpu[spec.backend];
+  if (r === undefined) throw new Error(`no ${spec.backend} backend: ${initErrors[spec.backend]}`);
+  const t0 = performance.now();
+  r.renderer.render(built.scene, built.camera);
+  await r.read();
+  const ms = performance.now() - t0;
+  if (!r.timestamps) return { ms, gpu: null };
+  const duration = await r.renderer.resolveTimestampsAsync('render');
+  return { ms, gpu: typeof duration === 'number' ? duration : null };
+}
+
+async function queryMs(q: WebGLQuery): Promise<number | null> {
+  for (let tries = 0; tries < 200; tries++) {
+    if (glContext.getQueryParameter(q, glContext.QUERY_RESULT_AVAILABLE)) break;
+    await new Promise((r) => setTimeout(r, 1));
+  }
+  const ok =
+    !glContext.getParameter(0x8fbb /* GPU_DISJOINT_EXT */) &&
+    glContext.getQueryParameter(q, glContext.QUERY_RESULT_AVAILABLE);
+  const ms = ok ? glContext.getQueryParameter(q, glContext.QUERY_RESULT) / 1e6 : null;
+  glContext.deleteQuery(q);
+  return ms;
+}
+
+/**
+ * Time `specs` interleaved frame by frame: `warmup` untimed frames of each (the first compiles it), then
+ * `frames` cycles that render one timed frame of every spec in turn, so that a change of the machine's load
+ * hits every spec of a cycle alike. A spec that throws is left out with its error.
+ */
+async function cycle(specs: BenchSpec[], frames: number, warmup: number): Promise<TimedResult[]> {
+  const results: TimedResult[] = specs.map(() => ({ frames: [], gpu: [] }));
+  const built: Array<Built | null> = specs.map((spec, k) => {
+    try {
+      return sceneOf(spec);
+    } catch (error) {
+      results[k].error = error instanceof Error ? error.message : String(error);
+      return null;
+    }
+  });
+  for (let k = 0; k < specs.length; k++) {
+    const b = built[k];
+    if (b === null) continue;
+    try {
+      for (let i = 0; i < warmup; i++) await frame(specs[k], b);
+    } catch (error) {
+      results[k].error = error instanceof Error ? error.message : String(error);
+    }
+  }
+  for (let i = 0; i < frames; i++) {
+    for (let k = 0; k < specs.length; k++) {
+      const b = built[k];
+      if (b === null || results[k].error !== undefined) continue;
+      const { ms, gpu: g } = await frame(specs[k], b);
+      results[k].frames.push(ms);
+      if (g !== null) results[k].gpu.push(g);
+    }
+  }
+  return results;
+}
+
+/** The generated shaders of `spec` (WebGPURenderer: WGSL or GLSL ES 3.0), for comparing variants. */
+async function shader(
+  spec: BenchSpec,
+): Promise<{ vertexShader: string | null; fragmentShader: string | null }> {
+  if (spec.backend === 'webgl') throw new Error('shader(): WebGPURenderer backends only');
+  const r = gpu[spec.backend];
+  if (r === undefined) throw new Error(`no ${spec.backend} backend`);
+  const built = sceneOf(spec);
+  return r.renderer.debug.getShaderAsync(built.scene, built.camera, built.mesh);
+}
+
+/** The colour at the canvas centre of one frame of `spec` (linear RGBA8), to check that a variant draws. */
+async function centre(spec: BenchSpec): Promise<number[]> {
+  const built = sceneOf(spec);
+  if (spec.backend === 'webgl') {
+    gl.render(built.scene, built.camera);
+    gl.readRenderTargetPixels(glTarget, width >> 1, height >> 1, 1, 1, pixel);
+    return [...pixel];
+  }
+  const r = gpu[spec.backend];
+  if (r === undefined) throw new Error(`no ${spec.backend} backend`);
+  r.renderer.render(built.scene, built.camera);
+  const data = await r.renderer.readRenderTargetPixelsAsync(r.target, width >> 1, height >> 1, 1, 1);
+  return [...(data as Uint8Array)];
+}
+
+const api = { info, cycle, shader, centre };
+declare global {
+  interface Window {
+    webgpuBench: typeof api;
+  }
+}
+window.webgpuBench = api;
+document.body.dataset.ready = '1';
