@@ -1,0 +1,326 @@
+// Harness for tests/material-webgpu-impostor.spec.ts: SphereImpostorNodeMaterial under WebGPURenderer (its WebGPU
+// backend and, with forceWebGL, its WebGL2 backend), rendered offscreen into a RenderTarget and read back, against
+// SphereImpostorMaterial under WebGLRenderer in the same scene (the WebGL impostor is tested against shade() and
+// renderReference() by its own spec), and against a subdivided mesh sphere for the depth it writes.
+import { PhongLight, ShadingMaterial } from '@shadelab/material';
+import { createImpostorQuad, SphereImpostorMaterial } from '@shadelab/material/impostor';
+import { ShadingNodeMaterial, SphereImpostorNodeMaterial } from '@shadelab/material/webgpu';
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
+import {
+  BoxGeometry,
+  type BufferGeometry,
+  InstancedMesh,
+  type Material,
+  Matrix4,
+  Mesh,
+  Object3D,
+  PerspectiveCamera,
+  Scene,
+  WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import { RenderTarget, WebGPURenderer } from 'three/webgpu';
+
+export type Backend = 'webgpu' | 'webgl2';
+export interface Variant {
+  lighting: 'phong' | 'blinn-phong';
+  celBands: number;
+}
+/**
+ * 'ellipsoid' (the lecture's 2, 1, 2 scale, rotated), 'sphere' (a unit sphere off the axis), 'instanced' (both as
+ * two instances of one InstancedMesh), 'box' (a unit sphere with a box through it: depth against a mesh),
+ * 'box-alone' and 'sphere-alone' (each of the two without the other).
+ */
+export type Scenario = 'ellipsoid' | 'sphere' | 'instanced' | 'box' | 'box-alone' | 'sphere-alone';
+/** What draws the sphere: an impostor, or (WebGPURenderer only) a level-6 subdivided mesh sphere. */
+export type SphereKind = 'impostor' | 'mesh';
+
+const SIZE = 112;
+const BACKGROUND = [0, 0, 255];
+const meshSphere: BufferGeometry = new SubdivisionSphereGeometry({ level: 6, base: 'octahedron' });
+const box: BufferGeometry = new BoxGeometry(2.4, 0.5, 1.2);
+
+function transforms(): { ellipsoid: Matrix4; sphere: Matrix4 } {
+  const o = new Object3D();
+  o.position.set(-0.4, 0.4, -0.5);
+  o.rotation.set(0.3, 0.5, 0.1);
+  o.scale.set(2, 1, 2);
+  o.updateMatrix();
+  const ellipsoid = o.matrix.clone();
+  o.position.set(1.3, -1.2, 0.8);
+  o.rotation.set(0, 0, 0);
+  o.scale.set(1, 1, 1);
+  o.updateMatrix();
+  return { ellipsoid, sphere: o.matrix.clone() };
+}
+
+/** The scene; `gpu` picks the node materials (WebGPURenderer) or the GLSL ones (WebGLRenderer). */
+function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 'impostor') {
+  const light = new PhongLight({ ambient: 0.2, diffuse: [1, 0.95, 0.85], specular: 0.9 });
+  light.position.set(-2, 3, 4);
+  light.attenuation = { a: 0.6, b: 0.1, c: 0.02 };
+  const options = { ...v, lights: [light], shininess: 24 };
+  const impostorMaterial: Material = gpu
+    ? new SphereImpostorNodeMaterial(options)
+    : new SphereImpostorMaterial(options);
+  const s = new Scene();
+  s.add(light);
+  const { ellipsoid, sphere } = transforms();
+  const quad = createImpostorQuad();
+  const add = (matrix: Matrix4) => {
+    let mesh: Mesh;
+    if (kind === 'mesh') {
+      mesh = new Mesh(meshSphere, new ShadingNodeMaterial({ ...options, shading: 'phong' }));
+    } else mesh = new Mesh(quad, impostorMaterial);
+    mesh.applyMatrix4(matrix);
+    s.add(mesh);
+  };
+  if (scenario === 'ellipsoid') add(ellipsoid);
+  if (scenario === 'sphere') add(sphere);
+  if (scenario === 'instanced') {
+    const instanced = new InstancedMesh(quad, impostorMaterial, 2);
+    instanced.setMatrixAt(0, ellipsoid);
+    instanced.setMatrixAt(1, sphere);
+    instanced.position.set(0.1, 0.2, -0.3); // the mesh's own matrix multiplies the instances'
+    s.add(instanced);
+  }
+  if (scenario === 'box' || scenario === 'sphere-alone') add(new Matrix4());
+  if (scenario === 'box' || scenario === 'box-alone') {
+    const boxOptions = { ...options, ka: [0.1, 0.5, 0.2], kd: [0.1, 0.6, 0.2] } as const;
+    const m = new Mesh(box, gpu ? new ShadingNodeMaterial(boxOptions) : new ShadingMaterial(boxOptions));
+    m.rotation.set(0.4, 0.6, 0.2);
+    m.position.set(0.1, 0, 0.45);
+    s.add(m);
+  }
+  const camera = new PerspectiveCamera(50, 1, 0.5, 20);
+  camera.position.set(0.5, 0.8, 6);
+  camera.lookAt(0, 0, 0);
+  s.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  return { scene: s, camera };
+}
+
+const renderers = new Map<Backend, Promise<WebGPURenderer>>();
+function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
+  let r = renderers.get(backend);
+  if (r === undefined) {
+    const renderer = new WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl2' });
+    r = renderer.init().then(() => renderer);
+    renderers.set(backend, r);
+  }
+  return r;
+}
+
+function dispose(s: Scene): void {
+  s.traverse((o) => {
+    if (o instanceof Mesh) (o.material as Material).dispose();
+  });
+}
+
+/** Rows bottom-up, RGBA8, linear (a render target has no output colour space conversion). */
+async function renderGpu(backend: Backend, v: Variant, scenario: Scenario, kind: SphereKind = 'impostor') {
+  const renderer = await gpuRenderer(backend);
+  const setup = scene(true, v, scenario, kind);
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  renderer.setRenderTarget(target);
+  renderer.setClearColor(0x0000ff, 1);
+  renderer.clear();
+  renderer.render(setup.scene, setup.camera);
+  const data = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+  renderer.setRenderTarget(null);
+  target.dispose();
+  dispose(setup.scene);
+  // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL): flip to bottom-up.
+  const pixels = new Uint8Array(data);
+  if ((renderer.backend as unknown as { isWebGPUBackend?: boolean }).isWebGPUBackend === true) {
+    const row = 4 * SIZE;
+    for (let y = 0; y < SIZE; y++) pixels.set(data.subarray((SIZE - 1 - y) * row, (SIZE - y) * row), y * row);
+  }
+  return pixels;
+}
+
+let gl: WebGLRenderer | null = null;
+function renderGl(v: Variant, scenario: Scenario): Uint8Array {
+  gl ??= new WebGLRenderer({ antialias: false });
+  const setup = scene(false, v, scenario);
+  const target = new WebGLRenderTarget(SIZE, SIZE);
+  gl.setRenderTarget(target);
+  gl.setClearColor(0x0000ff, 1);
+  gl.clear();
+  gl.render(setup.scene, setup.camera);
+  const pixels = new Uint8Array(4 * SIZE * SIZE);
+  gl.readRenderTargetPixels(target, 0, 0, SIZE, SIZE, pixels);
+  gl.setRenderTarget(null);
+  target.dispose();
+  dispose(setup.scene);
+  return pixels;
+}
+
+const isBackground = (p: Uint8Array, i: number): boolean =>
+  p[i] === BACKGROUND[0] && p[i + 1] === BACKGROUND[1] && p[i + 2] === BACKGROUND[2];
+const delta = (a: Uint8Array, b: Uint8Array, i: number, j = i): number =>
+  Math.max(Math.abs(a[i] - b[j]), Math.abs(a[i + 1] - b[j + 1]), Math.abs(a[i + 2] - b[j + 2]));
+
+/**
+ * A pixel on an edge of the reference picture: one of its 8 neighbours is background where it is not (or the
+ * reverse), or differs from it by more than `jump`/255 (the box/sphere boundary, a cel band's edge).
+ */
+function edgeMask(p: Uint8Array, jump: number): boolean[] {
+  const mask: boolean[] = [];
+  for (let y = 0; y < SIZE; y++) {
+    for (let x = 0; x < SIZE; x++) {
+      const i = 4 * (y * SIZE + x);
+      let edge = false;
+      for (let dy = -1; dy <= 1 && !edge; dy++) {
+        for (let dx = -1; dx <= 1 && !edge; dx++) {
+          const nx = x + dx;
+          const ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= SIZE || ny >= SIZE) continue;
+          const j = 4 * (ny * SIZE + nx);
+          edge = isBackground(p, i) !== isBackground(p, j) || delta(p, p, i, j) > jump;
+        }
+      }
+      mask.push(edge);
+    }
+  }
+  return mask;
+}
+
+/**
+ * WebGLRenderer + SphereImpostorMaterial against WebGPURenderer + SphereImpostorNodeMaterial in the same scene:
+ * covered pixels, pixels covered by one only (and how many of those are on the reference's silhouette), and
+ * max |Δ| in 1/255 over the pixels covered by both away from the reference's edges.
+ */
+async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
+  const a = renderGl(v, scenario);
+  const b = await renderGpu(backend, v, scenario);
+  // Cel bands and where two surfaces meet (the box and the sphere, the two instances) are edges within the picture.
+  const edges = edgeMask(a, v.celBands > 0 || scenario === 'box' || scenario === 'instanced' ? 24 : 255);
+  let covered = 0;
+  let coverageMismatch = 0;
+  let coverageMismatchOffEdge = 0;
+  let compared = 0;
+  let maxDelta = 0;
+  let differing = 0;
+  let worst: unknown = null;
+  for (let k = 0; k < SIZE * SIZE; k++) {
+    const i = 4 * k;
+    const ca = !isBackground(a, i);
+    const cb = !isBackground(b, i);
+    if (ca) covered++;
+    if (ca !== cb) {
+      coverageMismatch++;
+      if (!edges[k]) coverageMismatchOffEdge++;
+    }
+    if (!ca || !cb || edges[k]) continue;
+    compared++;
+    const d = delta(a, b, i);
+    if (d > maxDelta) {
+      maxDelta = d;
+      worst = {
+        x: k % SIZE,
+        y: Math.floor(k / SIZE),
+        gl: [...a.subarray(i, i + 3)],
+        gpu: [...b.subarray(i, i + 3)],
+      };
+    }
+    if (d > 2) differing++;
+  }
+  return { covered, coverageMismatch, coverageMismatchOffEdge, compared, maxDelta, differing, worst };
+}
+
+/**
+ * Depth: in the 'box' scene on WebGPURenderer, the pixels of the box's colour (green dominant) and of the
+ * sphere's (red dominant) with the sphere drawn as an impostor and as a level-6 mesh sphere, and in the scenes
+ * of each alone: the box is partly hidden by the sphere and the sphere partly by the box, as with the mesh.
+ */
+async function occlusion(backend: Backend, v: Variant) {
+  const count = (p: Uint8Array) => {
+    let boxPixels = 0;
+    let spherePixels = 0;
+    for (let i = 0; i < p.length; i += 4) {
+      if (isBackground(p, i)) continue;
+      if (p[i + 1] > p[i]) boxPixels++;
+      else spherePixels++;
+    }
+    return { boxPixels, spherePixels };
+  };
+  const impostor = await renderGpu(backend, v, 'box', 'impostor');
+  const mesh = await renderGpu(backend, v, 'box', 'mesh');
+  // Where the two pictures disagree on what is seen (box or sphere), away from the mesh picture's edges.
+  const edges = edgeMask(mesh, 24);
+  let disagree = 0;
+  let disagreeOffEdge = 0;
+  for (let k = 0; k < SIZE * SIZE; k++) {
+    const i = 4 * k;
+    const kindOf = (p: Uint8Array) => (isBackground(p, i) ? 0 : p[i + 1] > p[i] ? 1 : 2);
+    if (kindOf(impostor) !== kindOf(mesh)) {
+      disagree++;
+      if (!edges[k]) disagreeOffEdge++;
+    }
+  }
+  return {
+    impostor: count(impostor),
+    mesh: count(mesh),
+    boxAlone: count(await renderGpu(backend, v, 'box-alone')),
+    sphereAlone: count(await renderGpu(backend, v, 'sphere-alone')),
+    disagree,
+    disagreeOffEdge,
+  };
+}
+
+/** Which backend runs: proof that WebGPU is not a silent fallback to WebGL2. */
+async function backendInfo(backend: Backend) {
+  const renderer = await gpuRenderer(backend);
+  const b = renderer.backend as unknown as { isWebGPUBackend?: boolean; isWebGLBackend?: boolean };
+  return { isWebGPUBackend: b.isWebGPUBackend === true, isWebGLBackend: b.isWebGLBackend === true };
+}
+
+/** The message each impostor material throws for the same bad input. */
+function errors() {
+  const cases: Record<string, unknown>[] = [
+    { shading: 'flat' },
+    { shading: 'smooth' },
+    { lighting: 'toon' },
+    { celBands: 1 },
+    { celBands: 2.5 },
+    { celBands: 256 },
+    { celBands: '4' },
+    { ka: -1 },
+    { kd: [1, Number.NaN, 0] },
+    { ks: 'not a colour' },
+    { shininess: Number.NaN },
+    { shininess: -1 },
+    { lights: [{}] },
+    { lights: 'none' },
+  ];
+  const message = (make: () => unknown): string => {
+    try {
+      make();
+      return 'no error';
+    } catch (e) {
+      return `${(e as Error).constructor.name}: ${(e as Error).message}`;
+    }
+  };
+  const setters = (m: SphereImpostorNodeMaterial) => [
+    message(() => {
+      m.shading = 'gouraud';
+    }),
+    message(() => {
+      m.lighting = 'x' as never;
+    }),
+  ];
+  return {
+    rows: cases.map((options) => ({
+      options: JSON.stringify(options),
+      webgl: message(() => new SphereImpostorMaterial(options as never)),
+      node: message(() => new SphereImpostorNodeMaterial(options as never)),
+    })),
+    setters: setters(new SphereImpostorNodeMaterial()),
+    valid: message(() => new SphereImpostorNodeMaterial({ lighting: 'blinn-phong', celBands: 4, ka: 0.3 })),
+  };
+}
+
+const api = { backendInfo, crossRenderer, errors, occlusion };
+(window as unknown as { harness: typeof api }).harness = api;
+document.body.dataset.ready = '1';

@@ -1,0 +1,155 @@
+// SphereImpostorNodeMaterial (@shadelab/material/webgpu) under WebGPURenderer, on its WebGPU backend and its WebGL2
+// backend (forceWebGL), rendered offscreen into a RenderTarget and read back: against WebGLRenderer +
+// SphereImpostorMaterial in the same scene (coverage and colours), its depth against a mesh box and a subdivided
+// mesh sphere, and its bad-input errors against SphereImpostorMaterial's. Harness: playground/harness/webgpu-impostor.ts.
+import { expect, type Page, test } from '@playwright/test';
+import { shadelabUse } from '@shadelab/playwright';
+
+test.use(shadelabUse({ webgpu: true }));
+
+type Backend = 'webgpu' | 'webgl2';
+type Scenario = 'ellipsoid' | 'sphere' | 'instanced' | 'box';
+interface Variant {
+  lighting: 'phong' | 'blinn-phong';
+  celBands: number;
+}
+interface Counts {
+  boxPixels: number;
+  spherePixels: number;
+}
+interface Harness {
+  backendInfo(b: Backend): Promise<{ isWebGPUBackend: boolean; isWebGLBackend: boolean }>;
+  crossRenderer(
+    b: Backend,
+    v: Variant,
+    scenario: Scenario,
+  ): Promise<{
+    covered: number;
+    coverageMismatch: number;
+    coverageMismatchOffEdge: number;
+    compared: number;
+    maxDelta: number;
+    differing: number;
+    worst: unknown;
+  }>;
+  occlusion(
+    b: Backend,
+    v: Variant,
+  ): Promise<{
+    impostor: Counts;
+    mesh: Counts;
+    boxAlone: Counts;
+    sphereAlone: Counts;
+    disagree: number;
+    disagreeOffEdge: number;
+  }>;
+  errors(): {
+    rows: { options: string; webgl: string; node: string }[];
+    setters: string[];
+    valid: string;
+  };
+}
+
+/** Opens the harness; returns the page errors and console errors seen (none are expected). */
+async function open(page: Page): Promise<string[]> {
+  const problems: string[] = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
+      problems.push(m.text());
+  });
+  await page.goto('/harness/webgpu-impostor.html');
+  await page.waitForFunction(() => document.body.dataset.ready === '1');
+  return problems;
+}
+
+const VARIANTS: Variant[] = (['phong', 'blinn-phong'] as const).flatMap((lighting) =>
+  [0, 4].map((celBands) => ({ lighting, celBands })),
+);
+
+for (const backend of ['webgpu', 'webgl2'] as const) {
+  test(`${backend} backend: the impostor (an ellipsoid 2, 1, 2 and a unit sphere, one mesh each and two instances of an InstancedMesh) = WebGLRenderer + SphereImpostorMaterial: same coverage but for silhouette pixels, colours within 2/255 away from edges`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    const info = await page.evaluate(
+      (b) => (window as never as { harness: Harness }).harness.backendInfo(b),
+      backend,
+    );
+    expect(info.isWebGPUBackend).toBe(backend === 'webgpu');
+    expect(info.isWebGLBackend).toBe(backend === 'webgl2');
+    for (const scenario of ['ellipsoid', 'sphere', 'instanced'] as const) {
+      for (const variant of VARIANTS) {
+        const stats = await page.evaluate(
+          ([b, v, sc]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, sc),
+          [backend, variant, scenario] as const,
+        );
+        const label = `${backend} ${scenario} ${JSON.stringify(variant)} ${JSON.stringify(stats)}`;
+        expect(stats.covered, label).toBeGreaterThan(scenario === 'sphere' ? 500 : 2000);
+        // Coverage differs only on the silhouette (the two ray casts round differently there), and rarely.
+        expect(stats.coverageMismatchOffEdge, label).toBe(0);
+        expect(stats.coverageMismatch, label).toBeLessThanOrEqual(stats.covered * 0.01);
+        // Cel band edges are left out too.
+        expect(stats.compared, label).toBeGreaterThan(stats.covered * (variant.celBands > 0 ? 0.5 : 0.75));
+        expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+      }
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: the impostor writes its exact depth: a mesh box through it is hidden where it is behind, as with WebGLRenderer + SphereImpostorMaterial and as with a subdivided mesh sphere`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    for (const variant of [VARIANTS[0], VARIANTS[3]]) {
+      const stats = await page.evaluate(
+        ([b, v]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'box'),
+        [backend, variant] as const,
+      );
+      const label = `${backend} box ${JSON.stringify(variant)} ${JSON.stringify(stats)}`;
+      expect(stats.coverageMismatchOffEdge, label).toBe(0);
+      expect(stats.coverageMismatch, label).toBeLessThanOrEqual(stats.covered * 0.01);
+      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+      const o = await page.evaluate(
+        ([b, v]) => (window as never as { harness: Harness }).harness.occlusion(b, v),
+        [backend, variant] as const,
+      );
+      const olabel = `${backend} ${JSON.stringify(variant)} ${JSON.stringify(o)}`;
+      // Each hides part of the other.
+      expect(o.impostor.boxPixels, olabel).toBeGreaterThan(200);
+      expect(o.impostor.boxPixels, olabel).toBeLessThan(o.boxAlone.boxPixels - 150);
+      expect(o.impostor.spherePixels, olabel).toBeLessThan(o.sphereAlone.spherePixels - 150);
+      // As with the mesh sphere, but for the mesh's facets along the boundary.
+      expect(o.disagreeOffEdge, olabel).toBe(0);
+      expect(Math.abs(o.impostor.boxPixels - o.mesh.boxPixels), olabel).toBeLessThanOrEqual(
+        o.mesh.boxPixels * 0.03,
+      );
+    }
+    expect(problems).toEqual([]);
+  });
+}
+
+test("bad input throws SphereImpostorMaterial's errors (same class, same message but for the material's name)", async ({
+  page,
+}) => {
+  await open(page);
+  const { rows, setters, valid } = await page.evaluate(() =>
+    (window as never as { harness: Harness }).harness.errors(),
+  );
+  expect(rows.length).toBeGreaterThan(10);
+  for (const row of rows) {
+    expect(row.webgl, row.options).toMatch(
+      /^(TypeError|RangeError): (ShadingMaterial|SphereImpostorMaterial)\./,
+    );
+    expect(row.node, row.options).toMatch(/^(TypeError|RangeError): SphereImpostorNodeMaterial\./);
+    const strip = (s: string) => s.replace(/^(\w+): \w+\./, '$1: M.');
+    expect(strip(row.node), row.options).toBe(strip(row.webgl));
+  }
+  expect(setters).toEqual([
+    "TypeError: SphereImpostorNodeMaterial.shading must be 'phong' (a ray-cast sphere is shaded per fragment), got gouraud",
+    expect.stringMatching(/^TypeError: SphereImpostorNodeMaterial\.lighting must be/),
+  ]);
+  expect(valid).toBe('no error');
+});
