@@ -11,6 +11,7 @@ import {
   TURN_KEYS_TEXT,
   Viewer,
 } from './engine/Viewer';
+import { backendLabel, type GeneratedShader, type WebGPUStatus, webgpuNotes } from './engine/webgpu/status';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
   DEPTH_MODES,
@@ -22,6 +23,7 @@ import {
   validateState,
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
+import { GeneratedShader as GeneratedShaderPanel } from './ui/GeneratedShader';
 import { ShaderEditor } from './ui/ShaderEditor';
 import { Stats, StatsFeed } from './ui/Stats';
 import type { Update } from './ui/useFolder';
@@ -44,6 +46,9 @@ export function App() {
   const goodState = useRef<PlaygroundState | null>(null);
   const [renderError, setRenderError] = useState<string | null>(null);
   const [layout, setLayout] = useState<Layout>({ cols: 2, rows: 2 });
+  const [webgpu, setWebgpu] = useState<WebGPUStatus | null>(null);
+  const [gpuShader, setGpuShader] = useState<GeneratedShader | null>(null);
+  const webgpuMode = state.renderer === 'webgpu';
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -92,6 +97,8 @@ export function App() {
           }),
         onStats: (stats) => feed.push(stats),
         onContext: (status) => setContext(status),
+        onStatus: setWebgpu,
+        onShader: setGpuShader,
         onFirstFrame: (ms) => {
           feed.firstFrameMs = ms;
           console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
@@ -221,7 +228,7 @@ export function App() {
           aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
           onPointerDown={(e) => e.currentTarget.focus()}
         />
-        {state.view === 'compare' && (
+        {state.view === 'compare' && !webgpuMode && (
           <ol
             className="compare-labels"
             aria-label="comparison columns"
@@ -279,7 +286,22 @@ export function App() {
         >
           {sceneNote(state.scene)}
         </p>
-        {variant && state.scene === 'sphere' && (
+        {webgpuMode && (
+          <div className="renderer-note" data-testid="renderer-note">
+            <p data-testid="renderer-backend" role="status">
+              Renderer: {webgpu ? backendLabel(webgpu) : 'WebGPU mode: starting…'}
+            </p>
+            <ul>
+              {webgpuNotes(state).map((note) => (
+                <li key={note} data-testid="webgpu-note">
+                  {note}
+                </li>
+              ))}
+            </ul>
+          </div>
+        )}
+        {webgpuMode && <GeneratedShaderPanel shader={gpuShader} />}
+        {!webgpuMode && variant && state.scene === 'sphere' && (
           <ShaderEditor variant={variant} tryShader={tryShader} clearShader={clearShader} />
         )}
       </aside>

@@ -46,6 +46,7 @@ import {
 } from './packages';
 import { type ShaderCheck, ShaderProbe, type ShaderSource, tagLines } from './ShaderProbe';
 import { createScene, type DemoScene } from './scenes';
+import { type WebGPUEvents, WebGPUSwitch } from './webgpu/switch';
 
 /** What the stats panel shows. */
 export interface FrameStats {
@@ -73,7 +74,7 @@ export interface FrameStats {
 /** Errors by state section (`camera`, `sphere`, `lights`, …); a section with an error keeps its last good value. */
 export type SectionErrors = Partial<Record<string, string>>;
 
-export interface ViewerEvents {
+export interface ViewerEvents extends WebGPUEvents {
   /** The camera moved (movement keys) or the trackball turned; the new values for the state. */
   onView?: (view: {
     eye: Vec3;
@@ -181,6 +182,8 @@ export class Viewer {
   private disposed = false;
   private contextLost = false;
   private renderError = false;
+  /** WebGPU mode (the `renderer` field): three/webgpu on a canvas over this one, loaded on first use. */
+  private readonly webgpu: WebGPUSwitch;
 
   /** The depth mode the renderer really runs (see {@link activeDepth}). */
   readonly depth: DepthMode;
@@ -233,6 +236,7 @@ export class Viewer {
     canvas.addEventListener('webglcontextlost', this.onContextLost);
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
     canvas.addEventListener('keydown', this.onKeyDown);
+    this.webgpu = new WebGPUSwitch(this, events);
   }
 
   /**
@@ -390,6 +394,7 @@ export class Viewer {
       });
     }
     this.state = state;
+    if (changed('renderer')) this.webgpu.set(state.renderer === 'webgpu');
     if (changed('scene')) attempt('scene', () => this.applyScene(state.scene));
     if (this.demo && (changed('scene') || changed('material') || changed('lights'))) {
       attempt('material', () => {
@@ -481,7 +486,8 @@ export class Viewer {
   private layout(): Layout {
     const w = Math.max(1, this.canvas.clientWidth || this.canvas.width);
     const h = Math.max(1, this.canvas.clientHeight || this.canvas.height);
-    return this.state?.view === 'compare' ? compareLayout(w, h) : { cols: 1, rows: 1 };
+    // WebGPU mode draws the single view only.
+    return this.state?.view === 'compare' && !this.webgpu.active ? compareLayout(w, h) : { cols: 1, rows: 1 };
   }
 
   private aspect({ cols, rows }: Layout) {
@@ -623,6 +629,7 @@ export class Viewer {
   /** Renders now. */
   render() {
     if (this.disposed || this.contextLost || !this.state) return;
+    if (this.webgpu.active) return this.renderWebGPU();
     const t0 = performance.now();
     const { renderer, canvas } = this;
     const w = Math.max(1, canvas.clientWidth || canvas.width);
@@ -652,14 +659,7 @@ export class Viewer {
     this.endGpuQuery(gl, query);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, _pixel);
     const cpuMs = performance.now() - t0;
-    this.frames += 1;
-    canvas.dataset['frames'] = String(this.frames);
-    if (!this.firstFrameReported) {
-      this.firstFrameReported = true;
-      const ms = performance.now();
-      canvas.dataset['firstFrameMs'] = ms.toFixed(1);
-      this.events.onFirstFrame?.(ms);
-    }
+    this.countFrame();
     this.capPrograms();
     this.events.onStats?.(this.stats(cpuMs));
     // The material settles some defines while drawing (analytic sphere normals, attenuation).
@@ -668,6 +668,30 @@ export class Viewer {
       this.reportedVariant = key;
       this.captureGenerated();
       this.events.onVariant?.();
+    }
+  }
+
+  private countFrame() {
+    this.frames += 1;
+    this.canvas.dataset['frames'] = String(this.frames);
+    if (!this.firstFrameReported) {
+      this.firstFrameReported = true;
+      const ms = performance.now();
+      this.canvas.dataset['firstFrameMs'] = ms.toFixed(1);
+      this.events.onFirstFrame?.(ms);
+    }
+  }
+
+  /** WebGPU mode's frame (webgpu/WebGPUView.ts): the same camera and scene on WebGPURenderer. */
+  private renderWebGPU() {
+    try {
+      this.updateProjection(this.aspect(this.layout()));
+      if (this.webgpu.render()) this.countFrame();
+      if (this.renderError) this.events.onRenderError?.(null);
+      this.renderError = false;
+    } catch (error) {
+      this.renderError = true;
+      this.events.onRenderError?.(error instanceof Error ? error.message : String(error));
     }
   }
 
@@ -879,6 +903,7 @@ export class Viewer {
 
   dispose() {
     this.disposed = true;
+    this.webgpu.dispose();
     if (this.scheduled) cancelAnimationFrame(this.scheduled);
     this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);

@@ -97,6 +97,8 @@ export const DEPTH_MODES = [
 ] as const satisfies readonly DepthModeRequest[];
 /** Every scene, in the order the picker lists them. */
 export const SCENES = ['sphere', 'instanced', 'skinned', 'textured', 'lights'] as const;
+/** The renderers the playground switches between (WebGPURenderer runs its WebGL2 backend without WebGPU). */
+export const RENDERERS = ['webgl', 'webgpu'] as const;
 const PROJECTIONS = ['perspective', 'orthographic'] as const satisfies readonly ProjectionType[];
 const MAPPINGS = ['arcball', 'bell'] as const satisfies readonly BallMapping[];
 
@@ -143,6 +145,14 @@ export const STATE_FIELDS = {
   }),
   /** The scene drawn (the lecture's sphere by default); the picker's labels are `SCENE_LABELS`. */
   scene: choice(SCENES, 'sphere', { label: 'scene' }),
+  /**
+   * three's WebGLRenderer with ShadingMaterial, or WebGPURenderer with ShadingNodeMaterial (its WebGPU backend, or
+   * its WebGL2 backend where WebGPU is missing); `engine/webgpu/` says what WebGPU mode draws.
+   */
+  renderer: choice(RENDERERS, 'webgl', {
+    label: 'renderer',
+    options: { WebGL: 'webgl', 'WebGPU (WebGL2 fallback)': 'webgpu' },
+  }),
   material: {
     shading: choice(SHADINGS, 'phong', { label: 'shading' }, '@shadelab/material SHADINGS'),
     lighting: choice(LIGHTINGS, 'blinn-phong', { label: 'lighting' }, '@shadelab/material LIGHTINGS'),
@@ -244,6 +254,7 @@ export const STATE_FIELDS = {
 export const FOLDER_OF = {
   view: 'View',
   scene: 'View',
+  renderer: 'View',
   material: 'Material',
   lights: 'Lights',
   sphere: 'Sphere',
