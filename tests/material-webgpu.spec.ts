@@ -9,7 +9,17 @@ import { shadelabUse } from '@shadelab/playwright';
 test.use(shadelabUse({ webgpu: true }));
 
 type Backend = 'webgpu' | 'webgl2';
-type Scenario = 'lecture' | 'attenuated' | 'three-lights' | 'analytic' | 'indexed' | 'instanced' | 'fog';
+type Scenario =
+  | 'lecture'
+  | 'attenuated'
+  | 'three-lights'
+  | 'analytic'
+  | 'indexed'
+  | 'instanced'
+  | 'fog'
+  | 'prepared'
+  | 'prepared-other'
+  | 'flattened';
 interface Variant {
   shading: 'flat' | 'gouraud' | 'phong';
   lighting: 'phong' | 'blinn-phong';
@@ -40,6 +50,7 @@ interface Harness {
   errors(): { options: string; webgl: string; node: string }[];
   fogEffect(b: Backend, v: Variant): Promise<number>;
   inPlaceEdits(b: Backend): Promise<{ errors: string[]; sameAsFirst: boolean; index: number }[]>;
+  sceneLights(b: Backend): Promise<Record<string, boolean>>;
 }
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
@@ -127,6 +138,73 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
         }
       }
     }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: a flatShadingGeometry made for this backend's provoking vertex is one exact colour per face; one made for the other backend is lit by derivatives with one warning`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    const warnings: string[] = [];
+    page.on('console', (m) => {
+      if (m.type() === 'warning') warnings.push(m.text());
+    });
+    const flat = VARIANTS.filter((v) => v.shading === 'flat');
+    for (const scenario of ['prepared', 'prepared-other'] as const) {
+      for (const variant of flat) {
+        const stats = await page.evaluate(
+          ([b, v, sc]) => (window as never as { harness: Harness }).harness.compare(b, v, sc),
+          [backend, variant, scenario] as const,
+        );
+        const label = `${backend} ${scenario} ${JSON.stringify(variant)} ${JSON.stringify(stats.worst)}`;
+        expect(stats.compared, label).toBeGreaterThan(2000);
+        expect(stats.mismatches, label).toBe(0);
+        expect(stats.maxError, label).toBeLessThanOrEqual(2);
+        if (scenario === 'prepared') {
+          expect(stats.facesChecked, label).toBeGreaterThan(40);
+          expect(stats.facesMultiColour, label).toBe(0);
+        }
+      }
+    }
+    const [made, wanted] = backend === 'webgpu' ? ['last', 'first'] : ['first', 'last'];
+    expect(warnings).toEqual([
+      `ShadingNodeMaterial: this flatShadingGeometry was made with provokingVertex '${made}', but this backend's is the ${wanted}: flat shading lights it per fragment with the face normal. Make it with flatShadingGeometry(geometry, { provokingVertex: '${wanted}' })`,
+    ]);
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: a mesh scaled to y = 0 (a disc) is lit with the robust normal matrix, as WebGLRenderer + ShadingMaterial lights it`, async ({
+    page,
+  }) => {
+    const problems = await open(page);
+    for (const variant of VARIANTS.filter((v) => v.celBands === 0 && v.lighting === 'phong')) {
+      const stats = await page.evaluate(
+        ([b, v]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'flattened'),
+        [backend, variant] as const,
+      );
+      const label = `${backend} flattened ${JSON.stringify(variant)}`;
+      expect(stats.covered, label).toBeGreaterThan(3000);
+      expect(stats.coverageMismatch, label).toBe(0);
+      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: a PhongLight added to or removed from the scene lights the material from that frame on; a material's lights list excludes the scene's others`, async ({
+    page,
+  }) => {
+    const problems = await open(page);
+    const result = await page.evaluate(
+      (b) => (window as never as { harness: Harness }).harness.sceneLights(b),
+      backend,
+    );
+    expect(result).toEqual({
+      addedChanges: true,
+      addedAsFresh: true,
+      removedAsFirst: true,
+      listedAsFirst: true,
+    });
     expect(problems).toEqual([]);
   });
 

@@ -3,6 +3,7 @@
 // headless loses the device) and read back; compared with shade() per pixel and with ShadingMaterial under
 // WebGLRenderer.
 import {
+  flatShadingGeometry,
   PhongLight,
   type ShadeLight,
   type ShadeMaterial,
@@ -51,7 +52,10 @@ export type Backend = 'webgpu' | 'webgl2';
  * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
  * directional, point and spot lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals),
  * 'indexed' (an indexed sphere: flat shading by derivatives) and 'instanced' (one instance of an InstancedMesh
- * carrying the transform: flat shading by derivatives), 'fog' (the lecture's scene in three's Fog).
+ * carrying the transform: flat shading by derivatives), 'fog' (the lecture's scene in three's Fog), 'prepared'
+ * (the indexed sphere through flatShadingGeometry for the backend's provoking vertex: one colour per face),
+ * 'prepared-other' (made for the other backend's: by derivatives, with a warning), 'flattened' (the lecture's
+ * scene with the sphere's y scale 0: a disc, whose normal only the robust normal matrix gives).
  */
 export type Scenario =
   | 'lecture'
@@ -60,7 +64,10 @@ export type Scenario =
   | 'analytic'
   | 'indexed'
   | 'instanced'
-  | 'fog';
+  | 'fog'
+  | 'prepared'
+  | 'prepared-other'
+  | 'flattened';
 
 const SIZE = 128;
 const geometry: BufferGeometry = new SubdivisionSphereGeometry({
@@ -79,6 +86,21 @@ const bareGeometry: BufferGeometry = new SubdivisionSphereGeometry({
   indexed: false,
   normals: 'none',
 });
+
+/** The provoking vertex of flat varyings: the first on WebGPU, the last on WebGL2. */
+const provoking = (backend: Backend | 'webgl'): 'first' | 'last' => (backend === 'webgpu' ? 'first' : 'last');
+const prepared = {
+  first: flatShadingGeometry(indexedGeometry, { provokingVertex: 'first' }),
+  last: flatShadingGeometry(indexedGeometry, { provokingVertex: 'last' }),
+};
+
+function geometryOf(scenario: Scenario, backend: Backend | 'webgl'): BufferGeometry {
+  if (scenario === 'analytic') return bareGeometry;
+  if (scenario === 'indexed') return indexedGeometry;
+  if (scenario === 'prepared') return prepared[provoking(backend)];
+  if (scenario === 'prepared-other') return prepared[provoking(backend) === 'first' ? 'last' : 'first'];
+  return geometry;
+}
 
 /** three's lights of the 'three-lights' scenario, with what shade() is given for each. */
 function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
@@ -134,6 +156,7 @@ function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
 function scene(
   material: Material,
   scenario: Scenario = 'lecture',
+  backend: Backend | 'webgl' = 'webgl',
 ): {
   scene: Scene;
   camera: PerspectiveCamera;
@@ -141,7 +164,7 @@ function scene(
   lights: (ShadeLight | ShadeThreeLight)[];
 } {
   const transform = new Object3D();
-  transform.scale.set(1.2, 1, 1.2);
+  transform.scale.set(1.2, scenario === 'flattened' ? 0 : 1, 1.2);
   transform.rotation.set(0.3, 0.5, 0);
   transform.updateMatrix();
   let mesh: Mesh;
@@ -150,10 +173,7 @@ function scene(
     instanced.setMatrixAt(0, transform.matrix);
     mesh = instanced;
   } else {
-    mesh = new Mesh(
-      scenario === 'analytic' ? bareGeometry : scenario === 'indexed' ? indexedGeometry : geometry,
-      material,
-    );
+    mesh = new Mesh(geometryOf(scenario, backend), material);
     mesh.applyMatrix4(transform.matrix);
   }
   const s = new Scene();
@@ -209,7 +229,7 @@ function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
 async function renderGpu(backend: Backend, v: Variant, scenario: Scenario = 'lecture') {
   const renderer = await gpuRenderer(backend);
   const material = new ShadingNodeMaterial({ ...v, shininess: shininessOf(scenario), lights: [] });
-  const setup = scene(material, scenario);
+  const setup = scene(material, scenario, backend);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
   renderer.setRenderTarget(target);
   renderer.setClearColor(0x0000ff, 1);
@@ -280,12 +300,12 @@ interface Stats {
 async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lecture'): Promise<Stats> {
   const { pixels, setup } = await renderGpu(backend, v, scenario);
   const { mesh, camera, lights } = setup;
-  // Triangle k of the indexed sphere is triangle k of its soup.
-  const positions = (scenario === 'indexed' ? indexedGeometry.toNonIndexed() : geometry).getAttribute(
-    'position',
-  );
+  // Triangle k of the indexed sphere is triangle k of its soup (and of its flatShadingGeometry, corners rotated).
+  const fromIndexed = scenario === 'indexed' || scenario === 'prepared' || scenario === 'prepared-other';
+  const soup = fromIndexed ? indexedGeometry.toNonIndexed() : geometry;
+  const positions = soup.getAttribute('position');
   // Flat shading by derivatives: per fragment, the face normal at the fragment's position.
-  const perFragmentFlat = scenario === 'indexed' || scenario === 'instanced';
+  const perFragmentFlat = scenario === 'indexed' || scenario === 'instanced' || scenario === 'prepared-other';
   const matrix = mesh.matrixWorld.clone();
   if (mesh instanceof InstancedMesh) {
     const instance = new Matrix4();
@@ -293,10 +313,7 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
     matrix.multiply(instance);
   }
   // The analytic sphere's normal is its position.
-  const normals =
-    scenario === 'analytic'
-      ? positions
-      : (scenario === 'indexed' ? indexedGeometry.toNonIndexed() : geometry).getAttribute('normal');
+  const normals = scenario === 'analytic' ? positions : soup.getAttribute('normal');
   const count = positions.count;
   const world: Vector3[] = [];
   const worldNormal: Vector3[] = [];
@@ -558,6 +575,54 @@ async function inPlaceEdits(backend: Backend) {
   }
 }
 
-const api = { backendInfo, compare, crossRenderer, errors, fogEffect, inPlaceEdits };
+/**
+ * The scene's PhongLights followed frame by frame, and a material's `lights` list: pixels of (0) the lecture's
+ * scene, (1) after adding a second PhongLight, (2) a new material in that two-light scene, (3) after removing
+ * it again, (4) the two-light scene drawn by a material listing only the first light.
+ */
+async function sceneLights(backend: Backend) {
+  const renderer = await gpuRenderer(backend);
+  const material = new ShadingNodeMaterial({ lights: [] });
+  const { scene: s, camera, mesh } = scene(material);
+  const first = s.children.find((c) => c instanceof PhongLight) as PhongLight;
+  const second = new PhongLight({ ambient: 0, diffuse: [0.2, 0.6, 1], specular: 0.3 });
+  second.position.set(4, -2, 3);
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  const frame = async () => {
+    renderer.setRenderTarget(target);
+    renderer.setClearColor(0x0000ff, 1);
+    renderer.clear();
+    renderer.render(s, camera);
+    const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+    renderer.setRenderTarget(null);
+    return Array.from(pixels);
+  };
+  const frames: number[][] = [];
+  frames.push(await frame());
+  s.add(second);
+  s.updateMatrixWorld();
+  frames.push(await frame());
+  const fresh = new ShadingNodeMaterial({ lights: [] });
+  mesh.material = fresh;
+  frames.push(await frame());
+  mesh.material = material;
+  s.remove(second);
+  frames.push(await frame());
+  s.add(second);
+  const listed = new ShadingNodeMaterial({ lights: [first] });
+  mesh.material = listed;
+  frames.push(await frame());
+  target.dispose();
+  for (const m of [material, fresh, listed]) m.dispose();
+  const same = (a: number[], b: number[]) => a.every((v, i) => v === b[i]);
+  return {
+    addedChanges: !same(frames[0], frames[1]),
+    addedAsFresh: same(frames[1], frames[2]),
+    removedAsFirst: same(frames[3], frames[0]),
+    listedAsFirst: same(frames[4], frames[0]),
+  };
+}
+
+const api = { backendInfo, compare, crossRenderer, errors, fogEffect, inPlaceEdits, sceneLights };
 (window as unknown as { harness: typeof api }).harness = api;
 document.body.dataset.ready = '1';

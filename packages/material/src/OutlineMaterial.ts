@@ -13,8 +13,8 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
+import { SPHERE_FLAG } from './geometryFlags.js';
 import { fragmentShader, vertexShader } from './OutlineMaterial.glsl.js';
-import { SPHERE_FLAG } from './ShadingMaterial.js';
 import { type ColorInput, checkNonNegative, setColor } from './validate.js';
 
 /** Options of {@link OutlineMaterial}. */

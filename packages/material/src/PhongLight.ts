@@ -39,6 +39,12 @@ const NO_ATTENUATION: Attenuation = Object.freeze({ a: 1, b: 0, c: 0 });
 export class PhongLight extends Object3D {
   /** Always true: lets code tell a PhongLight from other objects without `instanceof`. */
   readonly isPhongLight = true;
+  /**
+   * Always true: three's renderers list a PhongLight with the scene's lights. `WebGPURenderer` lights node
+   * materials with it through the light node that `@shadelab/material/webgpu` registers; `WebGLRenderer`
+   * passes over light types it does not know (ShadingMaterial finds PhongLights itself).
+   */
+  readonly isLight = true;
   /** three's type name: `'PhongLight'`. */
   override type = 'PhongLight';
 

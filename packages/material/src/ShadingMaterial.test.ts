@@ -187,6 +187,17 @@ describe('ShadingMaterial variants (defines) and recompiles', () => {
     expect(m.defines.FLAT_CORNERS).toBe('');
     expect(m.defines.FLAT_DERIVATIVES).toBeUndefined();
     expect(m.uniforms.facePositions.value).toBeNull();
+    // Made for WebGPU's provoking vertex (the first): WebGL's is the last, so derivatives, and one warning.
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    const forWebGPU = flatShadingGeometry(indexed, { provokingVertex: 'first' });
+    draw(m, new Mesh(forWebGPU, m));
+    draw(m, new Mesh(forWebGPU, m));
+    expect(m.defines.FLAT_DERIVATIVES).toBe('');
+    expect(m.defines.FLAT_CORNERS).toBeUndefined();
+    expect(warn.mock.calls.map((c) => String(c[0]))).toEqual([
+      expect.stringMatching(/provokingVertex 'first' \(WebGPU's\); WebGL's is the last/),
+    ]);
+    warn.mockRestore();
     const bare = indexed.toNonIndexed();
     draw(m, new Mesh(bare, m)); // the soup way: positions only, fetched from a texture
     expect(m.defines.FLAT_CORNERS).toBeUndefined();

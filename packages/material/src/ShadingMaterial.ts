@@ -25,59 +25,30 @@ import {
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { eyeOf } from './eyeOf.js';
 import { facePositionTexture, faceSkinTexture } from './facePositionTexture.js';
+import { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
+import {
+  checkCelBands,
+  checkLighting,
+  checkPhongLights,
+  checkShading,
+  SHADING_DEFAULTS,
+  type Shading,
+  type ShadingOptions,
+} from './options.js';
 import { PhongLight } from './PhongLight.js';
 import { fragmentShader, vertexShader, withLightCount } from './ShadingMaterial.glsl.js';
-import { LIGHTINGS, type Lighting } from './shade.js';
+import type { Lighting } from './shade.js';
 import {
   type ColorInput,
   checkColorChannels,
   checkNonNegative,
-  checkOneOf,
   checkTexture,
   checkUnit,
   setColor,
 } from './validate.js';
 
-/**
- * Where the lighting equation is evaluated (the lecture's shading):
- * - `'flat'`: once per face, at the triangle's centroid with its face normal; one colour per face (a plain
- *   indexed geometry: per fragment, with its triangle's face normal from screen-space derivatives);
- * - `'gouraud'`: per vertex, colours interpolated;
- * - `'phong'`: per fragment, normals interpolated and renormalised.
- */
-export type Shading = 'flat' | 'gouraud' | 'phong';
-
-/** Every value of {@link Shading}, in documentation order. */
-export const SHADINGS: readonly Shading[] = ['flat', 'gouraud', 'phong'];
-
-/** Largest accepted `celBands`. */
-export const MAX_CEL_BANDS = 255;
-
 /** Options of {@link ShadingMaterial}; every one is also a validated property of the material. */
-export interface ShadingMaterialOptions {
-  /** Where the lighting is evaluated. @default 'phong' */
-  shading?: Shading;
-  /** The lighting equation. @default 'phong' */
-  lighting?: Lighting;
-  /** 0 = off; N in 2 … 255 = cel shading with N diffuse shades and a hard-edged highlight. @default 0 */
-  celBands?: number;
-  /**
-   * ka, ambient reflectance, linear. A number is a grey level (`0.5` = (0.5, 0.5, 0.5)), never a hex colour; a
-   * colour is a CSS string (sRGB), a `THREE.Color` or linear `[r, g, b]` (see {@link ColorInput}).
-   * @default [0.6, 0.35, 0.2]
-   */
-  ka?: ColorInput;
-  /** kd, diffuse reflectance, linear; a number is a grey level (see {@link ColorInput}). @default [0.6, 0.35, 0.2] */
-  kd?: ColorInput;
-  /** ks, specular reflectance, linear; a number is a grey level (see {@link ColorInput}). @default 0.5 */
-  ks?: ColorInput;
-  /** α, the specular exponent: finite, ≥ 0 (0⁰ = 1: shininess 0 gives a uniform highlight). @default 32 */
-  shininess?: number;
-  /**
-   * The PhongLights that light the material; any number (each costs 4 uniform vectors; a GPU has ≥ 224). Empty:
-   * every visible PhongLight in the rendered scene. @default []
-   */
-  lights?: readonly PhongLight[];
+export interface ShadingMaterialOptions extends ShadingOptions {
   /**
    * three's `map`: a colour texture whose texel (linear, decoded as three decodes its `colorSpace`) multiplies
    * ka and kd, never ks; its alpha multiplies the opacity. @default null
@@ -109,17 +80,11 @@ export interface ShadingMaterialOptions {
   normalScale?: Vector2;
 }
 
-/** The `userData` flag that marks a geometry as a sphere centred at its origin (see {@link ShadingMaterial}). */
-export const SPHERE_FLAG = 'isSphere';
+/** The geometries already warned about their provoking vertex. */
+const _warnedProvoking = /* @__PURE__ */ new WeakSet<BufferGeometry>();
 
-/** The attributes flat shading reads from a geometry made by `flatShadingGeometry`: a face's other two corners. */
-export const FLAT_CORNERS = ['flatCornerA', 'flatCornerB'] as const;
-
-/**
- * The attribute of a `flatShadingGeometry` made from a skinned or morphed geometry: the vertex indices of a
- * face's other two corners, so that flat shading moves them as three moves their vertices.
- */
-export const FLAT_CORNER_INDEX = 'flatCornerIndex';
+/** The class named in error messages. */
+const OWNER = 'ShadingMaterial';
 
 /** What a scene holds for the material, found once per frame (see {@link sceneLightsOf}). */
 interface SceneLights {
@@ -150,14 +115,15 @@ function sceneLightsOf(renderer: WebGLRenderer | null, scene: Scene | null): Sce
   if (cached !== undefined && cached.frame === frame) return cached;
   const found: SceneLights = { frame, threeLights: false, phong: [], cutoff: false, inverseSquare: true };
   scene.traverseVisible((object) => {
-    if ((object as Light).isLight === true) {
+    if (object instanceof PhongLight) found.phong.push(object);
+    else if ((object as Light).isLight === true) {
       found.threeLights = true;
       const point = object as PointLight;
       if (point.isPointLight === true || (object as SpotLight).isSpotLight === true) {
         if (point.distance > 0) found.cutoff = true;
         if (point.decay !== 2) found.inverseSquare = false;
       }
-    } else if (object instanceof PhongLight) found.phong.push(object);
+    }
   });
   _sceneLights.set(scene, found);
   return found;
@@ -292,13 +258,13 @@ export class ShadingMaterial extends ShaderMaterial {
    *   {@link ShadingMaterialOptions}).
    */
   constructor({
-    shading = 'phong',
-    lighting = 'phong',
-    celBands = 0,
-    ka = [0.6, 0.35, 0.2],
-    kd = [0.6, 0.35, 0.2],
-    ks = [0.5, 0.5, 0.5],
-    shininess = 32,
+    shading = SHADING_DEFAULTS.shading,
+    lighting = SHADING_DEFAULTS.lighting,
+    celBands = SHADING_DEFAULTS.celBands,
+    ka = SHADING_DEFAULTS.ka,
+    kd = SHADING_DEFAULTS.kd,
+    ks = SHADING_DEFAULTS.ks,
+    shininess = SHADING_DEFAULTS.shininess,
     lights = [],
     map = null,
     vertexColors = false,
@@ -424,7 +390,7 @@ export class ShadingMaterial extends ShaderMaterial {
     return this.#shading;
   }
   set shading(value: Shading) {
-    this.#shading = checkOneOf('ShadingMaterial.shading', value, SHADINGS);
+    this.#shading = checkShading(OWNER, value);
     this.#syncDefines();
   }
 
@@ -433,7 +399,7 @@ export class ShadingMaterial extends ShaderMaterial {
     return this.#lighting;
   }
   set lighting(value: Lighting) {
-    this.#lighting = checkOneOf('ShadingMaterial.lighting', value, LIGHTINGS);
+    this.#lighting = checkLighting(OWNER, value);
     this.#syncDefines();
   }
 
@@ -447,15 +413,7 @@ export class ShadingMaterial extends ShaderMaterial {
     return this.#celBands;
   }
   set celBands(value: number) {
-    if (typeof value !== 'number') {
-      throw new TypeError(`ShadingMaterial.celBands must be a number, got ${String(value)}`);
-    }
-    if (!Number.isInteger(value) || value === 1 || value < 0 || value > MAX_CEL_BANDS) {
-      throw new RangeError(
-        `ShadingMaterial.celBands must be 0 (off) or an integer in 2 … ${MAX_CEL_BANDS}, got ${value}`,
-      );
-    }
-    this.#celBands = value;
+    this.#celBands = checkCelBands(OWNER, value);
     this.#syncDefines();
   }
 
@@ -506,15 +464,7 @@ export class ShadingMaterial extends ShaderMaterial {
     return this.#lights;
   }
   set phongLights(value: readonly PhongLight[]) {
-    if (!Array.isArray(value)) {
-      throw new TypeError(`ShadingMaterial.lights must be an array of PhongLight, got ${String(value)}`);
-    }
-    value.forEach((light, i) => {
-      if (!(light instanceof PhongLight)) {
-        throw new TypeError(`ShadingMaterial.lights[${i}] must be a PhongLight, got ${String(light)}`);
-      }
-    });
-    this.#lights = Object.freeze([...value]);
+    this.#lights = checkPhongLights(OWNER, value);
     this.#active = this.#lights;
     this.#attenuation = this.#lights.some((light) => light.attenuates);
     this.#syncDefines();
@@ -540,9 +490,19 @@ export class ShadingMaterial extends ShaderMaterial {
       const deformed = skinned || geometry.morphAttributes.position !== undefined;
       // An indexed geometry without the corners its deformation needs: per-fragment lighting with the face
       // normal from screen-space derivatives (no preparation step, not one exact colour per face).
+      // A flatShadingGeometry made for WebGPU's provoking vertex (the first) puts each face on a vertex WebGL
+      // does not take its flat varyings from: the same, with a warning (once per geometry).
+      const firstProvoking = geometry.userData[FLAT_PROVOKING_VERTEX] === 'first';
+      if (firstProvoking && !_warnedProvoking.has(geometry)) {
+        _warnedProvoking.add(geometry);
+        console.warn(
+          "ShadingMaterial: this flatShadingGeometry was made with provokingVertex 'first' (WebGPU's); WebGL's is the last, so flat shading lights it per fragment with the face normal. Make it with flatShadingGeometry(geometry) for WebGLRenderer",
+        );
+      }
       this.#flatDerivatives =
         indexed &&
-        (geometry.getAttribute(FLAT_CORNERS[0]) === undefined ||
+        (firstProvoking ||
+          geometry.getAttribute(FLAT_CORNERS[0]) === undefined ||
           (deformed && geometry.getAttribute(FLAT_CORNER_INDEX) === undefined));
       this.#flatCorners = indexed && !this.#flatDerivatives;
       u.facePositions.value = indexed ? null : facePositionTexture(geometry);

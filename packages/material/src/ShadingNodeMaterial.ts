@@ -1,6 +1,7 @@
 // ShadingMaterial's shading on three's WebGPURenderer (both of its backends): a node material with a lighting
 // model of the lecture's equation, PhongLights as light nodes beside three's own lights.
 import {
+  attribute,
   cameraViewMatrix,
   float,
   ivec2,
@@ -10,13 +11,12 @@ import {
   min,
   mix,
   modelViewMatrix,
+  negateOnBackSide,
   normalLocal,
-  normalView,
   positionLocal,
   positionView,
   select,
   textureLoad,
-  transformNormalToView,
   uniform,
   varying,
   vec3,
@@ -31,17 +31,26 @@ import {
   FloatType,
   type Light,
   LightingModel,
+  Matrix3,
   NearestFilter,
   NodeMaterial,
   NodeUpdateType,
-  type Object3D,
   RGBAFormat,
-  type Scene,
   Vector3,
 } from 'three/webgpu';
-import { checkCelBands, checkLighting, checkPhongLights, checkShading, SHADING_DEFAULTS } from './options.js';
+import { computeNormalMatrix } from './computeNormalMatrix.js';
+import { FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
+import {
+  checkCelBands,
+  checkLighting,
+  checkPhongLights,
+  checkShading,
+  SHADING_DEFAULTS,
+  type Shading,
+  type ShadingOptions,
+} from './options.js';
 import { PhongLight } from './PhongLight.js';
-import { type Shading, SPHERE_FLAG } from './ShadingMaterial.js';
+import { provokingVertexOf } from './provokingVertexOf.js';
 import { type Lighting, MIN_ATTENUATION_DENOMINATOR } from './shade.js';
 import { type ColorInput, checkColorChannels, checkNonNegative, setColor } from './validate.js';
 
@@ -50,25 +59,8 @@ type N = any;
 
 const OWNER = 'ShadingNodeMaterial';
 
-/** Options of {@link ShadingNodeMaterial}: those of `ShadingMaterial` that the node material has so far. */
-export interface ShadingNodeMaterialOptions {
-  /** Where the lighting is evaluated. @default 'phong' */
-  shading?: Shading;
-  /** The lighting equation. @default 'phong' */
-  lighting?: Lighting;
-  /** 0 = off; N in 2 … 255 = cel shading with N diffuse shades and a hard-edged highlight. @default 0 */
-  celBands?: number;
-  /** ka, ambient reflectance, linear; a number is a grey level (see `ColorInput`). @default [0.6, 0.35, 0.2] */
-  ka?: ColorInput;
-  /** kd, diffuse reflectance, linear; a number is a grey level (see `ColorInput`). @default [0.6, 0.35, 0.2] */
-  kd?: ColorInput;
-  /** ks, specular reflectance, linear; a number is a grey level (see `ColorInput`). @default 0.5 */
-  ks?: ColorInput;
-  /** α, the specular exponent: finite, ≥ 0 (0⁰ = 1). @default 32 */
-  shininess?: number;
-  /** The PhongLights that light the material. Empty: every visible PhongLight in the rendered scene. @default [] */
-  lights?: readonly PhongLight[];
-}
+/** Options of {@link ShadingNodeMaterial}: the lecture's options, the same as `ShadingMaterial`'s. */
+export type ShadingNodeMaterialOptions = ShadingOptions;
 
 /** A PhongLight's uniforms, refreshed once per frame (its world position is read by three's light nodes). */
 class PhongLightNode extends AnalyticLightNode<Light> {
@@ -120,6 +112,10 @@ class PhongLightNode extends AnalyticLightNode<Light> {
   }
 }
 
+// three builds a PhongLight in the rendered scene with this node, as it builds its own lights with theirs.
+(PhongLight.prototype as unknown as { _lightNode: typeof PhongLightNode })._lightNode = PhongLightNode;
+
+/** The nodes of the PhongLights listed in a material's `lights` (the scene's are three's). */
 const _lightNodes = /* @__PURE__ */ new WeakMap<PhongLight, PhongLightNode>();
 
 function phongLightNode(light: PhongLight): PhongLightNode {
@@ -132,7 +128,7 @@ function phongLightNode(light: PhongLight): PhongLightNode {
 }
 
 /** The surface point the lighting model lights, in view space, in the stage it is built in. */
-interface Surface {
+export interface Surface {
   /** Unit normal. */
   n: N;
   /** Unit vector towards the viewer. */
@@ -156,7 +152,11 @@ class LectureLightingModel extends LightingModel {
    */
   override start(builder: N): void {
     const lightsNode = builder.lightsNode;
-    const nodes: N[] = lightsNode.getLightNodes(builder);
+    const listed = this.material.phongLights.length > 0;
+    // With a list of PhongLights, only their nodes light the material (not the scene's PhongLights).
+    const nodes: N[] = (lightsNode.getLightNodes(builder) as N[]).filter(
+      (node) => !(node instanceof PhongLightNode) || !listed || _lightNodes.get(node.phongLight) === node,
+    );
     const hemispheres = nodes.filter((node) => node.light?.isHemisphereLight === true);
     lightsNode.setupLights(
       builder,
@@ -226,6 +226,35 @@ class LectureLightingModel extends LightingModel {
   }
 }
 
+/** The unit vector from view-space point `p` towards a perspective eye at the origin; +z at the eye. */
+export function towardsEye(p: N): N {
+  const d = p.length();
+  return select(d.greaterThan(0), p.negate().div(max(d, 1e-30)), vec3(0, 0, 1));
+}
+
+/** `n` normalised; `fallback` where `n` is zero. */
+export function unitOr(n: N, fallback: N): N {
+  const d = n.length();
+  return select(d.greaterThan(0), n.div(max(d, 1e-30)), fallback);
+}
+
+/**
+ * The robust normal matrix of the drawn object (sign(det)·cof of its world matrix, see `computeNormalMatrix`):
+ * finite for a zero or extreme scale, where three's inverse transpose is not.
+ */
+const _robustNormalMatrix = /* @__PURE__ */ new Matrix3();
+const robustNormalMatrix = /* @__PURE__ */ uniform(_robustNormalMatrix).onObjectUpdate(({ object }) => {
+  if (object) computeNormalMatrix(object.matrixWorld, _robustNormalMatrix);
+});
+
+/** An object-space normal in view space, unnormalised (zero where the world matrix flattens it away). */
+function normalToView(n: N): N {
+  return (cameraViewMatrix as N).mul(vec4((robustNormalMatrix as N).mul(n), 0)).xyz;
+}
+
+/** The geometries already warned about their provoking vertex. */
+const _warnedProvoking = /* @__PURE__ */ new WeakSet<BufferGeometry>();
+
 /** Texels per row of the face texture. */
 const FACE_TEXTURE_WIDTH = 2048;
 const _faceTextures = /* @__PURE__ */ new WeakMap<
@@ -259,15 +288,6 @@ function faceTexture(geometry: BufferGeometry): DataTexture {
   return texture;
 }
 
-/** The visible PhongLights of `scene`, in traversal order. */
-function scenePhongLights(scene: Object3D | null | undefined): PhongLight[] {
-  const found: PhongLight[] = [];
-  scene?.traverseVisible((object) => {
-    if (object instanceof PhongLight) found.push(object);
-  });
-  return found;
-}
-
 /**
  * `ShadingMaterial`'s shading for three's `WebGPURenderer` (`three/webgpu`), on its WebGPU and its WebGL2
  * backend: the lecture's flat, Gouraud and Phong shading × Phong and Blinn-Phong lighting × cel bands, with the
@@ -278,18 +298,22 @@ function scenePhongLights(scene: Object3D | null | undefined): PhongLight[] {
  * view space (the camera's rigid transform keeps every dot product).
  *
  * Shading: `'phong'` per fragment; `'gouraud'` in the vertex stage, colours interpolated; `'flat'` once per face
- * at its centroid with its face normal when the geometry is non-indexed (each vertex of a triangle reads its
- * three corners from a float texture and computes the same colour, so the provoking vertex, the first on WebGPU
- * and the last on WebGL2, does not matter: exactly one colour per face on both), else (an indexed geometry, an
+ * at its centroid with its face normal, exactly one colour per face on both backends, for a triangle soup (each
+ * vertex of a triangle reads its three corners from a float texture and computes the same colour, so the
+ * provoking vertex, the first on WebGPU and the last on WebGL2, does not matter) and for a `flatShadingGeometry`
+ * made for the backend's provoking vertex (`provokingVertex: 'first'` for WebGPU, the default `'last'` for
+ * WebGL2; one made for the other is drawn as below, with a warning); else (another indexed geometry, an
  * instanced, batched, skinned or morphed mesh) per fragment with the face normal from screen-space derivatives
- * (as three's `flatShading`). A geometry without `normal` that is a sphere
- * centred at its origin (`SubdivisionSphereGeometry` or `userData.isSphere`) uses normal = position.
+ * (as three's `flatShading`). A geometry without `normal` that is a sphere centred at its origin
+ * (`SubdivisionSphereGeometry` or `userData.isSphere`) uses normal = position. Normals go to view space through
+ * the robust normal matrix sign(det)·cof(M) (`computeNormalMatrix`), finite for a zero or extreme scale.
  *
- * The variant (shading, lighting, cel bands, the lights) is compiled in; changing it through the setters
- * recompiles. ka, kd, ks and the PhongLights' colours edited in place (bypassing the setters) to a non-finite or
- * negative value are reported once with console.error, as `ShadingMaterial` reports them, and drawn with their
- * last valid values. With `lights` empty, the scene's PhongLights are found when the material is compiled: after
- * adding or removing one, set `needsUpdate = true`.
+ * Lights: the PhongLights of `lights`, else every PhongLight in the rendered scene (three lists them with its
+ * own lights, through the light node this entry registers, so adding or removing one rebuilds the material as
+ * adding a three.js light does), and three's lights. The variant (shading, lighting, cel bands, the lights) is
+ * compiled in; changing it through the setters recompiles. ka, kd, ks and the PhongLights' colours edited in
+ * place (bypassing the setters) to a non-finite or negative value are reported once with console.error, as
+ * `ShadingMaterial` reports them, and drawn with their last valid values.
  *
  * @example
  * const light = new PhongLight();
@@ -454,34 +478,31 @@ export class ShadingNodeMaterial extends NodeMaterial {
     this.needsUpdate = true;
   }
 
+  /**
+   * The lit colour of a surface point, as three's lighting node of this material's lights (the PhongLights of
+   * `lights`, else the scene's, and three's lights) with the lecture's lighting model. For subclasses that
+   * light another surface (the impostor's ray-cast hit).
+   * @param surface - Unit normal `n` and unit vector towards the viewer `v`, view space, nodes.
+   * @param positionView - The lit point in view space, when it is not three's `positionView`.
+   */
+  protected lightSurface(builder: N, surface: Surface, positionView?: N): N {
+    const model = new LectureLightingModel(this, surface, {
+      ...this.#uniforms,
+      shininess: this.#shininessNode,
+    });
+    // The scene's PhongLights come with three's lights (their registered light node); the listed ones, which
+    // need not be in the scene, as the material's own lightings (the model keeps only them then).
+    const node = lightingContext(builder.lightsNode, model, this.#lights.map(phongLightNode) as never) as N;
+    return positionView === undefined ? node : node.context({ positionView });
+  }
+
   /** Builds the lighting of the variant (three calls it when it compiles the material). */
   override setupLighting(builder: N): N {
     const geometry: BufferGeometry = builder.geometry;
-    const phong = this.#lights.length > 0 ? this.#lights : scenePhongLights(builder.scene as Scene);
-    const lightNodes = phong.map(phongLightNode);
-    const uniforms = {
-      ...this.#uniforms,
-      shininess: this.#shininessNode,
-    };
-    const lightsNode = builder.lightsNode;
-    const light = (surface: Surface, context: Record<string, N> = {}): N =>
-      (
-        lightingContext(
-          lightsNode,
-          new LectureLightingModel(this, surface, uniforms),
-          lightNodes as never,
-        ) as N
-      ).context(context);
+    const light = (surface: Surface, positionView?: N): N =>
+      this.lightSurface(builder, surface, positionView);
     const orthographic = builder.camera?.isOrthographicCamera === true;
-    const towardsViewer = (p: N): N => {
-      if (orthographic) return vec3(0, 0, 1);
-      const d = p.length();
-      return select(d.greaterThan(0), p.negate().div(max(d, 1e-30)), vec3(0, 0, 1));
-    };
-    const unitOr = (n: N, fallback: N): N => {
-      const d = n.length();
-      return select(d.greaterThan(0), n.div(max(d, 1e-30)), fallback);
-    };
+    const towardsViewer = (p: N): N => (orthographic ? vec3(0, 0, 1) : towardsEye(p));
     const hasNormal = geometry.getAttribute('normal') !== undefined;
     const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData?.[SPHERE_FLAG] === true;
     if (this.#shading !== 'flat' && !hasNormal && !sphere) {
@@ -492,41 +513,71 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const localNormal: N = hasNormal ? normalLocal : positionLocal;
     if (this.#shading === 'phong') {
       const v = towardsViewer(positionView);
-      const n = unitOr(hasNormal ? normalView : varying(transformNormalToView(localNormal)), v);
+      // Unit vertex normals interpolated (zero where the matrix flattens the surface away); a back face
+      // (DoubleSide, BackSide) is lit with its normal turned round, as three's normalView does.
+      const n = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
       return light({ n, v });
     }
     if (this.#shading === 'gouraud') {
       const v = towardsViewer(positionView);
-      const n = unitOr(transformNormalToView(localNormal), v);
+      const n = unitOr(normalToView(localNormal), v);
       return varying(light({ n, v }));
     }
+    const face = this.#flatFace(builder, geometry);
+    if (face !== null) {
+      // The vertex stage lights the face's centroid with its normal; every vertex that can provoke computes it.
+      const [a, b, c] = face;
+      const view = (modelViewMatrix as N).mul(vec4(a.add(b).add(c).div(3), 1)).xyz;
+      const v = towardsViewer(view);
+      const n = unitOr(normalToView(b.sub(a).cross(c.sub(a))), v);
+      return varying(light({ n, v }, view)).setInterpolation('flat');
+    }
+    const v = towardsViewer(positionView);
+    const n = unitOr((positionView as N).dFdx().cross((positionView as N).dFdy()), v);
+    return light({ n, v });
+  }
+
+  /**
+   * The corners (object space, winding order) of the face a vertex lights in flat shading, or null where flat
+   * shading lights per fragment with the face normal from screen-space derivatives: an indexed geometry not
+   * made by flatShadingGeometry for this backend's provoking vertex, and an instanced, batched, skinned or
+   * morphed mesh (the corners are rest positions; the derivatives see the positions three moved).
+   */
+  #flatFace(builder: N, geometry: BufferGeometry): [N, N, N] | null {
     const object = builder.object ?? {};
-    // The corner texture holds rest positions: an instanced, batched, skinned or morphed mesh is drawn by
-    // derivatives, whose positions are the ones three moved.
-    const deformed =
+    if (
       object.isInstancedMesh === true ||
       object.isBatchedMesh === true ||
       object.isSkinnedMesh === true ||
-      geometry.morphAttributes.position !== undefined;
-    if (geometry.index === null && !deformed) {
-      // Every vertex of a triangle reads the triangle's three corners and lights its centroid: the same colour
-      // from whichever vertex provokes.
+      geometry.morphAttributes.position !== undefined
+    ) {
+      return null;
+    }
+    if (geometry.index === null) {
+      // A triangle soup: every vertex of a triangle reads the triangle's three corners from the face texture,
+      // so whichever vertex provokes gives the same colour.
       const texture = faceTexture(geometry);
       const first = (vertexIndex as N).div(3).mul(3);
       const corner = (k: number): N => {
         const i = first.add(k);
         return (textureLoad(texture, ivec2(i.mod(FACE_TEXTURE_WIDTH), i.div(FACE_TEXTURE_WIDTH))) as N).xyz;
       };
-      const [a, b, c] = [corner(0), corner(1), corner(2)];
-      const centroid = a.add(b).add(c).div(3);
-      const view = (modelViewMatrix as N).mul(vec4(centroid, 1)).xyz;
-      const v = towardsViewer(view);
-      const n = unitOr(transformNormalToView(b.sub(a).cross(c.sub(a))), v);
-      return varying(light({ n, v }, { positionView: view })).setInterpolation('flat');
+      return [corner(0), corner(1), corner(2)];
     }
-    const v = towardsViewer(positionView);
-    const n = unitOr((positionView as N).dFdx().cross((positionView as N).dFdy()), v);
-    return light({ n, v });
+    if (geometry.getAttribute(FLAT_CORNERS[0]) === undefined) return null;
+    // A flatShadingGeometry: each triangle's provoking vertex carries the face's other two corners.
+    const wanted = provokingVertexOf(builder.renderer ?? {});
+    const made = geometry.userData[FLAT_PROVOKING_VERTEX] ?? 'last';
+    if (made !== wanted) {
+      if (!_warnedProvoking.has(geometry)) {
+        _warnedProvoking.add(geometry);
+        console.warn(
+          `${OWNER}: this flatShadingGeometry was made with provokingVertex '${made}', but this backend's is the ${wanted}: flat shading lights it per fragment with the face normal. Make it with flatShadingGeometry(geometry, { provokingVertex: '${wanted}' })`,
+        );
+      }
+      return null;
+    }
+    return [attribute(FLAT_CORNERS[0], 'vec3'), attribute(FLAT_CORNERS[1], 'vec3'), positionLocal];
   }
 
   /** Copy every option of `source` (lights are shared, not cloned). @returns `this`. */

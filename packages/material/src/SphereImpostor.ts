@@ -1,5 +1,5 @@
 import { BufferAttribute, BufferGeometry, Mesh, Sphere, Vector3 } from 'three';
-import { SPHERE_FLAG } from './ShadingMaterial.js';
+import { SPHERE_FLAG } from './geometryFlags.js';
 import type { SphereImpostorMaterial } from './SphereImpostorMaterial.js';
 
 /**

@@ -12,9 +12,10 @@ import {
   type WebGLProgramParametersWithUniforms,
   type WebGLRenderer,
 } from 'three';
+import type { Shading } from './options.js';
 import type { PhongLight } from './PhongLight.js';
 import { withLightCount } from './ShadingMaterial.glsl.js';
-import { type Shading, ShadingMaterial, type ShadingMaterialOptions } from './ShadingMaterial.js';
+import { ShadingMaterial, type ShadingMaterialOptions } from './ShadingMaterial.js';
 import { impostorFragmentShader, impostorVertexShader } from './SphereImpostorMaterial.glsl.js';
 
 /** Options of {@link SphereImpostorMaterial}: those of `ShadingMaterial` except `shading` (always per fragment). */

@@ -1,4 +1,4 @@
-import { FLAT_CORNERS, flatShadingGeometry, SPHERE_FLAG } from '@shadelab/material';
+import { FLAT_CORNERS, FLAT_PROVOKING_VERTEX, flatShadingGeometry, SPHERE_FLAG } from '@shadelab/material';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import fc from 'fast-check';
 import { BufferAttribute, BufferGeometry, IcosahedronGeometry } from 'three';
@@ -14,7 +14,12 @@ function corners(g: BufferGeometry, k: number): number[][] {
 }
 
 /** Every property flat shading relies on, checked triangle by triangle against the source geometry. */
-function expectFlatReady(source: BufferGeometry, out: BufferGeometry): void {
+function expectFlatReady(
+  source: BufferGeometry,
+  out: BufferGeometry,
+  provokingVertex: 'first' | 'last' = 'last',
+): void {
+  expect(out.userData[FLAT_PROVOKING_VERTEX]).toBe(provokingVertex);
   const index = out.index!;
   const triangles = index.count / 3;
   expect(triangles).toBe((source.index?.count ?? source.getAttribute('position').count) / 3);
@@ -33,8 +38,9 @@ function expectFlatReady(source: BufferGeometry, out: BufferGeometry): void {
   }
   const provoking = new Set<number>();
   for (let k = 0; k < triangles; k++) {
-    const last = index.getX(3 * k + 2);
-    // Each face has a last (provoking) vertex of its own.
+    const first = provokingVertex === 'first';
+    const last = index.getX(3 * k + (first ? 0 : 2));
+    // Each face has a provoking vertex (the last, or the first) of its own.
     expect(provoking.has(last), `triangle ${k}: vertex ${last} already provokes a face`).toBe(false);
     provoking.add(last);
     // Same face, same winding: the corners are a cyclic rotation of the source's.
@@ -42,9 +48,9 @@ function expectFlatReady(source: BufferGeometry, out: BufferGeometry): void {
     const got = corners(out, k);
     const rotations = [0, 1, 2].map((r) => [got[r], got[(r + 1) % 3], got[(r + 2) % 3]]);
     expect(rotations).toContainEqual(want);
-    // The provoking vertex carries the other two corners, in order.
-    expect([a.getX(last), a.getY(last), a.getZ(last)]).toEqual(got[0]);
-    expect([b.getX(last), b.getY(last), b.getZ(last)]).toEqual(got[1]);
+    // The provoking vertex carries the other two corners, in winding order after it: (A, B, provoking).
+    expect([a.getX(last), a.getY(last), a.getZ(last)]).toEqual(got[first ? 1 : 0]);
+    expect([b.getX(last), b.getY(last), b.getZ(last)]).toEqual(got[first ? 2 : 1]);
   }
   expect(position.count).toBeGreaterThanOrEqual(triangles);
 }
@@ -55,6 +61,23 @@ describe('flatShadingGeometry', () => {
       const sphere = new SubdivisionSphereGeometry({ level, base: 'tetrahedron', normals: 'none' });
       expectFlatReady(sphere, flatShadingGeometry(sphere));
     }
+  });
+
+  it("with provokingVertex 'first' (WebGPU's), every face has a first vertex of its own, same faces, same vertex count", () => {
+    for (const level of [0, 2, 4]) {
+      const sphere = new SubdivisionSphereGeometry({ level, base: 'icosahedron', normals: 'none' });
+      const first = flatShadingGeometry(sphere, { provokingVertex: 'first' });
+      expectFlatReady(sphere, first, 'first');
+      const last = flatShadingGeometry(sphere);
+      // The same vertices (positions and corners): only each triangle's index order is rotated.
+      expect(first.getAttribute('position').array).toEqual(last.getAttribute('position').array);
+      expect(first.getAttribute(FLAT_CORNERS[0]).array).toEqual(last.getAttribute(FLAT_CORNERS[0]).array);
+    }
+    const soup = new IcosahedronGeometry(1, 1);
+    expectFlatReady(soup, flatShadingGeometry(soup, { provokingVertex: 'first' }), 'first');
+    expect(() => flatShadingGeometry(soup, { provokingVertex: 'middle' as never })).toThrow(
+      /flatShadingGeometry\.provokingVertex must be one of/,
+    );
   });
 
   it('a closed sphere (V = T/2 + 2) gets exactly V′ = T vertices: a third of the soup’s vertex-shader runs', () => {

@@ -1,14 +1,33 @@
 import { BufferAttribute, BufferGeometry, type InterleavedBufferAttribute } from 'three';
-import { FLAT_CORNER_INDEX, FLAT_CORNERS, SPHERE_FLAG } from './ShadingMaterial.js';
+import { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
+import { checkOneOf } from './validate.js';
+
+/** The vertex of a triangle whose flat varyings the rasteriser uses. */
+export type ProvokingVertex = 'first' | 'last';
+
+const PROVOKING_VERTICES: readonly ProvokingVertex[] = ['last', 'first'];
+
+/** Options of {@link flatShadingGeometry}. */
+export interface FlatShadingGeometryOptions {
+  /**
+   * Which vertex of each triangle carries its face: `'last'`, WebGL's provoking vertex (`WebGLRenderer`, and
+   * `WebGPURenderer` on its WebGL2 backend), or `'first'`, WebGPU's (`WebGPURenderer` on its WebGPU backend:
+   * `renderer.backend.isWebGPUBackend`, known after `await renderer.init()`). A material that draws a
+   * geometry made for the other one lights it per fragment with the face normal, and warns once.
+   * @default 'last'
+   */
+  provokingVertex?: ProvokingVertex;
+}
 
 /**
  * An indexed geometry on which {@link ShadingMaterial}'s flat shading lights every face **once per vertex it
  * owns** instead of once per vertex of a triangle soup: about a third of the vertex-shader runs, and a third
  * less memory.
  *
- * WebGL takes a flat varying from the last vertex of each triangle (its provoking vertex). This gives every
- * triangle a last vertex of its own: the triangle's corners are rotated (which keeps its winding) so that an
- * unclaimed corner comes last, and a corner is duplicated only when all three are taken. Each vertex carries
+ * WebGL takes a flat varying from the last vertex of each triangle (its provoking vertex), WebGPU from the
+ * first. This gives every triangle a provoking vertex of its own: the triangle's corners are rotated (which
+ * keeps its winding) so that an unclaimed corner comes last (or first, see `provokingVertex`), and a corner is
+ * duplicated only when all three are taken. Each vertex carries
  * the other two corners of the face it provokes (`flatCornerA`, `flatCornerB`, object space), so the vertex
  * shader has the whole face without a texture. Faces keep their order and winding; the colours equal those of
  * the soup path to float rounding.
@@ -22,13 +41,18 @@ import { FLAT_CORNER_INDEX, FLAT_CORNERS, SPHERE_FLAG } from './ShadingMaterial.
  * the vertex indices of its two corners (8 more bytes per vertex), so that flat shading moves them too.
  *
  * @param geometry - Any triangle geometry with a `position` attribute (indexed or not). Not modified.
+ * @param options - The renderer's provoking vertex (see {@link FlatShadingGeometryOptions}).
  * @returns A new indexed geometry with `position`, `flatCornerA` and `flatCornerB` (Uint16 indices while V′
  *   fits, else Uint32), and for a skinned or morphed source the attributes above; flagged as a sphere
- *   (`userData.isSphere`) when the source is one.
- * @throws TypeError when `geometry` has no 3-component `position` attribute or its index count is not a
+ *   (`userData.isSphere`) when the source is one; `userData.flatProvokingVertex` says which vertex provokes.
+ * @throws TypeError when `provokingVertex` is not `'first'` or `'last'`, when `geometry` has no 3-component `position` attribute or its index count is not a
  *   multiple of 3.
  */
-export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
+export function flatShadingGeometry(
+  geometry: BufferGeometry,
+  { provokingVertex = 'last' }: FlatShadingGeometryOptions = {},
+): BufferGeometry {
+  checkOneOf('flatShadingGeometry.provokingVertex', provokingVertex, PROVOKING_VERTICES);
   const position = geometry?.getAttribute?.('position');
   if (position === undefined || position.itemSize !== 3) {
     throw new TypeError('flatShadingGeometry: geometry must have a position attribute with 3 components');
@@ -86,9 +110,11 @@ export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
     }
     cornerIndex[2 * i2] = i0;
     cornerIndex[2 * i2 + 1] = i1;
-    index[k] = i0;
-    index[k + 1] = i1;
-    index[k + 2] = i2;
+    // A cyclic rotation keeps the winding: (i2, i0, i1) puts the owned corner first.
+    const first = provokingVertex === 'first';
+    index[k] = first ? i2 : i0;
+    index[k + 1] = first ? i0 : i1;
+    index[k + 2] = first ? i1 : i2;
   }
   const out = new BufferGeometry();
   out.setIndex(new BufferAttribute(next <= 65536 ? Uint16Array.from(index) : index, 1));
@@ -123,6 +149,7 @@ export function flatShadingGeometry(geometry: BufferGeometry): BufferGeometry {
   if (geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true) {
     out.userData[SPHERE_FLAG] = true;
   }
+  out.userData[FLAT_PROVOKING_VERTEX] = provokingVertex;
   out.computeBoundingSphere();
   return out;
 }

@@ -7,19 +7,16 @@
  */
 export { computeNormalMatrix } from './computeNormalMatrix.js';
 export { eyeOf } from './eyeOf.js';
-export { flatShadingGeometry } from './flatShadingGeometry.js';
-export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
-export { PhongLight, type PhongLightOptions } from './PhongLight.js';
 export {
-  FLAT_CORNER_INDEX,
-  FLAT_CORNERS,
-  MAX_CEL_BANDS,
-  SHADINGS,
-  type Shading,
-  ShadingMaterial,
-  type ShadingMaterialOptions,
-  SPHERE_FLAG,
-} from './ShadingMaterial.js';
+  type FlatShadingGeometryOptions,
+  flatShadingGeometry,
+  type ProvokingVertex,
+} from './flatShadingGeometry.js';
+export { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
+export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
+export { MAX_CEL_BANDS, SHADINGS, type Shading, type ShadingOptions } from './options.js';
+export { PhongLight, type PhongLightOptions } from './PhongLight.js';
+export { ShadingMaterial, type ShadingMaterialOptions } from './ShadingMaterial.js';
 export {
   type Attenuation,
   celDiffuse,
