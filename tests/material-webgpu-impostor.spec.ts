@@ -35,7 +35,10 @@ interface Harness {
   occlusion(
     b: Backend,
     v: Variant,
+    mode?: 'standard' | 'logarithmic' | 'reversed',
   ): Promise<{
+    logarithmic: boolean;
+    reversed: boolean;
     impostor: Counts;
     mesh: Counts;
     boxAlone: Counts;
@@ -124,6 +127,28 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       // As with the mesh sphere, but for the mesh's facets along the boundary.
       expect(o.disagreeOffEdge, olabel).toBe(0);
       expect(Math.abs(o.impostor.boxPixels - o.mesh.boxPixels), olabel).toBeLessThanOrEqual(
+        o.mesh.boxPixels * 0.03,
+      );
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: the impostor's depth in a logarithmic and in a reversed-Z depth buffer hides the box as a subdivided mesh sphere does`, async ({
+    page,
+  }) => {
+    const problems = await open(page);
+    for (const mode of ['logarithmic', 'reversed'] as const) {
+      const o = await page.evaluate(
+        ([b, v, m]) => (window as never as { harness: Harness }).harness.occlusion(b, v, m),
+        [backend, VARIANTS[0], mode] as const,
+      );
+      const label = `${backend} ${mode} ${JSON.stringify(o)}`;
+      expect(mode === 'logarithmic' ? o.logarithmic : o.reversed, label).toBe(true);
+      expect(o.impostor.boxPixels, label).toBeGreaterThan(200);
+      expect(o.impostor.boxPixels, label).toBeLessThan(o.boxAlone.boxPixels - 150);
+      expect(o.impostor.spherePixels, label).toBeLessThan(o.sphereAlone.spherePixels - 150);
+      expect(o.disagreeOffEdge, label).toBe(0);
+      expect(Math.abs(o.impostor.boxPixels - o.mesh.boxPixels), label).toBeLessThanOrEqual(
         o.mesh.boxPixels * 0.03,
       );
     }

@@ -100,13 +100,22 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
   return { scene: s, camera };
 }
 
-const renderers = new Map<Backend, Promise<WebGPURenderer>>();
-function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
-  let r = renderers.get(backend);
+/** The renderer's depth buffer: standard, logarithmic (`logarithmicDepthBuffer`) or reversed-Z (`reversedDepthBuffer`). */
+export type DepthMode = 'standard' | 'logarithmic' | 'reversed';
+
+const renderers = new Map<string, Promise<WebGPURenderer>>();
+function gpuRenderer(backend: Backend, mode: DepthMode = 'standard'): Promise<WebGPURenderer> {
+  const key = `${backend} ${mode}`;
+  let r = renderers.get(key);
   if (r === undefined) {
-    const renderer = new WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl2' });
+    const renderer = new WebGPURenderer({
+      antialias: false,
+      forceWebGL: backend === 'webgl2',
+      logarithmicDepthBuffer: mode === 'logarithmic',
+      reversedDepthBuffer: mode === 'reversed',
+    });
     r = renderer.init().then(() => renderer);
-    renderers.set(backend, r);
+    renderers.set(key, r);
   }
   return r;
 }
@@ -118,8 +127,14 @@ function dispose(s: Scene): void {
 }
 
 /** Rows bottom-up, RGBA8, linear (a render target has no output colour space conversion). */
-async function renderGpu(backend: Backend, v: Variant, scenario: Scenario, kind: SphereKind = 'impostor') {
-  const renderer = await gpuRenderer(backend);
+async function renderGpu(
+  backend: Backend,
+  v: Variant,
+  scenario: Scenario,
+  kind: SphereKind = 'impostor',
+  mode: DepthMode = 'standard',
+) {
+  const renderer = await gpuRenderer(backend, mode);
   const setup = scene(true, v, scenario, kind);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
   renderer.setRenderTarget(target);
@@ -230,11 +245,11 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
 }
 
 /**
- * Depth: in the 'box' scene on WebGPURenderer, the pixels of the box's colour (green dominant) and of the
+ * Depth (in the renderer's depth mode `mode`): in the 'box' scene on WebGPURenderer, the pixels of the box's colour (green dominant) and of the
  * sphere's (red dominant) with the sphere drawn as an impostor and as a level-6 mesh sphere, and in the scenes
  * of each alone: the box is partly hidden by the sphere and the sphere partly by the box, as with the mesh.
  */
-async function occlusion(backend: Backend, v: Variant) {
+async function occlusion(backend: Backend, v: Variant, mode: DepthMode = 'standard') {
   const count = (p: Uint8Array) => {
     let boxPixels = 0;
     let spherePixels = 0;
@@ -245,8 +260,9 @@ async function occlusion(backend: Backend, v: Variant) {
     }
     return { boxPixels, spherePixels };
   };
-  const impostor = await renderGpu(backend, v, 'box', 'impostor');
-  const mesh = await renderGpu(backend, v, 'box', 'mesh');
+  const impostor = await renderGpu(backend, v, 'box', 'impostor', mode);
+  const mesh = await renderGpu(backend, v, 'box', 'mesh', mode);
+  const renderer = await gpuRenderer(backend, mode);
   // Where the two pictures disagree on what is seen (box or sphere), away from the mesh picture's edges.
   const edges = edgeMask(mesh, 24);
   let disagree = 0;
@@ -262,8 +278,11 @@ async function occlusion(backend: Backend, v: Variant) {
   return {
     impostor: count(impostor),
     mesh: count(mesh),
-    boxAlone: count(await renderGpu(backend, v, 'box-alone')),
-    sphereAlone: count(await renderGpu(backend, v, 'sphere-alone')),
+    boxAlone: count(await renderGpu(backend, v, 'box-alone', 'impostor', mode)),
+    sphereAlone: count(await renderGpu(backend, v, 'sphere-alone', 'impostor', mode)),
+    // The depth mode the renderer really runs (a backend without the extension falls back to standard depth).
+    logarithmic: renderer.logarithmicDepthBuffer === true,
+    reversed: renderer.reversedDepthBuffer === true,
     disagree,
     disagreeOffEdge,
   };
