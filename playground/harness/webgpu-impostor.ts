@@ -14,6 +14,7 @@ import {
   Matrix4,
   Mesh,
   Object3D,
+  OrthographicCamera,
   PerspectiveCamera,
   Scene,
   WebGLRenderer,
@@ -28,10 +29,21 @@ export interface Variant {
 }
 /**
  * 'ellipsoid' (the lecture's 2, 1, 2 scale, rotated), 'sphere' (a unit sphere off the axis), 'instanced' (both as
- * two instances of one InstancedMesh), 'box' (a unit sphere with a box through it: depth against a mesh),
+ * two instances of one InstancedMesh), 'mirrored' (the ellipsoid with a negative x scale: det < 0),
+ * 'orthographic' (the ellipsoid and the sphere through an orthographic camera), 'inside' (a perspective eye
+ * inside the ellipsoid: nothing drawn), 'box' (a unit sphere with a box through it: depth against a mesh),
  * 'box-alone' and 'sphere-alone' (each of the two without the other).
  */
-export type Scenario = 'ellipsoid' | 'sphere' | 'instanced' | 'box' | 'box-alone' | 'sphere-alone';
+export type Scenario =
+  | 'ellipsoid'
+  | 'sphere'
+  | 'instanced'
+  | 'mirrored'
+  | 'orthographic'
+  | 'inside'
+  | 'box'
+  | 'box-alone'
+  | 'sphere-alone';
 /** What draws the sphere: an impostor, or (WebGPURenderer only) a level-6 subdivided mesh sphere. */
 export type SphereKind = 'impostor' | 'mesh';
 
@@ -75,8 +87,9 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     mesh.applyMatrix4(matrix);
     s.add(mesh);
   };
-  if (scenario === 'ellipsoid') add(ellipsoid);
-  if (scenario === 'sphere') add(sphere);
+  if (scenario === 'ellipsoid' || scenario === 'orthographic' || scenario === 'inside') add(ellipsoid);
+  if (scenario === 'sphere' || scenario === 'orthographic') add(sphere);
+  if (scenario === 'mirrored') add(ellipsoid.clone().multiply(new Matrix4().makeScale(-1, 1, 1)));
   if (scenario === 'instanced') {
     const instanced = new InstancedMesh(quad, impostorMaterial, 2);
     instanced.setMatrixAt(0, ellipsoid);
@@ -92,9 +105,13 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     m.position.set(0.1, 0, 0.45);
     s.add(m);
   }
-  const camera = new PerspectiveCamera(50, 1, 0.5, 20);
+  const camera =
+    scenario === 'orthographic'
+      ? new OrthographicCamera(-3, 3, 3, -3, 0.5, 20)
+      : new PerspectiveCamera(50, 1, 0.5, 20);
   camera.position.set(0.5, 0.8, 6);
   camera.lookAt(0, 0, 0);
+  if (scenario === 'inside') camera.position.set(-0.2, 0.5, -0.2);
   s.updateMatrixWorld();
   camera.updateMatrixWorld();
   return { scene: s, camera };
@@ -209,8 +226,10 @@ function edgeMask(p: Uint8Array, jump: number): boolean[] {
 async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
   const a = renderGl(v, scenario);
   const b = await renderGpu(backend, v, scenario);
-  // Cel bands and where two surfaces meet (the box and the sphere, the two instances) are edges within the picture.
-  const edges = edgeMask(a, v.celBands > 0 || scenario === 'box' || scenario === 'instanced' ? 24 : 255);
+  // Cel bands and where two surfaces meet (the box and the sphere, the ellipsoid and the sphere) are edges within
+  // the picture.
+  const oneSurface = scenario === 'ellipsoid' || scenario === 'sphere' || scenario === 'mirrored';
+  const edges = edgeMask(a, v.celBands > 0 || !oneSurface ? 24 : 255);
   let covered = 0;
   let coverageMismatch = 0;
   let coverageMismatchOffEdge = 0;
