@@ -10,10 +10,11 @@
 // Target: phong shading ≤ 1.0× MeshPhongNodeMaterial on the same backend.
 //
 //   node bench/webgpu.bench.mjs [--json PATH] [--frames 60] [--rounds 6] [--width 1280 --height 720]
-//                               [--quick] [--experiments NAME,...]
+//                               [--quick] [--experiments NAME,...] [--ab] [--backends webgpu,webgl2,webgl]
 //
 // --quick: 6 frames in 2 rounds (a smoke check, not a measurement). --experiments: also time the named
-// A/B variants of the lighting (the page's experimentalMaterial) on both backends.
+// A/B variants of the lighting (the page's experimentalMaterial) on both backends; --ab: only phong × phong and
+// three's phong material (with the experiments), for a quicker A/B run.
 import { chromium } from '@playwright/test';
 import { chromiumArgs, chromiumExecutable, webgpuArgs } from '../scripts/browser.mjs';
 import { arg, summarize, writeResults } from './lib/bench.mjs';
@@ -24,9 +25,12 @@ const frames = Number(arg('--frames', quick ? '6' : '60'));
 const rounds = Number(arg('--rounds', quick ? '2' : '6'));
 const width = Number(arg('--width', '1280'));
 const height = Number(arg('--height', '720'));
-const experiments = arg('--experiments', '')
-  .split(',')
-  .filter((e) => e !== '');
+const onlyBackends = arg('--backends', 'webgpu,webgl2,webgl').split(',');
+const experiments = /** @type {import('../playground/harness/webgpu-bench').Experiment[]} */ (
+  arg('--experiments', '')
+    .split(',')
+    .filter((e) => e !== '')
+);
 
 /** @typedef {import('../playground/harness/webgpu-bench').BenchSpec} BenchSpec */
 /** @typedef {import('../playground/harness/webgpu-bench').Backend} Backend */
@@ -59,10 +63,18 @@ const THREE_PHONG_LIGHTS = "three phong, three's lights";
 VARIANTS.push([THREE_PHONG, { material: 'three-phong' }]);
 VARIANTS.push([THREE_PHONG_LIGHTS, { material: 'three-phong', lights: 'three' }]);
 for (const name of experiments) {
-  VARIANTS.push([
-    `phong × phong, experiment ${name}`,
-    { material: 'shadelab', shading: 'phong', experiment: name },
-  ]);
+  for (const lights of /** @type {const} */ (['phong', 'three'])) {
+    VARIANTS.push([
+      `phong × phong${lights === 'three' ? ", three's lights" : ''}, experiment ${name}`,
+      { material: 'shadelab', shading: 'phong', lights, experiment: name },
+    ]);
+  }
+}
+// --ab: only phong shading (phong lighting) and three's phong material, with the experiments, for A/B runs.
+if (process.argv.includes('--ab')) {
+  const keep = (/** @type {string} */ n) =>
+    n.startsWith('three phong') || n === 'phong × phong' || n.startsWith('phong × phong, ');
+  VARIANTS.splice(0, VARIANTS.length, ...VARIANTS.filter(([n]) => keep(n)));
 }
 
 /** Every timed frame of each row, in the order of the cycles (for the paired ratios). */
@@ -145,7 +157,8 @@ const results = {
 try {
   const page = await browser.newPage();
   page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') console.log(`page ${m.type()}: ${m.text()}`);
+    if ((m.type() === 'error' || m.type() === 'warning') && !m.text().includes('404'))
+      console.log(`page ${m.type()}: ${m.text()}`);
   });
   await page.goto(playground.url(`harness/webgpu-bench.html?width=${width}&height=${height}`));
   await page.waitForFunction(() => document.body.dataset.ready === '1', undefined, { timeout: 120_000 });
@@ -180,6 +193,7 @@ try {
   /** @type {Array<[string, BenchSpec]>} */
   const specs = [];
   for (const [backend] of BACKENDS) {
+    if (!onlyBackends.includes(backend)) continue;
     for (const [name, spec] of VARIANTS) {
       if (backend === 'webgl' && spec.experiment !== undefined) continue;
       specs.push([rowName(backend, name), { ...spec, backend }]);
@@ -201,13 +215,24 @@ try {
         ...row,
         vsThreePhong:
           spec.material === 'shadelab' ? ratio(rows, rowName(backend, name), reference(name)) : null,
+        vsBaseline:
+          spec.experiment === undefined
+            ? undefined
+            : ratio(rows, rowName(backend, name), rowName(backend, name.replace(/, experiment .*$/, ''))),
         vsWebGLRenderer:
           backend === 'webgl' || spec.experiment !== undefined
             ? null
             : ratio(rows, rowName(backend, name), rowName('webgl', name)),
       };
     }
-    perBackend[backend] = { label, variants };
+    const node = backend !== 'webgl';
+    perBackend[backend] = {
+      label,
+      material: node ? 'ShadingNodeMaterial' : 'ShadingMaterial',
+      threePhong: node ? 'MeshPhongNodeMaterial' : 'MeshPhongMaterial',
+      gpuTimer: /** @type {Record<string, { gpuTimer: string }>} */ (results.backends)[backend].gpuTimer,
+      variants,
+    };
   }
   /** @type {Record<string, unknown>} */
   const targets = {};
@@ -235,7 +260,7 @@ try {
       }
       const fmt = (/** @type {any} */ r) => (r ? `${r.paired.toFixed(3)} (${r.median.toFixed(3)})` : '—');
       console.log(
-        `| ${name} | ${v.frameMs.median.toFixed(2)} | ${v.frameMs.min.toFixed(2)} | ${v.gpuMs ? v.gpuMs.median.toFixed(2) : 'n/a'} | ${fmt(v.vsThreePhong)} | ${fmt(v.vsWebGLRenderer)} |`,
+        `| ${name} | ${v.frameMs.median.toFixed(2)} | ${v.frameMs.min.toFixed(2)} | ${v.gpuMs ? v.gpuMs.median.toFixed(2) : 'n/a'} | ${fmt(v.vsThreePhong)} | ${fmt(v.vsWebGLRenderer)} |${v.vsBaseline ? ` / without: ${fmt(v.vsBaseline)} (GPU ${v.vsBaseline.gpu?.toFixed(3)})` : ''}`,
       );
     }
   }

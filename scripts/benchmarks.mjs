@@ -26,6 +26,7 @@ export const SOURCES = [
   { name: 'tradeoff', writer: 'bench/tradeoff.bench.mjs', command: 'npm run bench -- tradeoff' },
   { name: 'material', writer: 'bench/material.bench.mjs', command: 'npm run bench -- material' },
   { name: 'scene', writer: 'bench/scene.bench.mjs', command: 'npm run bench -- scene' },
+  { name: 'webgpu', writer: 'bench/webgpu.bench.mjs', command: 'npm run bench -- webgpu' },
   { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
   { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
   {
@@ -680,6 +681,84 @@ function sceneFlat(r) {
   ];
 }
 
+const WEBGPU_TITLE = 'Material on WebGPURenderer';
+const WEBGPU_BACKENDS = /** @type {const} */ (['webgpu', 'webgl2', 'webgl']);
+
+/**
+ * Issue 15: ShadingNodeMaterial on both backends of WebGPURenderer against three's phong material on the same
+ * renderer and against ShadingMaterial under WebGLRenderer. @param {any} r @returns {string[]}
+ */
+function webgpu(r) {
+  const backends = WEBGPU_BACKENDS.filter((b) => r.perBackend?.[b]);
+  const gpuLine = backends
+    .map((b) => `${r.perBackend[b].label}: ${r.perBackend[b].gpuTimer ?? NOT_RECORDED}`)
+    .join('; ');
+  const tables = backends.flatMap((b) => {
+    const pb = r.perBackend[b];
+    const node = b !== 'webgl';
+    const rows = Object.entries(pb.variants).map(([name, v]) => {
+      const row = /** @type {any} */ (v);
+      const three = name.startsWith('three phong');
+      return [
+        three ? name.replace('three phong', pb.threePhong) : name,
+        frameCell(row),
+        row.gpuMs ? row.gpuMs.median.toFixed(1) : row.error ? '—' : 'n/a',
+        three ? '—' : ratioCell(row.vsThreePhong),
+        ...(node ? [ratioCell(row.vsWebGLRenderer)] : []),
+      ];
+    });
+    return [
+      '',
+      `### ${pb.label}: \`${pb.material}\` and \`${pb.threePhong}\``,
+      '',
+      ...table(
+        [
+          'variant',
+          'frame ms',
+          'GPU ms',
+          `/ ${pb.threePhong}`,
+          ...(node ? [`/ WebGLRenderer (\`ShadingMaterial\`, \`MeshPhongMaterial\`)`] : []),
+        ],
+        node ? 'lrrrr' : 'lrrr',
+        rows,
+      ),
+    ];
+  });
+  const errors = backends.flatMap((b) =>
+    Object.entries(r.perBackend[b].variants)
+      .filter(([, v]) => /** @type {any} */ (v).error)
+      .map(
+        ([name, v]) => `- ${r.perBackend[b].label}, ${name} does not render: ${/** @type {any} */ (v).error}`,
+      ),
+  );
+  return [
+    `## ${WEBGPU_TITLE}`,
+    '',
+    fromLine('webgpu', r),
+    '',
+    `Issue 15: \`ShadingNodeMaterial\` (\`@shadelab/material/webgpu\`) on both backends of three's \`WebGPURenderer\` (WebGPU; WebGL2 with \`forceWebGL\`) against three's \`MeshPhongNodeMaterial\` on the same backend, and \`ShadingMaterial\` and \`MeshPhongMaterial\` under \`WebGLRenderer\`, all in one page and one run at ${r.width}×${r.height}. Scene: ${r.scene}. ${r.frames} frames per variant in ${r.rounds} rounds, the variants of all three renderers interleaved frame by frame (each cycle renders one frame of every variant); ratios are the median of the ratios of frames from the same cycle, and the ratio of the medians in brackets. Frame ms: median (minimum), the render call and the read-back. GPU ms: the median of ${gpuLine}. ${r.note ?? ''}`.trim(),
+    ...tables,
+    ...(errors.length ? ['', ...errors] : []),
+    '',
+    "Issue 15's target, phong shading ≤ 1.0× `MeshPhongNodeMaterial` on the same backend (the median of the ratios of frames from the same cycle; the ratio of the medians in brackets):",
+    '',
+    ...table(
+      ['backend: variant', 'measured', 'GPU-time ratio', 'target', 'result'],
+      'lrrll',
+      Object.entries(r.targets ?? {}).map(([name, t]) => {
+        const x = /** @type {any} */ (t);
+        return [
+          name.replace(/^webgpu:/, 'WebGPU:').replace(/^webgl2:/, 'WebGL2:'),
+          ratioCell(x.ratio),
+          x.ratio?.gpu ? x.ratio.gpu.toFixed(2) : 'n/a',
+          x.target,
+          metCell(x.met),
+        ];
+      }),
+    ),
+  ];
+}
+
 /** @param {any} r @returns {string[]} */
 function cameraDepth(r) {
   /** @type {any[]} */
@@ -1035,6 +1114,7 @@ export function renderBenchmarks(results) {
       '- [Sphere build time](#sphere-build-time) · [Sphere error](#sphere-error) · [Automatic detail](#automatic-detail)',
       '- [Speed against accuracy](#speed-against-accuracy) · [Material frame time](#material-frame-time)',
       '- [Material in a realistic scene](#material-in-a-realistic-scene) · [Lecture scene before and after issue 14](#lecture-scene-before-and-after-issue-14) · [Flat shading without preparation](#flat-shading-without-preparation)',
+      '- [Material on WebGPURenderer](#material-on-webgpurenderer)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
       '- [Rasteriser variation](#rasteriser-variation)',
@@ -1048,6 +1128,7 @@ export function renderBenchmarks(results) {
     section('scene', sceneRealistic, 'Material in a realistic scene'),
     section('scene', sceneLecture, 'Lecture scene before and after issue 14'),
     section('scene', sceneFlat, 'Flat shading without preparation'),
+    section('webgpu', webgpu, WEBGPU_TITLE),
     section('camera-depth', cameraDepth, 'Camera depth precision'),
     section('trackball', trackball, 'Trackball'),
     section('size', sizes, 'Package sizes'),

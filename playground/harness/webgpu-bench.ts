@@ -26,6 +26,7 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import { normalView, positionLocal, positionView, transformNormalToView } from 'three/tsl';
 import { MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
 
 /** Where a spec is drawn: WebGPURenderer's WebGPU or WebGL2 backend, or three's WebGLRenderer. */
@@ -176,11 +177,48 @@ async function info() {
 
 // ── A/B experiments ─────────────────────────────────────────────────────────────────────────────────────────
 
-/** A named change to ShadingNodeMaterial's lighting, measured against it. */
-export type Experiment = string;
+/**
+ * A named change to ShadingNodeMaterial's phong shading, measured against it (subclasses of this checkout's
+ * ShadingNodeMaterial, so that a proposed change can be timed before it is made). three compiles a `select()` to
+ * an if/else block, and a node first used inside a block is computed there, again in every block that uses it:
+ * - 'hoist-v': in phong shading (the fragment stage), the unit vector towards the eye given to the lighting model as a var
+ *   computed once in the main flow (on the stack) before the lighting, instead of again inside each light's
+ *   specular branch;
+ * - 'plain-normalize': n and v as plain `normalize()`, no zero-length fallbacks (a bound on what the fallbacks
+ *   cost; not a proposal: the fallbacks are the material's contract).
+ */
+export type Experiment = 'hoist-v' | 'plain-normalize';
 
-function experimentalMaterial(name: Experiment, _options: object): Material {
-  throw new Error(`unknown experiment ${name}`);
+// biome-ignore lint/suspicious/noExplicitAny: TSL nodes and three's node builder are dynamically typed.
+type N = any;
+
+function experimentalMaterial(name: Experiment, options: object): Material {
+  class Experimental extends ShadingNodeMaterial {
+    override setupLighting(builder: N): N {
+      if (name !== 'plain-normalize' || this.shading !== 'phong' || builder.camera?.isOrthographicCamera) {
+        return super.setupLighting(builder);
+      }
+      const normal: N =
+        builder.geometry.getAttribute('normal') === undefined
+          ? (transformNormalToView(positionLocal) as N).toVarying()
+          : normalView;
+      const v = (positionView as N).negate().normalize();
+      return (this as N).lightSurface(builder, { n: normal.normalize(), v });
+    }
+  }
+  if (name === 'hoist-v') {
+    // ShadingNodeMaterial.lightSurface (protected; the checker sees the webgpu entry's built declarations):
+    // in the fragment stage, v becomes a var computed on the stack before the lighting.
+    const base = (ShadingNodeMaterial.prototype as N).lightSurface as (...args: N[]) => N;
+    (Experimental.prototype as N).lightSurface = function (this: N, builder: N, surface: N, at?: N): N {
+      // Phong shading lights in the fragment stage (setup runs before any stage is set: no shaderStage yet).
+      if (this.shading !== 'phong') return base.call(this, builder, surface, at);
+      const v = surface.v.toVar('towardsEye');
+      v.toStack();
+      return base.call(this, builder, { n: surface.n, v }, at);
+    };
+  }
+  return new Experimental(options as never) as unknown as Material;
 }
 
 // ── Scenes ──────────────────────────────────────────────────────────────────────────────────────────────────
