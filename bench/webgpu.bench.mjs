@@ -9,7 +9,7 @@
 // rounds; ratios are the median of the ratios of frames from the same cycle (and of the medians).
 // Target: phong shading ≤ 1.0× MeshPhongNodeMaterial on the same backend.
 //
-//   node bench/webgpu.bench.mjs [--json PATH] [--frames 60] [--rounds 6] [--width 1280 --height 720]
+//   node bench/webgpu.bench.mjs [--json PATH] [--frames 80] [--rounds 8] [--width 1280 --height 720]
 //                               [--quick] [--experiments NAME,...] [--ab] [--backends webgpu,webgl2,webgl]
 //
 // --quick: 6 frames in 2 rounds (a smoke check, not a measurement). --experiments: also time the named
@@ -21,8 +21,8 @@ import { arg, summarize, writeResults } from './lib/bench.mjs';
 import { openPlayground } from './lib/browser.mjs';
 
 const quick = process.argv.includes('--quick');
-const frames = Number(arg('--frames', quick ? '6' : '60'));
-const rounds = Number(arg('--rounds', quick ? '2' : '6'));
+const frames = Number(arg('--frames', quick ? '6' : '80'));
+const rounds = Number(arg('--rounds', quick ? '2' : '8'));
 const width = Number(arg('--width', '1280'));
 const height = Number(arg('--height', '720'));
 const onlyBackends = arg('--backends', 'webgpu,webgl2,webgl').split(',');

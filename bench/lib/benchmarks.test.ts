@@ -191,6 +191,77 @@ describe('renderBenchmarks', () => {
   });
 });
 
+describe('renderBenchmarks: Material on WebGPURenderer', () => {
+  const timed = (median: number, gpu: number | null) => ({
+    frameMs: timing(median, median - 1, median + 1),
+    gpuMs: gpu === null ? null : timing(gpu),
+  });
+  const pair = (paired: number, median: number, gpu: number | null = null) => ({
+    paired,
+    median,
+    min: median,
+    gpu,
+  });
+  const webgpu = {
+    meta: META,
+    note: 'Shared machine.',
+    width: 1280,
+    height: 720,
+    frames: 60,
+    rounds: 6,
+    scene: 'the lecture scene',
+    perBackend: {
+      webgpu: {
+        label: 'WebGPURenderer (WebGPU)',
+        material: 'ShadingNodeMaterial',
+        threePhong: 'MeshPhongNodeMaterial',
+        gpuTimer: "three's trackTimestamp (timestamp-query)",
+        variants: {
+          'phong × phong': {
+            ...timed(20, 18),
+            vsThreePhong: pair(0.84, 0.82, 0.81),
+            vsWebGLRenderer: pair(1.5, 1.42),
+          },
+          'gouraud × phong': { error: 'no adapter' },
+          'three phong': { ...timed(24, 22), vsThreePhong: null, vsWebGLRenderer: pair(1.45, 1.4) },
+        },
+      },
+      webgl: {
+        label: 'WebGLRenderer',
+        material: 'ShadingMaterial',
+        threePhong: 'MeshPhongMaterial',
+        gpuTimer: 'not available (no EXT_disjoint_timer_query_webgl2)',
+        variants: {
+          'phong × phong': { ...timed(16, null), vsThreePhong: pair(0.8, 0.81), vsWebGLRenderer: null },
+          'three phong': { ...timed(20, null), vsThreePhong: null, vsWebGLRenderer: null },
+        },
+      },
+    },
+    targets: {
+      'webgpu: phong × phong': { ratio: pair(0.84, 0.82, 0.81), target: '≤ 1.0', met: true },
+      'webgl2: phong × phong': { ratio: pair(1.01, 1.03), target: '≤ 1.0', met: false },
+    },
+  };
+  const page = renderBenchmarks({ webgpu });
+
+  it("prints each renderer's rows with three's phong material named for that renderer", () => {
+    expect(page).toContain('### WebGPURenderer (WebGPU): `ShadingNodeMaterial` and `MeshPhongNodeMaterial`');
+    expect(lines(page)).toContain('| phong × phong | 20.0 (19.0) | 18.0 | 0.84 (0.82) | 1.50 (1.42) |');
+    expect(lines(page)).toContain('| MeshPhongNodeMaterial | 24.0 (23.0) | 22.0 | — | 1.45 (1.40) |');
+    expect(lines(page)).toContain('| gouraud × phong | does not render | — | — | — |');
+    expect(page).toContain('- WebGPURenderer (WebGPU), gouraud × phong does not render: no adapter');
+    expect(lines(page)).toContain('| MeshPhongMaterial | 20.0 (19.0) | n/a | — |');
+  });
+
+  it('says where GPU time comes from, and the target per backend with its GPU-time ratio', () => {
+    expect(page).toContain(
+      "GPU ms: the median of WebGPURenderer (WebGPU): three's trackTimestamp (timestamp-query); WebGLRenderer: not available (no EXT_disjoint_timer_query_webgl2).",
+    );
+    expect(lines(page)).toContain('| WebGPU: phong × phong | 0.84 (0.82) | 0.81 | ≤ 1.0 | met |');
+    expect(lines(page)).toContain('| WebGL2: phong × phong | 1.01 (1.03) | n/a | ≤ 1.0 | **not met** |');
+  });
+});
+
 describe('formatting', () => {
   it('groups thousands with commas whatever the locale', () => {
     expect([int(0), int(999), int(1000), int(-1234567), int(1234.5)]).toEqual([
