@@ -9,6 +9,8 @@ import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   BoxGeometry,
   type BufferGeometry,
+  Color,
+  Fog,
   InstancedMesh,
   type Material,
   Matrix4,
@@ -31,7 +33,7 @@ export interface Variant {
  * 'ellipsoid' (the lecture's 2, 1, 2 scale, rotated), 'sphere' (a unit sphere off the axis), 'instanced' (both as
  * two instances of one InstancedMesh), 'mirrored' (the ellipsoid with a negative x scale: det < 0),
  * 'orthographic' (the ellipsoid and the sphere through an orthographic camera), 'inside' (a perspective eye
- * inside the ellipsoid: nothing drawn), 'box' (a unit sphere with a box through it: depth against a mesh),
+ * inside the ellipsoid: nothing drawn), 'fog' (the ellipsoid in three's range Fog), 'box' (a unit sphere with a box through it: depth against a mesh),
  * 'box-alone' and 'sphere-alone' (each of the two without the other).
  */
 export type Scenario =
@@ -41,6 +43,7 @@ export type Scenario =
   | 'mirrored'
   | 'orthographic'
   | 'inside'
+  | 'fog'
   | 'box'
   | 'box-alone'
   | 'sphere-alone';
@@ -87,7 +90,9 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     mesh.applyMatrix4(matrix);
     s.add(mesh);
   };
-  if (scenario === 'ellipsoid' || scenario === 'orthographic' || scenario === 'inside') add(ellipsoid);
+  if (scenario === 'ellipsoid' || scenario === 'orthographic' || scenario === 'inside' || scenario === 'fog')
+    add(ellipsoid);
+  if (scenario === 'fog') s.fog = new Fog(new Color(0.2, 0.4, 0.6), 4.5, 7.5);
   if (scenario === 'sphere' || scenario === 'orthographic') add(sphere);
   if (scenario === 'mirrored') add(ellipsoid.clone().multiply(new Matrix4().makeScale(-1, 1, 1)));
   if (scenario === 'instanced') {
@@ -228,7 +233,8 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
   const b = await renderGpu(backend, v, scenario);
   // Cel bands and where two surfaces meet (the box and the sphere, the ellipsoid and the sphere) are edges within
   // the picture.
-  const oneSurface = scenario === 'ellipsoid' || scenario === 'sphere' || scenario === 'mirrored';
+  const oneSurface =
+    scenario === 'ellipsoid' || scenario === 'sphere' || scenario === 'mirrored' || scenario === 'fog';
   const edges = edgeMask(a, v.celBands > 0 || !oneSurface ? 24 : 255);
   let covered = 0;
   let coverageMismatch = 0;

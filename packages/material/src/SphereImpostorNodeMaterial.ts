@@ -19,6 +19,7 @@ import {
   min,
   mix,
   modelViewMatrix,
+  output,
   positionGeometry,
   select,
   sqrt,
@@ -102,7 +103,8 @@ const maxAbs = (v: N): N => {
  * matrix is the mesh's `matrixWorld` × the instance's matrix (a non-uniform or sheared instance matrix makes the
  * exact ellipsoid, normals included). `instanceColor` is not applied (as on `ShadingNodeMaterial`).
  *
- * Not yet: three's fog and clipping planes at the hit (they would see the quad's position).
+ * three's fog is applied at the hit's depth (range and density fogs; three's height fog reads the world
+ * position, the quad's). Not yet: clipping planes at the hit (three's clipping nodes see the quad's position).
  *
  * @example
  * const material = new SphereImpostorNodeMaterial({ lighting: 'blinn-phong', lights: [light] });
@@ -260,6 +262,18 @@ export class SphereImpostorNodeMaterial extends ShadingNodeMaterial {
     const { view, normal } = this.#hit(builder);
     const v = builder.camera?.isOrthographicCamera === true ? vec3(0, 0, 1) : towardsEye(view);
     return this.lightSurface(builder, { n: unitOr(normal, v), v }, view);
+  }
+
+  /**
+   * three's fog (`scene.fog`) at the hit's view depth: its fog factor reads the depth through the builder
+   * context's `getViewZ`, which is the hit's here (three's own would be the quad's).
+   */
+  override setupFog(builder: N, outputNode: N): N {
+    const fogNode = builder.fogNode;
+    if (!fogNode) return outputNode;
+    const { view } = this.#hit(builder);
+    (output as N).assign(outputNode);
+    return vec4(fogNode.context({ getViewZ: () => view.z }).toVar());
   }
 
   /**
