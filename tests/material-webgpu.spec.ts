@@ -19,7 +19,9 @@ type Scenario =
   | 'fog'
   | 'prepared'
   | 'prepared-other'
-  | 'flattened';
+  | 'flattened'
+  | 'backside'
+  | 'doubleside';
 interface Variant {
   shading: 'flat' | 'gouraud' | 'phong';
   lighting: 'phong' | 'blinn-phong';
@@ -121,6 +123,8 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       // Flat shading by derivatives (per fragment, the face normal): an indexed geometry, an InstancedMesh.
       ['indexed', VARIANTS.filter((v) => v.shading === 'flat')],
       ['instanced', VARIANTS.filter((v) => v.lighting === 'phong')],
+      // Back faces: flat shading lights each with the face normal turned round.
+      ['doubleside', VARIANTS.filter((v) => v.shading === 'flat' && v.celBands === 0)],
     ];
     for (const [scenario, variants] of cases) {
       for (const variant of variants) {
@@ -174,19 +178,21 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
     expect(problems).toEqual([]);
   });
 
-  test(`${backend} backend: a mesh scaled to y = 0 (a disc) is lit with the robust normal matrix, as WebGLRenderer + ShadingMaterial lights it`, async ({
+  test(`${backend} backend: a mesh scaled to y = 0 (a disc; the robust normal matrix), a sphere drawn BackSide and an open cylinder drawn DoubleSide (back faces lit with the normal turned round, per vertex too) = WebGLRenderer + ShadingMaterial`, async ({
     page,
   }) => {
     const problems = await open(page);
-    for (const variant of VARIANTS.filter((v) => v.celBands === 0 && v.lighting === 'phong')) {
-      const stats = await page.evaluate(
-        ([b, v]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'flattened'),
-        [backend, variant] as const,
-      );
-      const label = `${backend} flattened ${JSON.stringify(variant)}`;
-      expect(stats.covered, label).toBeGreaterThan(3000);
-      expect(stats.coverageMismatch, label).toBe(0);
-      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+    for (const scenario of ['flattened', 'backside', 'doubleside'] as const) {
+      for (const variant of VARIANTS.filter((v) => v.celBands === 0 && v.lighting === 'phong')) {
+        const stats = await page.evaluate(
+          ([b, v, sc]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, sc),
+          [backend, variant, scenario] as const,
+        );
+        const label = `${backend} ${scenario} ${JSON.stringify(variant)} ${JSON.stringify(stats)}`;
+        expect(stats.covered, label).toBeGreaterThan(3000);
+        expect(stats.coverageMismatch, label).toBe(0);
+        expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+      }
     }
     expect(problems).toEqual([]);
   });

@@ -15,10 +15,14 @@ import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   AmbientLight,
+  BackSide,
   type BufferGeometry,
   Color,
+  CylinderGeometry,
   DirectionalLight,
+  DoubleSide,
   Fog,
+  FrontSide,
   HemisphereLight,
   InstancedMesh,
   type Light,
@@ -31,6 +35,7 @@ import {
   PointLight,
   Raycaster,
   Scene,
+  type Side,
   SpotLight,
   Vector2,
   Vector3,
@@ -55,7 +60,9 @@ export type Backend = 'webgpu' | 'webgl2';
  * carrying the transform: flat shading by derivatives), 'fog' (the lecture's scene in three's Fog), 'prepared'
  * (the indexed sphere through flatShadingGeometry for the backend's provoking vertex: one colour per face),
  * 'prepared-other' (made for the other backend's: by derivatives, with a warning), 'flattened' (the lecture's
- * scene with the sphere's y scale 0: a disc, whose normal only the robust normal matrix gives).
+ * scene with the sphere's y scale 0: a disc, whose normal only the robust normal matrix gives), 'backside' (the
+ * sphere drawn BackSide: its far inner half), 'doubleside' (an open cylinder, non-indexed, drawn DoubleSide: its
+ * outside and, through the open end, its inside).
  */
 export type Scenario =
   | 'lecture'
@@ -67,7 +74,9 @@ export type Scenario =
   | 'fog'
   | 'prepared'
   | 'prepared-other'
-  | 'flattened';
+  | 'flattened'
+  | 'backside'
+  | 'doubleside';
 
 const SIZE = 128;
 const geometry: BufferGeometry = new SubdivisionSphereGeometry({
@@ -94,7 +103,14 @@ const prepared = {
   last: flatShadingGeometry(indexedGeometry, { provokingVertex: 'last' }),
 };
 
+const cylinder = new CylinderGeometry(0.8, 0.8, 1.6, 12, 1, true).toNonIndexed();
+
+/** The side a scenario's material draws. */
+const sideOf = (scenario: Scenario): Side =>
+  scenario === 'backside' ? BackSide : scenario === 'doubleside' ? DoubleSide : FrontSide;
+
 function geometryOf(scenario: Scenario, backend: Backend | 'webgl'): BufferGeometry {
+  if (scenario === 'doubleside') return cylinder;
   if (scenario === 'analytic') return bareGeometry;
   if (scenario === 'indexed') return indexedGeometry;
   if (scenario === 'prepared') return prepared[provoking(backend)];
@@ -229,6 +245,7 @@ function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
 async function renderGpu(backend: Backend, v: Variant, scenario: Scenario = 'lecture') {
   const renderer = await gpuRenderer(backend);
   const material = new ShadingNodeMaterial({ ...v, shininess: shininessOf(scenario), lights: [] });
+  material.side = sideOf(scenario);
   const setup = scene(material, scenario, backend);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
   renderer.setRenderTarget(target);
@@ -252,6 +269,7 @@ let gl: WebGLRenderer | null = null;
 function renderGl(v: Variant, scenario: Scenario = 'lecture'): Uint8Array {
   gl ??= new WebGLRenderer({ antialias: false });
   const material = new ShadingMaterial(v);
+  material.side = sideOf(scenario);
   const setup = scene(material, scenario);
   const target = new WebGLRenderTarget(SIZE, SIZE);
   gl.setRenderTarget(target);
@@ -302,7 +320,7 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
   const { mesh, camera, lights } = setup;
   // Triangle k of the indexed sphere is triangle k of its soup (and of its flatShadingGeometry, corners rotated).
   const fromIndexed = scenario === 'indexed' || scenario === 'prepared' || scenario === 'prepared-other';
-  const soup = fromIndexed ? indexedGeometry.toNonIndexed() : geometry;
+  const soup = fromIndexed ? indexedGeometry.toNonIndexed() : scenario === 'doubleside' ? cylinder : geometry;
   const positions = soup.getAttribute('position');
   // Flat shading by derivatives: per fragment, the face normal at the fragment's position.
   const perFragmentFlat = scenario === 'indexed' || scenario === 'instanced' || scenario === 'prepared-other';
@@ -427,6 +445,18 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
       } else if (v.shading === 'flat') {
         if (faceEdge[t]) continue;
         expected = faceColour[t];
+        // A back face (seen from behind its winding) is lit with the face normal turned round.
+        const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
+        const normal = b.clone().sub(a).cross(c.clone().sub(a));
+        if (normal.dot(hit.point.clone().sub(camera.position)) > 0) {
+          const centroid = a.clone().add(b).add(c).divideScalar(3);
+          if (atDiscontinuity(centroid, normal)) continue;
+          expected = shade(
+            { position: centroid.toArray(), normal: normal.negate().toArray(), eye },
+            m,
+            lights,
+          );
+        }
         const key = `${pixels[o]},${pixels[o + 1]},${pixels[o + 2]}`;
         const seen = faceSeen.get(t);
         if (seen === undefined) faceSeen.set(t, key);
@@ -470,6 +500,7 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario = 
   let differing = 0;
   let covered = 0;
   let coverageMismatch = 0;
+  let worst: unknown = null;
   for (let i = 0; i < a.length; i += 4) {
     const ca = !(a[i] === 0 && a[i + 1] === 0 && a[i + 2] === 255);
     const cb = !(b[i] === 0 && b[i + 1] === 0 && b[i + 2] === 255);
@@ -477,10 +508,19 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario = 
     if (!ca || !cb) continue;
     covered++;
     const d = Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2]));
-    maxDelta = Math.max(maxDelta, d);
+    if (d > maxDelta) {
+      maxDelta = d;
+      const p = i / 4;
+      worst = {
+        x: p % SIZE,
+        y: Math.floor(p / SIZE),
+        webgl: [a[i], a[i + 1], a[i + 2]],
+        gpu: [b[i], b[i + 1], b[i + 2]],
+      };
+    }
     if (d > 2) differing++;
   }
-  return { covered, maxDelta, differing, coverageMismatch };
+  return { covered, maxDelta, differing, coverageMismatch, worst };
 }
 
 /** How many pixels three's Fog changes by more than 2/255 on WebGPURenderer (the fog is really applied). */

@@ -4,6 +4,7 @@ import {
   attribute,
   cameraViewMatrix,
   float,
+  frontFacing,
   ivec2,
   lightingContext,
   lightViewPosition,
@@ -25,9 +26,11 @@ import {
 } from 'three/tsl';
 import {
   AnalyticLightNode,
+  BackSide,
   type BufferGeometry,
   Color,
   DataTexture,
+  DoubleSide,
   FloatType,
   type Light,
   LightingModel,
@@ -133,6 +136,11 @@ export interface Surface {
   n: N;
   /** Unit vector towards the viewer. */
   v: N;
+  /**
+   * A vec3 variable (`toVar()`, starting at 0) that receives the colour of the other side, lit with −n, in the
+   * same pass (two lighting passes cannot share three's light nodes in one shader).
+   */
+  back?: N;
 }
 
 /** The lecture's equation as three's lighting model: one direct() per light, ambient through indirect(). */
@@ -162,19 +170,25 @@ class LectureLightingModel extends LightingModel {
       builder,
       nodes.filter((node) => !hemispheres.includes(node)),
     );
+    const { n, back } = this.surface;
+    const { ka } = this.uniforms;
+    // The ambient lights' irradiance is the same on both sides; the hemispheres' is not.
+    back?.addAssign(builder.context.irradiance.mul(ka));
     for (const node of hemispheres) {
       // Registered for its per-frame update (colours, direction); its own setup is not built.
       builder.addNode(node);
       const direction = (cameraViewMatrix as N).mul(vec4(node.lightDirectionNode, 0)).xyz;
-      const weight = this.surface.n.dot(direction).mul(0.5).add(0.5);
-      builder.context.irradiance.addAssign(mix(node.groundColorNode, node.colorNode, weight));
+      const weight = n.dot(direction).mul(0.5);
+      builder.context.irradiance.addAssign(mix(node.groundColorNode, node.colorNode, weight.add(0.5)));
+      back?.addAssign(mix(node.groundColorNode, node.colorNode, weight.negate().add(0.5)).mul(ka));
     }
     this.indirect(builder);
   }
 
   override direct(data: N): void {
-    const { n, v } = this.surface;
+    const { n, v, back } = this.surface;
     const { ka, kd, ks, shininess } = this.uniforms;
+    let ambient: N = null;
     const { reflectedLight } = data;
     let l: N;
     let id: N;
@@ -189,7 +203,8 @@ class LectureLightingModel extends LightingModel {
       att = float(1).div(max(abc.x.add(abc.y.mul(t)).add(abc.z.mul(t).mul(t)), MIN_ATTENUATION_DENOMINATOR));
       id = node.diffuse;
       is = node.specular;
-      reflectedLight.indirectDiffuse.addAssign(ka.mul(node.ambient));
+      ambient = ka.mul(node.ambient);
+      reflectedLight.indirectDiffuse.addAssign(ambient);
     } else {
       // three's lights: Id = Is = colour × intensity × three's falloff.
       l = data.lightDirection;
@@ -197,26 +212,47 @@ class LectureLightingModel extends LightingModel {
       is = data.lightColor;
     }
     const ndl = n.dot(l);
-    let diffuse: N = max(ndl, 0);
-    let x: N;
-    if (this.material.lighting === 'blinn-phong') {
-      const h = l.add(v);
-      const hl = h.length();
-      x = select(hl.greaterThan(0), max(n.dot(h).div(max(hl, 1e-30)), 0), float(0));
-    } else {
-      // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l.
-      x = max(ndl.mul(2).mul(v.dot(n)).sub(v.dot(l)), 0);
-    }
-    // 0⁰ = 1: shininess 0 gives a uniform highlight over the lit side.
-    const power = select(x.greaterThan(0), x.pow(shininess), select(shininess.equal(0), float(1), float(0)));
-    let spec: N = select(ndl.greaterThan(0), power, float(0));
-    const bands = this.material.celBands;
-    if (bands > 0) {
-      diffuse = min(diffuse.mul(bands).floor(), bands - 1).div(bands - 1);
-      spec = select(spec.greaterThanEqual(0.5), float(1), float(0));
-    }
+    const h = this.material.lighting === 'blinn-phong' ? l.add(v) : null;
+    // One side's diffuse and specular factors, for the normal n·sign (the back side: −n).
+    const side = (sign: number): [N, N] => {
+      const cos = sign > 0 ? ndl : ndl.negate();
+      let diffuse: N = max(cos, 0);
+      let x: N;
+      if (h !== null) {
+        const hl = h.length();
+        const nh = sign > 0 ? n.dot(h) : n.dot(h).negate();
+        x = select(hl.greaterThan(0), max(nh.div(max(hl, 1e-30)), 0), float(0));
+      } else {
+        // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l (the same for −n).
+        x = max(ndl.mul(2).mul(v.dot(n)).sub(v.dot(l)), 0);
+      }
+      // 0⁰ = 1: shininess 0 gives a uniform highlight over the lit side.
+      const power = select(
+        x.greaterThan(0),
+        x.pow(shininess),
+        select(shininess.equal(0), float(1), float(0)),
+      );
+      let spec: N = select(cos.greaterThan(0), power, float(0));
+      const bands = this.material.celBands;
+      if (bands > 0) {
+        diffuse = min(diffuse.mul(bands).floor(), bands - 1).div(bands - 1);
+        spec = select(spec.greaterThanEqual(0.5), float(1), float(0));
+      }
+      return [diffuse, spec];
+    };
+    const [diffuse, spec] = side(1);
     reflectedLight.directDiffuse.addAssign(kd.mul(id).mul(diffuse.mul(att)));
     reflectedLight.directSpecular.addAssign(ks.mul(is).mul(spec.mul(att)));
+    if (back !== undefined) {
+      const [backDiffuse, backSpec] = side(-1);
+      back.addAssign(
+        kd
+          .mul(id)
+          .mul(backDiffuse.mul(att))
+          .add(ks.mul(is).mul(backSpec.mul(att))),
+      );
+      if (ambient !== null) back.addAssign(ambient);
+    }
   }
 
   override indirect(builder: N): void {
@@ -518,10 +554,18 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const n = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
       return light({ n, v });
     }
+    // The vertex stage cannot tell a front face from a back one: it lights the side(s) the material draws, the
+    // back with the normal turned round, and the fragment takes the colour of the side it is on.
+    // Both sides (DoubleSide) are lit in one pass, the back into a variable of its own.
+    const sided = (lit: (sign: number, back?: N) => N, interpolate: (node: N) => N): N => {
+      if (this.side !== DoubleSide) return interpolate(lit(this.side === BackSide ? -1 : 1));
+      const back = vec3(0).toVar();
+      return select(frontFacing, interpolate(lit(1, back)), interpolate(back));
+    };
     if (this.#shading === 'gouraud') {
       const v = towardsViewer(positionView);
       const n = unitOr(normalToView(localNormal), v);
-      return varying(light({ n, v }));
+      return sided((sign, back) => light({ n: n.mul(sign), v, back }), varying);
     }
     const face = this.#flatFace(builder, geometry);
     if (face !== null) {
@@ -530,8 +574,12 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const view = (modelViewMatrix as N).mul(vec4(a.add(b).add(c).div(3), 1)).xyz;
       const v = towardsViewer(view);
       const n = unitOr(normalToView(b.sub(a).cross(c.sub(a))), v);
-      return varying(light({ n, v }, view)).setInterpolation('flat');
+      return sided(
+        (sign, back) => light({ n: n.mul(sign), v, back }, view),
+        (node) => varying(node).setInterpolation('flat'),
+      );
     }
+    // The derivatives' normal faces the viewer: the visible side's, whichever it is.
     const v = towardsViewer(positionView);
     const n = unitOr((positionView as N).dFdx().cross((positionView as N).dFdy()), v);
     return light({ n, v });
