@@ -1,0 +1,907 @@
+// Harness for tests/material-webgpu-scene.spec.ts: ShadingNodeMaterial in the scenes apps have (skinning, morph
+// targets, BatchedMesh, InstancedMesh, clipping, tone mapping, output colour space) under WebGPURenderer on both
+// backends, rendered offscreen and read back; compared with WebGLRenderer + ShadingMaterial (colours), three's
+// MeshPhongNodeMaterial on the same renderer (coverage) and shade() (flat shading by derivatives). Also device
+// loss and recovery, and create/dispose cycles.
+import {
+  PhongLight,
+  type ShadeLight,
+  type ShadeMaterial,
+  type ShadeThreeLight,
+  type Shading,
+  ShadingMaterial,
+  shade,
+} from '@shadelab/material';
+import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
+import {
+  ACESFilmicToneMapping,
+  BatchedMesh,
+  Bone,
+  type BufferGeometry,
+  type Camera,
+  Color,
+  CylinderGeometry,
+  DirectionalLight,
+  Euler,
+  Float32BufferAttribute,
+  InstancedMesh,
+  LinearSRGBColorSpace,
+  type Material,
+  Matrix3,
+  Matrix4,
+  Mesh,
+  NoToneMapping,
+  type Object3D,
+  PerspectiveCamera,
+  Plane,
+  Quaternion,
+  Raycaster,
+  Scene,
+  Skeleton,
+  SkinnedMesh,
+  SRGBColorSpace,
+  Uint16BufferAttribute,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import { ClippingGroup, MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+
+export type Backend = 'webgpu' | 'webgl2';
+/** The object: a sphere Mesh, a SkinnedMesh (bent cylinder), a morphed sphere, a BatchedMesh, an InstancedMesh. */
+export type Kind = 'mesh' | 'skinned' | 'morphed' | 'batched' | 'instanced';
+/**
+ * Clipping. WebGPURenderer has no `material.clippingPlanes` nor `renderer.clippingPlanes`: its clipping is
+ * `ClippingGroup`. 'local': a ClippingGroup around the object (WebGL: material.clippingPlanes); 'global': one plane
+ * on an outer group and one on an inner (WebGL: renderer.clippingPlanes and material.clippingPlanes); 'intersection':
+ * a group with clipIntersection and two planes (WebGL: material.clipIntersection); 'material-planes':
+ * material.clippingPlanes set on the node material (which WebGPURenderer ignores).
+ */
+export type Clip = 'none' | 'local' | 'global' | 'intersection' | 'material-planes';
+export interface SceneCase {
+  kind: Kind;
+  shading: Shading;
+  lighting?: 'phong' | 'blinn-phong';
+  celBands?: number;
+  /** Flat shading's geometry: indexed (flat by derivatives in both materials) or a triangle soup. @default 'indexed' */
+  flatGeometry?: 'indexed' | 'soup';
+  clip?: Clip;
+  /** Through the output conversion (WebGPU: an output render target; WebGL: the canvas). Absent: a linear target. */
+  output?: 'srgb' | 'linear';
+  /** renderer.toneMapping = ACESFilmicToneMapping (with `output`). */
+  toneMapping?: boolean;
+  /** material.toneMapped. @default true */
+  toneMapped?: boolean;
+  /** InstancedMesh / BatchedMesh: per-instance colours. */
+  instanceColor?: boolean;
+}
+
+const SIZE = 128;
+const P1 = new Plane(new Vector3(1, 0.3, 0).normalize(), 0.2);
+const P2 = new Plane(new Vector3(0, -1, 0.2).normalize(), 0.35);
+
+const sphere = (indexed: boolean) =>
+  new SubdivisionSphereGeometry({ level: 2, base: 'tetrahedron', indexed });
+
+/** The bone-weighted cylinder: 3 high, radius 0.6, bones at y = −1.5 (root) and y = 0, blended over |y| < 0.5. */
+function skinnedCylinder(): BufferGeometry {
+  const g = new CylinderGeometry(0.6, 0.6, 3, 8, 6);
+  const position = g.getAttribute('position');
+  const index = new Uint16Array(4 * position.count);
+  const weight = new Float32Array(4 * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const t = Math.min(Math.max(position.getY(i) + 0.5, 0), 1);
+    const w = t * t * (3 - 2 * t);
+    index.set([0, 1, 0, 0], 4 * i);
+    weight.set([1 - w, w, 0, 0], 4 * i);
+  }
+  g.setAttribute('skinIndex', new Uint16BufferAttribute(index, 4));
+  g.setAttribute('skinWeight', new Float32BufferAttribute(weight, 4));
+  return g;
+}
+
+/** The sphere with one morph target (positions stretched to (1.6, 0.8, 1.2), normals to match). */
+function morphed(source: BufferGeometry): BufferGeometry {
+  const g = source.clone();
+  const position = g.getAttribute('position');
+  const k = [1.6, 0.8, 1.2];
+  const p = new Float32Array(3 * position.count);
+  const n = new Float32Array(3 * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const [x, y, z] = [position.getX(i), position.getY(i), position.getZ(i)];
+    p.set([x * k[0], y * k[1], z * k[2]], 3 * i);
+    const m = [x / k[0], y / k[1], z / k[2]];
+    const l = Math.hypot(m[0], m[1], m[2]);
+    n.set([m[0] / l, m[1] / l, m[2] / l], 3 * i);
+  }
+  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
+  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
+  return g;
+}
+
+/**
+ * The geometries, one set per renderer kind: a geometry drawn by WebGPURenderer's WebGL2 backend is not drawn
+ * by WebGLRenderer afterwards (GL_INVALID_OPERATION, the skin index attribute's type), and apps do not share
+ * geometries between the two renderers.
+ */
+function geometries() {
+  const cylinder = skinnedCylinder();
+  return {
+    sphereIndexed: sphere(true),
+    sphereSoup: sphere(false),
+    cylinderIndexed: cylinder,
+    cylinderSoup: cylinder.toNonIndexed(),
+    morphIndexed: morphed(sphere(true)),
+    morphSoup: morphed(sphere(false)),
+  };
+}
+const GEOMETRIES = { gpu: geometries(), gl: geometries() };
+
+/** Two instances with different matrices (and colours). */
+const INSTANCES = [
+  {
+    matrix: new Matrix4().compose(
+      new Vector3(-0.75, 0.1, 0),
+      new Quaternion().setFromEuler(new Euler(0.3, 0.5, 0)),
+      new Vector3(0.7, 0.7, 0.7),
+    ),
+    color: new Color(1, 0.5, 0.25),
+  },
+  {
+    matrix: new Matrix4().compose(
+      new Vector3(0.8, -0.2, -0.3),
+      new Quaternion().setFromEuler(new Euler(0, 0, 0.6)),
+      new Vector3(0.55, 0.8, 0.55),
+    ),
+    color: new Color(0.25, 1, 0.5),
+  },
+];
+
+const flatSoup = (c: SceneCase) => c.shading === 'flat' && c.flatGeometry === 'soup';
+
+export interface Setup {
+  scene: Scene;
+  camera: PerspectiveCamera;
+  object: Mesh;
+  /** The source geometry (a BatchedMesh draws its own copy). */
+  geometry: BufferGeometry;
+  lights: (ShadeLight | ShadeThreeLight)[];
+}
+
+/** The scene of `c` with `material`, built for WebGPURenderer ('gpu') or WebGLRenderer ('gl'). */
+function build(material: Material, c: SceneCase, api: 'gpu' | 'gl'): Setup {
+  const soup = flatSoup(c);
+  const { sphereIndexed, sphereSoup, cylinderIndexed, cylinderSoup, morphIndexed, morphSoup } =
+    GEOMETRIES[api];
+  let object: Mesh;
+  let geometry: BufferGeometry;
+  if (c.kind === 'skinned') {
+    geometry = soup ? cylinderSoup : cylinderIndexed;
+    const mesh = new SkinnedMesh(geometry, material);
+    const root = new Bone();
+    root.position.set(0, -1.5, 0);
+    const joint = new Bone();
+    joint.position.set(0, 1.5, 0);
+    root.add(joint);
+    mesh.add(root);
+    mesh.bind(new Skeleton([root, joint]));
+    joint.rotation.z = 0.7;
+    joint.position.x = 0.15;
+    object = mesh;
+  } else if (c.kind === 'morphed') {
+    geometry = soup ? morphSoup : morphIndexed;
+    object = new Mesh(geometry, material);
+    object.morphTargetInfluences = [0.5];
+    object.rotation.set(0.3, 0.5, 0);
+  } else if (c.kind === 'instanced') {
+    geometry = soup ? sphereSoup : sphereIndexed;
+    const mesh = new InstancedMesh(geometry, material, INSTANCES.length);
+    INSTANCES.forEach((instance, i) => {
+      mesh.setMatrixAt(i, instance.matrix);
+      if (c.instanceColor) mesh.setColorAt(i, instance.color);
+    });
+    object = mesh;
+  } else if (c.kind === 'batched') {
+    geometry = soup ? sphereSoup : sphereIndexed;
+    const index = geometry.index;
+    const mesh = new BatchedMesh(
+      INSTANCES.length,
+      geometry.getAttribute('position').count,
+      index === null ? 0 : index.count,
+      material,
+    );
+    const id = mesh.addGeometry(geometry);
+    // A BatchedMesh draws its own geometry: flag it as a sphere centred at its origin, as the source is.
+    mesh.geometry.userData.isSphere = true;
+    INSTANCES.forEach((instance) => {
+      const i = mesh.addInstance(id);
+      mesh.setMatrixAt(i, instance.matrix);
+      if (c.instanceColor) mesh.setColorAt(i, instance.color);
+    });
+    object = mesh as unknown as Mesh;
+  } else {
+    geometry = c.shading === 'flat' ? sphereSoup : sphereIndexed;
+    object = new Mesh(geometry, material);
+    object.scale.set(1.2, 1, 1.2);
+    object.rotation.set(0.3, 0.5, 0);
+  }
+  object.frustumCulled = false;
+  const scene = new Scene();
+  const clip = c.clip ?? 'none';
+  if (api === 'gpu' && (clip === 'local' || clip === 'global' || clip === 'intersection')) {
+    const group = new ClippingGroup();
+    group.clippingPlanes = clip === 'intersection' ? [P1, P2] : [P1];
+    group.clipIntersection = clip === 'intersection';
+    group.add(object);
+    if (clip === 'global') {
+      const outer = new ClippingGroup();
+      outer.clippingPlanes = [P2];
+      outer.add(group);
+      scene.add(outer);
+    } else scene.add(group);
+  } else scene.add(object);
+  if (clip === 'material-planes' || (api === 'gl' && clip !== 'none')) {
+    material.clippingPlanes = clip === 'intersection' ? [P1, P2] : [P1];
+    material.clipIntersection = clip === 'intersection';
+  }
+  if (c.toneMapped === false) material.toneMapped = false;
+  const light = new PhongLight();
+  light.position.set(-5, 10, 20);
+  const sun = new DirectionalLight(new Color(1, 0.9, 0.8), 0.6);
+  sun.position.set(3, 2, 4);
+  scene.add(light, sun);
+  const camera = new PerspectiveCamera(45, 1, 0.1, 20);
+  if (c.kind === 'skinned') {
+    camera.position.set(0.2, 0.3, 4.4);
+    camera.lookAt(-0.45, -0.1, 0);
+  } else {
+    camera.position.set(0, 0, 3.8);
+    camera.lookAt(0, 0, 0);
+  }
+  scene.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  if (object instanceof SkinnedMesh) object.skeleton.update();
+  const s = (col: Color, i: number) => [col.r * i, col.g * i, col.b * i];
+  return {
+    scene,
+    camera,
+    object,
+    geometry,
+    lights: [
+      {
+        position: light.position.toArray(),
+        ambient: light.ambient.toArray(),
+        diffuse: light.diffuse.toArray(),
+        specular: light.specular.toArray(),
+      },
+      {
+        type: 'directional',
+        color: s(sun.color, sun.intensity),
+        direction: sun.position.clone().normalize().toArray(),
+      },
+    ],
+  };
+}
+
+const nodeMaterial = (c: SceneCase) =>
+  new ShadingNodeMaterial({ shading: c.shading, lighting: c.lighting ?? 'phong', celBands: c.celBands ?? 0 });
+
+const renderers = new Map<Backend, Promise<WebGPURenderer>>();
+function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
+  let r = renderers.get(backend);
+  if (r === undefined) {
+    const renderer = new WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl2' });
+    r = renderer.init().then(() => renderer);
+    renderers.set(backend, r);
+  }
+  return r;
+}
+
+const isWebGPU = (r: WebGPURenderer) =>
+  (r.backend as unknown as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
+
+/**
+ * Draws `scene` into a new target and reads it back, rows bottom-up, RGBA8, cleared to (0, 0, 0, 0). With
+ * `output`, through the renderer's output pass (tone mapping, output colour space) into the target as the output
+ * render target (presenting to a WebGPU canvas headless loses the device); else linear into the target.
+ */
+async function drawGpu(r: WebGPURenderer, scene: Scene, camera: Camera, c: SceneCase): Promise<Uint8Array> {
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  r.setClearColor(0x000000, 0);
+  if (c.output !== undefined) {
+    r.toneMapping = c.toneMapping ? ACESFilmicToneMapping : NoToneMapping;
+    r.outputColorSpace = c.output === 'srgb' ? SRGBColorSpace : LinearSRGBColorSpace;
+    r.setOutputRenderTarget(target);
+    r.setRenderTarget(null);
+  } else r.setRenderTarget(target);
+  try {
+    r.render(scene, camera);
+    const data = (await r.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+    // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL).
+    const pixels = new Uint8Array(data);
+    if (isWebGPU(r)) {
+      const row = 4 * SIZE;
+      for (let y = 0; y < SIZE; y++)
+        pixels.set(data.subarray((SIZE - 1 - y) * row, (SIZE - y) * row), y * row);
+    }
+    return pixels;
+  } finally {
+    r.setOutputRenderTarget(null);
+    r.setRenderTarget(null);
+    r.toneMapping = NoToneMapping;
+    r.outputColorSpace = SRGBColorSpace;
+    target.dispose();
+  }
+}
+
+/** WebGPURenderer with ShadingNodeMaterial ('shading') or three's MeshPhongNodeMaterial ('phong'). */
+async function renderGpu(backend: Backend, c: SceneCase, which: 'shading' | 'phong' = 'shading') {
+  const r = await gpuRenderer(backend);
+  const material = which === 'phong' ? new MeshPhongNodeMaterial() : nodeMaterial(c);
+  const setup = build(material, c, 'gpu');
+  const pixels = await drawGpu(r, setup.scene, setup.camera, c);
+  material.dispose();
+  // The object is kept for the CPU reference (a disposed BatchedMesh cannot be ray cast).
+  return { pixels, setup, dispose: () => (setup.object as { dispose?: () => void }).dispose?.() };
+}
+
+let gl: WebGLRenderer | null = null;
+/** WebGLRenderer + ShadingMaterial: linear into a target, or with `output` on the canvas (tone mapping, colour space). */
+function renderGl(c: SceneCase): Uint8Array {
+  if (gl === null) {
+    gl = new WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: true });
+    gl.setPixelRatio(1);
+    gl.setSize(SIZE, SIZE, false);
+  }
+  const r = gl;
+  const material = new ShadingMaterial({
+    shading: c.shading,
+    lighting: c.lighting ?? 'phong',
+    celBands: c.celBands ?? 0,
+  });
+  const setup = build(material, c, 'gl');
+  r.setClearColor(0x000000, 0);
+  r.localClippingEnabled = (c.clip ?? 'none') !== 'none';
+  r.clippingPlanes = c.clip === 'global' ? [P2] : [];
+  const pixels = new Uint8Array(4 * SIZE * SIZE);
+  if (c.output !== undefined) {
+    r.toneMapping = c.toneMapping ? ACESFilmicToneMapping : NoToneMapping;
+    r.outputColorSpace = c.output === 'srgb' ? SRGBColorSpace : LinearSRGBColorSpace;
+    r.setRenderTarget(null);
+    r.render(setup.scene, setup.camera);
+    const context = r.getContext();
+    context.readPixels(0, 0, SIZE, SIZE, context.RGBA, context.UNSIGNED_BYTE, pixels);
+  } else {
+    const target = new WebGLRenderTarget(SIZE, SIZE);
+    r.setRenderTarget(target);
+    r.render(setup.scene, setup.camera);
+    r.readRenderTargetPixels(target, 0, 0, SIZE, SIZE, pixels);
+    r.setRenderTarget(null);
+    target.dispose();
+  }
+  r.toneMapping = NoToneMapping;
+  r.outputColorSpace = SRGBColorSpace;
+  r.clippingPlanes = [];
+  r.localClippingEnabled = false;
+  material.dispose();
+  (setup.object as { dispose?: () => void }).dispose?.();
+  return pixels;
+}
+
+const covered = (p: Uint8Array, i: number) => p[4 * i + 3] !== 0;
+/** Whether pixel (x, y) and its 8 neighbours are all covered (true), all not (false), or mixed (null). */
+function neighbourhood(p: Uint8Array, x: number, y: number): boolean | null {
+  let all = true;
+  let none = true;
+  for (let dy = -1; dy <= 1; dy++) {
+    for (let dx = -1; dx <= 1; dx++) {
+      const u = Math.min(Math.max(x + dx, 0), SIZE - 1);
+      const v = Math.min(Math.max(y + dy, 0), SIZE - 1);
+      if (covered(p, v * SIZE + u)) none = false;
+      else all = false;
+    }
+  }
+  return all ? true : none ? false : null;
+}
+
+/** The world-space corners of every drawn triangle (three's CPU morphing and skinning, instance matrices). */
+function worldTriangles(setup: Setup): Vector3[] {
+  const { object, geometry } = setup;
+  const index = geometry.index;
+  const count = index === null ? geometry.getAttribute('position').count : index.count;
+  const vertex = (k: number) => (index === null ? k : index.getX(k));
+  const matrices =
+    object instanceof InstancedMesh || (object as unknown as BatchedMesh).isBatchedMesh
+      ? INSTANCES.map((i) => object.matrixWorld.clone().multiply(i.matrix))
+      : [object.matrixWorld];
+  const corners: Vector3[] = [];
+  const local: Vector3[] = [];
+  for (let k = 0; k < count; k++) {
+    const v = new Vector3();
+    if (object instanceof InstancedMesh || (object as unknown as BatchedMesh).isBatchedMesh)
+      v.fromBufferAttribute(geometry.getAttribute('position'), vertex(k));
+    else object.getVertexPosition(vertex(k), v);
+    local.push(v);
+  }
+  for (const m of matrices) for (const v of local) corners.push(v.clone().applyMatrix4(m));
+  return corners;
+}
+
+/** Pixels within 1.5 px of any triangle edge (where two renderers may give a pixel to different faces). */
+function edgeMask(setup: Setup): Uint8Array {
+  const mask = new Uint8Array(SIZE * SIZE);
+  const corners = worldTriangles(setup).map((p) => {
+    const s = p.clone().project(setup.camera);
+    return new Vector2(((s.x + 1) / 2) * SIZE, ((s.y + 1) / 2) * SIZE);
+  });
+  for (let t = 0; t < corners.length; t += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = corners[t + k];
+      const b = corners[t + ((k + 1) % 3)];
+      const e = b.clone().sub(a);
+      const l2 = Math.max(e.lengthSq(), 1e-12);
+      const x0 = Math.max(0, Math.floor(Math.min(a.x, b.x) - 2));
+      const x1 = Math.min(SIZE - 1, Math.ceil(Math.max(a.x, b.x) + 2));
+      const y0 = Math.max(0, Math.floor(Math.min(a.y, b.y) - 2));
+      const y1 = Math.min(SIZE - 1, Math.ceil(Math.max(a.y, b.y) + 2));
+      for (let y = y0; y <= y1; y++) {
+        for (let x = x0; x <= x1; x++) {
+          const p = new Vector2(x + 0.5, y + 0.5);
+          const t0 = Math.min(Math.max(p.clone().sub(a).dot(e) / l2, 0), 1);
+          if (p.distanceTo(a.clone().addScaledVector(e, t0)) < 1.5) mask[y * SIZE + x] = 1;
+        }
+      }
+    }
+  }
+  return mask;
+}
+
+export interface Diff {
+  /** Pixels `a` covers. */
+  covered: number;
+  /** Pixels covered by one and not the other. */
+  coverageMismatches: number;
+  /** Of those, the ones whose 3 × 3 neighbourhood in `b` is uniform (not at an edge of `b`'s coverage). */
+  interiorCoverageMismatches: number;
+  /** Pixels compared: covered with their 3 × 3 neighbourhood in both, not masked. */
+  compared: number;
+  /** max |a − b| over RGB, 1/255. */
+  maxDelta: number;
+  /** Compared pixels differing by more than 2/255. */
+  differing: number;
+  worst: unknown;
+}
+
+function diff(a: Uint8Array, b: Uint8Array, mask?: Uint8Array): Diff {
+  const d: Diff = {
+    covered: 0,
+    coverageMismatches: 0,
+    interiorCoverageMismatches: 0,
+    compared: 0,
+    maxDelta: 0,
+    differing: 0,
+    worst: null,
+  };
+  for (let y = 0; y < SIZE; y++) {
+    for (let x = 0; x < SIZE; x++) {
+      const i = y * SIZE + x;
+      const ca = covered(a, i);
+      const cb = covered(b, i);
+      if (ca) d.covered++;
+      if (ca !== cb) {
+        d.coverageMismatches++;
+        if (neighbourhood(b, x, y) !== null) d.interiorCoverageMismatches++;
+      }
+      if (neighbourhood(a, x, y) !== true || neighbourhood(b, x, y) !== true) continue;
+      if (mask !== undefined && mask[i] === 1) continue;
+      d.compared++;
+      const o = 4 * i;
+      const delta = Math.max(
+        Math.abs(a[o] - b[o]),
+        Math.abs(a[o + 1] - b[o + 1]),
+        Math.abs(a[o + 2] - b[o + 2]),
+      );
+      if (delta > d.maxDelta) {
+        d.maxDelta = delta;
+        d.worst = { x, y, a: Array.from(a.subarray(o, o + 4)), b: Array.from(b.subarray(o, o + 4)) };
+      }
+      if (delta > 2) d.differing++;
+    }
+  }
+  return d;
+}
+
+/** Flat shading by derivatives against shade(): each fragment lit at its point with its deformed face's normal. */
+function shadeFlat(setup: Setup, pixels: Uint8Array, c: SceneCase, mask: Uint8Array) {
+  const { object, camera, lights } = setup;
+  const eye = [camera.position.x, camera.position.y, camera.position.z, 1];
+  const m: ShadeMaterial = {
+    ka: [0.6, 0.35, 0.2],
+    kd: [0.6, 0.35, 0.2],
+    ks: [0.5, 0.5, 0.5],
+    shininess: 32,
+    lighting: c.lighting ?? 'phong',
+    celBands: 0,
+  };
+  const raycaster = new Raycaster();
+  const stats = { compared: 0, maxError: 0, mismatches: 0, worst: null as unknown };
+  for (let y = 0; y < SIZE; y++) {
+    for (let x = 0; x < SIZE; x++) {
+      const i = y * SIZE + x;
+      if (mask[i] === 1 || neighbourhood(pixels, x, y) !== true) continue;
+      raycaster.setFromCamera(new Vector2(((x + 0.5) / SIZE) * 2 - 1, ((y + 0.5) / SIZE) * 2 - 1), camera);
+      const hit = raycaster.intersectObject(object as Object3D, false)[0];
+      if (hit?.face == null) continue;
+      // face.normal is the deformed triangle's, in the object's (instance's) space.
+      let world = object.matrixWorld;
+      const instance = hit.instanceId ?? (hit as { batchId?: number }).batchId;
+      if (instance !== undefined) world = object.matrixWorld.clone().multiply(INSTANCES[instance].matrix);
+      const normal = hit.face.normal.clone().applyMatrix3(new Matrix3().getNormalMatrix(world));
+      const expected = shade({ position: hit.point.toArray(), normal: normal.toArray(), eye }, m, lights);
+      stats.compared++;
+      const o = 4 * i;
+      let error = 0;
+      for (let k = 0; k < 3; k++)
+        error = Math.max(error, Math.abs(pixels[o + k] - Math.min(Math.max(expected[k], 0), 1) * 255));
+      if (error > stats.maxError) {
+        stats.maxError = error;
+        stats.worst = {
+          x,
+          y,
+          got: Array.from(pixels.subarray(o, o + 3)),
+          expected: expected.map((e) => e * 255),
+        };
+      }
+      if (error > 2) stats.mismatches++;
+    }
+  }
+  return stats;
+}
+
+/**
+ * One case on one backend: ShadingNodeMaterial against three's MeshPhongNodeMaterial on the same renderer
+ * (coverage), against WebGLRenderer + ShadingMaterial (colours away from triangle edges, coverage), and for flat
+ * shading against shade() per fragment with the deformed face normal.
+ */
+async function sceneCompare(backend: Backend, c: SceneCase) {
+  const { pixels, setup, dispose } = await renderGpu(backend, c);
+  const { pixels: phong } = await renderGpu(backend, c, 'phong');
+  const webgl = renderGl(c);
+  const mask = c.shading === 'flat' ? edgeMask(setup) : undefined;
+  const result = {
+    phongNode: diff(pixels, phong),
+    webgl: diff(pixels, webgl, mask),
+    shade: c.shading === 'flat' && mask !== undefined ? shadeFlat(setup, pixels, c, mask) : null,
+  };
+  dispose();
+  return result;
+}
+
+/** Clipping: coverage as MeshPhongNodeMaterial's, the clipped pixels exactly background, the rest unchanged. */
+async function clipCompare(backend: Backend, c: SceneCase) {
+  const clipped = await renderGpu(backend, c);
+  const whole = await renderGpu(backend, { ...c, clip: 'none' });
+  const { pixels: phong } = await renderGpu(backend, c, 'phong');
+  let removed = 0;
+  let removedNotBackground = 0;
+  let kept = 0;
+  let keptChanged = 0;
+  let added = 0;
+  for (let i = 0; i < SIZE * SIZE; i++) {
+    const o = 4 * i;
+    const a = clipped.pixels;
+    const w = whole.pixels;
+    if (covered(w, i) && !covered(a, i)) {
+      removed++;
+      if (a[o] !== 0 || a[o + 1] !== 0 || a[o + 2] !== 0 || a[o + 3] !== 0) removedNotBackground++;
+    } else if (covered(a, i) && covered(w, i)) {
+      kept++;
+      if ([0, 1, 2, 3].some((k) => a[o + k] !== w[o + k])) keptChanged++;
+    } else if (covered(a, i)) added++;
+  }
+  const mask = c.shading === 'flat' ? edgeMask(clipped.setup) : undefined;
+  return {
+    removed,
+    removedNotBackground,
+    kept,
+    keptChanged,
+    added,
+    phongNode: diff(clipped.pixels, phong),
+    webgl: c.clip === 'material-planes' ? null : diff(clipped.pixels, renderGl(c), mask),
+  };
+}
+
+/** Two pictures of the same case on WebGPURenderer (e.g. toneMapped true and false): how many pixels differ. */
+async function pairDiff(backend: Backend, a: SceneCase, b: SceneCase) {
+  const { pixels: pa } = await renderGpu(backend, a);
+  const { pixels: pb } = await renderGpu(backend, b);
+  return diff(pa, pb);
+}
+
+/** Same as pairDiff, for three's MeshPhongNodeMaterial (what three does with the same settings). */
+async function phongPairDiff(backend: Backend, a: SceneCase, b: SceneCase) {
+  const { pixels: pa } = await renderGpu(backend, a, 'phong');
+  const { pixels: pb } = await renderGpu(backend, b, 'phong');
+  return diff(pa, pb);
+}
+
+/** Materials of different variants drawn in one scene (one renderer, live together) against WebGL's. */
+async function mixedVariants(backend: Backend) {
+  const variants: SceneCase[] = [
+    { kind: 'mesh', shading: 'phong' },
+    { kind: 'mesh', shading: 'gouraud', lighting: 'blinn-phong' },
+    { kind: 'mesh', shading: 'phong', celBands: 4 },
+  ];
+  const place = (setup: Setup, k: number) => {
+    setup.object.position.set(-1.1 + 1.1 * k, 0, 0);
+    setup.object.scale.setScalar(0.5);
+    setup.scene.updateMatrixWorld();
+  };
+  const r = await gpuRenderer(backend);
+  const materials = variants.map(nodeMaterial);
+  const setups = variants.map((v, k) => build(materials[k], v, 'gpu'));
+  setups.forEach(place);
+  const scene = setups[0].scene;
+  for (const s of setups.slice(1)) scene.add(s.object);
+  const together = await drawGpu(r, scene, setups[0].camera, variants[0]);
+  // Each one alone with a fresh material.
+  const alone: Uint8Array[] = [];
+  for (let k = 0; k < variants.length; k++) {
+    const m = nodeMaterial(variants[k]);
+    const s = build(m, variants[k], 'gpu');
+    place(s, k);
+    alone.push(await drawGpu(r, s.scene, s.camera, variants[k]));
+    m.dispose();
+  }
+  for (const m of materials) m.dispose();
+  // Each alone covers its own third of the picture: combine them.
+  const combined = new Uint8Array(together.length);
+  for (let i = 0; i < SIZE * SIZE; i++)
+    for (const a of alone) if (covered(a, i)) combined.set(a.subarray(4 * i, 4 * i + 4), 4 * i);
+  return diff(together, combined);
+}
+
+/** A material's variant changed through its setters after it was drawn: the picture of a fresh material of it. */
+async function variantSwitch(backend: Backend, from: SceneCase, to: Partial<SceneCase>) {
+  const r = await gpuRenderer(backend);
+  const material = nodeMaterial(from);
+  const setup = build(material, from, 'gpu');
+  const before = await drawGpu(r, setup.scene, setup.camera, from);
+  if (to.shading !== undefined) material.shading = to.shading;
+  if (to.lighting !== undefined) material.lighting = to.lighting;
+  if (to.celBands !== undefined) material.celBands = to.celBands;
+  const after = await drawGpu(r, setup.scene, setup.camera, from);
+  material.dispose();
+  const { pixels: fresh } = await renderGpu(backend, { ...from, ...to });
+  return { changed: diff(after, before).differing, againstFresh: diff(after, fresh) };
+}
+
+interface LossReport {
+  before: number[];
+  afterRecovery: number[];
+  messages: string[];
+  deviceLostCalls: { api: string; message: string; reason: string | null }[];
+  isDeviceLost: boolean;
+  renderAfterLoss: string;
+  readAfterLoss: string;
+  identical: boolean;
+  covered: number;
+}
+
+/**
+ * Device loss. 'lost' (WebGPU): what a GPU process crash or driver reset gives, the device lost with a reason
+ * other than 'destroyed' (simulated: the app's device, whose `lost` promise the harness resolves with reason
+ * 'unknown', then really destroyed); 'destroyed' (WebGPU): `device.destroy()` alone; 'context' (WebGL2 backend):
+ * WEBGL_lose_context. Then what three reports and does, and a new WebGPURenderer drawing the same scene with
+ * the same material.
+ */
+async function deviceLoss(trigger: 'lost' | 'destroyed' | 'context'): Promise<LossReport> {
+  const messages: string[] = [];
+  const original = console.error;
+  console.error = (...args: unknown[]) => {
+    messages.push(args.map(String).join(' '));
+    original.apply(console, args as never);
+  };
+  let resolveLost: (info: unknown) => void = () => {};
+  let device: GPUDevice | null = null;
+  let first: WebGPURenderer;
+  if (trigger === 'context') first = new WebGPURenderer({ antialias: false, forceWebGL: true });
+  else {
+    const adapter = await navigator.gpu.requestAdapter();
+    if (adapter === null) throw new Error('no WebGPU adapter');
+    device = await adapter.requestDevice();
+    if (trigger === 'lost') {
+      const lost = new Promise((resolve) => {
+        resolveLost = resolve;
+      });
+      Object.defineProperty(device, 'lost', { value: lost });
+    }
+    first = new WebGPURenderer({ antialias: false, device } as never);
+  }
+  const calls: LossReport['deviceLostCalls'] = [];
+  const threeHandler = first.onDeviceLost.bind(first);
+  first.onDeviceLost = (info) => {
+    calls.push({ api: info.api, message: info.message, reason: info.reason });
+    threeHandler(info);
+  };
+  await first.init();
+  const c: SceneCase = { kind: 'skinned', shading: 'gouraud' };
+  const material = nodeMaterial(c);
+  const setup = build(material, c, 'gpu');
+  const report: Partial<LossReport> = { messages, deviceLostCalls: calls };
+  try {
+    const before = await drawGpu(first, setup.scene, setup.camera, c);
+    if (trigger === 'context') {
+      const context = (first.backend as unknown as { gl: WebGL2RenderingContext }).gl;
+      const lostEvent = new Promise((resolve) =>
+        context.canvas.addEventListener('webglcontextlost', resolve),
+      );
+      context.getExtension('WEBGL_lose_context')?.loseContext();
+      await lostEvent;
+    } else {
+      device?.destroy();
+      resolveLost({ reason: 'unknown', message: 'simulated GPU process loss' });
+    }
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    report.isDeviceLost = (first as unknown as { _isDeviceLost: boolean })._isDeviceLost;
+    const attempt = async (f: () => unknown) => {
+      try {
+        const value = await f();
+        return value === undefined ? 'returned' : `returned ${Object.prototype.toString.call(value)}`;
+      } catch (e) {
+        return `${(e as Error).name}: ${(e as Error).message}`;
+      }
+    };
+    report.renderAfterLoss = await attempt(() => first.render(setup.scene, setup.camera));
+    const target = new RenderTarget(SIZE, SIZE);
+    report.readAfterLoss = await attempt(async () => {
+      first.setRenderTarget(target);
+      first.render(setup.scene, setup.camera);
+      first.setRenderTarget(null);
+      // A lost device never answers a readback: give up after a while rather than hang the test.
+      return Promise.race([
+        first.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE),
+        new Promise((_, reject) => setTimeout(() => reject(new Error('no answer within 2 s')), 2000)),
+      ]);
+    });
+    // What the app does on loss: a new renderer (a new device or context), the same scene and material.
+    const second = new WebGPURenderer({ antialias: false, forceWebGL: trigger === 'context' });
+    await second.init();
+    const after = await drawGpu(second, setup.scene, setup.camera, c);
+    second.dispose();
+    report.before = Array.from(before);
+    report.afterRecovery = Array.from(after);
+    report.identical = before.every((v, i) => v === after[i]);
+    report.covered = before.filter((_, i) => i % 4 === 3 && before[i] !== 0).length;
+  } finally {
+    console.error = original;
+    material.dispose();
+  }
+  return report as LossReport;
+}
+
+interface Counts {
+  memory: Record<string, number>;
+  pipelines: number;
+  vertexPrograms: number;
+  fragmentPrograms: number;
+  nodeBuilds: number;
+}
+
+function counts(r: WebGPURenderer): Counts {
+  const memory = { ...(r.info.memory as unknown as Record<string, number>) };
+  const internals = r as unknown as {
+    _pipelines: {
+      caches: Map<unknown, unknown>;
+      programs: { vertex: Map<unknown, unknown>; fragment: Map<unknown, unknown> };
+    };
+    _nodes: { nodeBuilderCache: Map<unknown, unknown> };
+  };
+  return {
+    memory,
+    pipelines: internals._pipelines.caches.size,
+    vertexPrograms: internals._pipelines.programs.vertex.size,
+    fragmentPrograms: internals._pipelines.programs.fragment.size,
+    nodeBuilds: internals._nodes.nodeBuilderCache.size,
+  };
+}
+
+/**
+ * `cycles` create → render one frame → dispose cycles of a ShadingNodeMaterial (shading i mod 3, its own
+ * shininess), rendering every `every`-th; the renderer's counts before, at their peak and after, how many times
+ * the material's lighting was built (TSL), and the picture of the first and the last cycle of each shading.
+ */
+async function cycles(backend: Backend, n: number, every: number) {
+  const r = await gpuRenderer(backend);
+  const shadings: Shading[] = ['flat', 'gouraud', 'phong'];
+  const c = (i: number): SceneCase => ({ kind: 'mesh', shading: shadings[i % 3] });
+  // Materials that keep each variant's pipeline alive, as leaks.ts pins ShadingMaterial's programs.
+  const pins = shadings.map((shading) => nodeMaterial({ kind: 'mesh', shading }));
+  for (let k = 0; k < 3; k++) {
+    const s = build(pins[k], c(k), 'gpu');
+    await drawGpu(r, s.scene, s.camera, c(k));
+  }
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  // The target's textures exist from its first use on: before the baseline.
+  r.setRenderTarget(target);
+  r.clear();
+  r.setRenderTarget(null);
+  const builds = { count: 0 };
+  const proto = ShadingNodeMaterial.prototype as unknown as { setupLighting: (b: unknown) => unknown };
+  const setupLighting = proto.setupLighting;
+  proto.setupLighting = function (this: unknown, b: unknown) {
+    builds.count++;
+    return setupLighting.call(this, b);
+  };
+  const first: Uint8Array[] = [];
+  const last: Uint8Array[] = [];
+  const before = counts(r);
+  const peak = counts(r);
+  let frames = 0;
+  try {
+    for (let i = 0; i < n; i++) {
+      const material = nodeMaterial(c(i));
+      const capture = i < 3 || i >= n - 3;
+      // Each its own shininess, but the pictures compared.
+      if (!capture) material.shininess = 32 + (i % 7) * 1e-3;
+      const s = build(material, c(i), 'gpu');
+      if (i % every === 0 || capture) {
+        r.setClearColor(0x000000, 0);
+        r.setRenderTarget(target);
+        r.render(s.scene, s.camera);
+        r.setRenderTarget(null);
+        frames++;
+        if (capture) {
+          const data = new Uint8Array(
+            (await r.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array,
+          );
+          (i < 3 ? first : last).push(data);
+        }
+        const now = counts(r);
+        peak.pipelines = Math.max(peak.pipelines, now.pipelines);
+        peak.vertexPrograms = Math.max(peak.vertexPrograms, now.vertexPrograms);
+        peak.fragmentPrograms = Math.max(peak.fragmentPrograms, now.fragmentPrograms);
+        peak.nodeBuilds = Math.max(peak.nodeBuilds, now.nodeBuilds);
+        for (const k of Object.keys(now.memory)) peak.memory[k] = Math.max(peak.memory[k], now.memory[k]);
+      }
+      material.dispose();
+    }
+  } finally {
+    proto.setupLighting = setupLighting;
+  }
+  const after = counts(r);
+  target.dispose();
+  for (const p of pins) p.dispose();
+  const released = counts(r);
+  // Cycles n−3 … n−1 have shadings (n−3) mod 3 …: line them up with the first three.
+  const sameAsFirst = last.map((p, k) => {
+    const j = (n - 3 + k) % 3;
+    return p.every((v, i) => v === first[j][i]);
+  });
+  return {
+    before,
+    peak,
+    after,
+    released,
+    builds: builds.count,
+    frames,
+    sameAsFirst,
+    covered: first.map((p) => p.filter((_, i) => i % 4 === 3 && p[i] !== 0).length),
+  };
+}
+
+const api = {
+  sceneCompare,
+  clipCompare,
+  pairDiff,
+  phongPairDiff,
+  mixedVariants,
+  variantSwitch,
+  deviceLoss,
+  cycles,
+};
+export type WebGPUSceneHarness = typeof api;
+(window as unknown as { harness: typeof api }).harness = api;
+document.body.dataset.ready = '1';
