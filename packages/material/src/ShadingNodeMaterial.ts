@@ -268,6 +268,17 @@ export function towardsEye(p: N): N {
   return select(d.greaterThan(0), p.negate().div(max(d, 1e-30)), vec3(0, 0, 1));
 }
 
+/**
+ * `node` as a variable computed once, in the main flow of the stage being built, before the lighting: three
+ * compiles a select() to an if/else block, and a node first used inside a block is computed there, and again in
+ * every block that uses it (each light's specular branch).
+ */
+function onStack(node: N): N {
+  const variable = node.toVar();
+  variable.toStack();
+  return variable;
+}
+
 /** `n` normalised; `fallback` where `n` is zero. */
 export function unitOr(n: N, fallback: N): N {
   const d = n.length();
@@ -548,7 +559,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     }
     const localNormal: N = hasNormal ? normalLocal : positionLocal;
     if (this.#shading === 'phong') {
-      const v = towardsViewer(positionView);
+      const v = onStack(towardsViewer(positionView));
       // Unit vertex normals interpolated (zero where the matrix flattens the surface away); a back face
       // (DoubleSide, BackSide) is lit with its normal turned round, as three's normalView does.
       const n = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
@@ -580,7 +591,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
       );
     }
     // The derivatives' normal faces the viewer: the visible side's, whichever it is.
-    const v = towardsViewer(positionView);
+    const v = onStack(towardsViewer(positionView));
     const n = unitOr((positionView as N).dFdx().cross((positionView as N).dFdy()), v);
     return light({ n, v });
   }
