@@ -6,7 +6,7 @@ import { act, createElement } from 'react';
 import { createRoot } from 'react-dom/client';
 import { describe, expect, it } from 'vitest';
 import { getPath, type PanelRow, panelRows, setPath } from '../ui/panelFields';
-import { type FieldSpec, isField, LIGHT_FIELDS, STATE_FIELDS, type Table } from './fields';
+import { type FieldSpec, FOLDER_OF, isField, LIGHT_FIELDS, STATE_FIELDS, type Table } from './fields';
 import { readUrlState, stateUrl } from './persist';
 import { defaultState, parseState, serializeState } from './schema';
 
@@ -86,6 +86,18 @@ describe('the table of fields', () => {
     expect(kind(STATE_FIELDS.material.lighting)['values']).toBe(LIGHTINGS);
     expect(kind(STATE_FIELDS.sphere.base)['values']).toBe(SPHERE_BASES);
     expect(kind(STATE_FIELDS.material.celBands)['max']).toBeLessThanOrEqual(MAX_CEL_BANDS);
+  });
+
+  it('has the renderer switch: WebGL by default, WebGPU in the View folder', () => {
+    expect(STATE_FIELDS.renderer.kind).toEqual({ type: 'enum', values: ['webgl', 'webgpu'] });
+    expect(defaultState().renderer).toBe('webgl');
+    expect(FOLDER_OF.renderer).toBe('View');
+    const state = { ...defaultState(), renderer: 'webgpu' as const };
+    expect(parseState(serializeState(state))).toEqual({ ok: true, state });
+    expect(parseState('{"renderer":"vulkan"}')).toEqual({
+      ok: false,
+      error: 'state.renderer: "vulkan" is not one of webgl, webgpu',
+    });
   });
 
   it('lists in the panel exactly the values the parser takes', () => {

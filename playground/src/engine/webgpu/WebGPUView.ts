@@ -12,6 +12,7 @@ import { ShadingMaterial } from '@shadelab/material';
 import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import * as THREE from 'three';
 import { WebGPURenderer } from 'three/webgpu';
+import { drawnAsWebGPU, mirrorMaterial } from './scene';
 import type { FallbackReason, GeneratedShader, WebGPUStatus } from './status';
 
 /** What the view needs of the viewer: its canvas (the overlay's size and place), scene, camera and mesh. */
@@ -52,6 +53,7 @@ export class WebGPUView {
     private readonly events: WebGPUEvents,
   ) {
     window.addEventListener('unhandledrejection', this.onRejection);
+    host.canvas.addEventListener('webglcontextrestored', this.onHostRestored);
     void this.start();
   }
 
@@ -69,6 +71,20 @@ export class WebGPUView {
     await this.open(reason);
   }
 
+  /** Why the current backend was opened (for reopening it). */
+  private opened: { reason: FallbackReason | null; message: string | undefined } | null = null;
+
+  /**
+   * The viewer's WebGL context came back after a loss: the GPU process restarted (as it does after a lost WebGPU
+   * device here), and a WebGL2 backend opened before that may draw to a canvas the page no longer shows. Opened
+   * again on a fresh canvas.
+   */
+  private readonly onHostRestored = () => {
+    const opened = this.opened;
+    if (this.disposed || !this.ready || opened?.reason == null) return;
+    void this.fallBack(opened.reason, opened.message);
+  };
+
   private async open(reason: FallbackReason | null, message?: string, attempt = 0): Promise<void> {
     if (this.disposed) return;
     const canvas = document.createElement('canvas');
@@ -81,11 +97,13 @@ export class WebGPUView {
     this.renderer = renderer;
     renderer.setPixelRatio(1);
     // A lost WebGPU device: the WebGL2 backend takes over on a new canvas. (A lost WebGL2 context is reported.)
+    // A lost WebGL2 context (the GPU process restarting): the same backend again on a fresh canvas.
     renderer.onDeviceLost = (info: { api: string; message: string }) => {
       if (info.api === 'WebGPU') this.lost(renderer, info.message);
       else if (!this.disposed && this.renderer === renderer)
-        this.report({ state: 'failed', message: `the ${info.api} context was lost: ${info.message}` });
+        void this.fallBack(reason ?? 'no-adapter', message);
     };
+    this.opened = { reason, message };
     try {
       await renderer.init();
     } catch (error) {
@@ -115,11 +133,15 @@ export class WebGPUView {
       reason: webgpu ? null : (reason ?? 'no-adapter'),
       ...(message === undefined ? {} : { message }),
     });
-    this.shaderKey = '';
-    this.host.requestRender();
+    // The shader is read before the first frame: a device lost by presenting that frame has shown its WGSL.
+    const source = this.host.mesh.material;
+    if (source instanceof ShadingMaterial) mirrorMaterial(source, this.material);
+    this.shaderKey = this.variantKey();
+    await this.readShader(renderer);
+    if (!this.disposed && this.renderer === renderer) this.host.requestRender();
   }
 
-  private async fallBack(reason: FallbackReason, message: string): Promise<void> {
+  private async fallBack(reason: FallbackReason, message: string | undefined): Promise<void> {
     this.close();
     await this.open(reason, message);
   }
@@ -155,14 +177,13 @@ export class WebGPUView {
     const h = Math.max(1, host.canvas.clientHeight || host.canvas.height);
     if (canvas.width !== w || canvas.height !== h) renderer.setSize(w, h, false);
     const source = host.mesh.material;
-    if (source instanceof ShadingMaterial) this.mirror(source);
-    this.withSceneFor(() => renderer.render(host.scene, host.camera));
+    if (source instanceof ShadingMaterial) mirrorMaterial(source, this.material);
+    drawnAsWebGPU(host, this.material, () => renderer.render(host.scene, host.camera));
     // The WebGL canvas stays below for the input; it shows again when WebGPU mode is left.
     host.canvas.style.opacity = '0';
     this.frames += 1;
     canvas.dataset['frames'] = String(this.frames);
-    const m = this.material;
-    const key = `${m.shading}|${m.lighting}|${m.celBands}|${m.phongLights.length}|${host.mesh.geometry.uuid}`;
+    const key = this.variantKey();
     if (key !== this.shaderKey) {
       this.shaderKey = key;
       void this.readShader(renderer);
@@ -170,62 +191,10 @@ export class WebGPUView {
     return true;
   }
 
-  /** The panel's options, as the viewer set them on the WebGL material (setters recompile only on a change). */
-  private mirror(source: ShadingMaterial) {
+  /** What the generated shader depends on: the compiled variant and the geometry. */
+  private variantKey(): string {
     const m = this.material;
-    m.shading = source.shading;
-    m.lighting = source.lighting;
-    m.celBands = source.celBands;
-    m.ka = source.ka;
-    m.kd = source.kd;
-    m.ks = source.ks;
-    m.shininess = source.shininess;
-    const lights = source.phongLights;
-    if (lights.length !== m.phongLights.length || lights.some((l, i) => l !== m.phongLights[i])) {
-      m.phongLights = lights;
-    }
-  }
-
-  /**
-   * Runs `draw` with the scene as WebGPU mode draws it: the mesh visible with the node material, what WebGL
-   * materials draw beside it hidden (the mesh's outline, its siblings: the impostor, a picked scene), no fog,
-   * a black background; the camera's projection conventions put back after (WebGPU's depth range differs).
-   */
-  private withSceneFor(draw: () => void) {
-    const { scene, camera, mesh } = this.host;
-    const hidden = [...(mesh.parent?.children ?? []), ...mesh.children].filter(
-      (o) => o !== mesh && o.visible,
-    );
-    const saved = {
-      material: mesh.material,
-      visible: mesh.visible,
-      fog: scene.fog,
-      background: scene.background,
-      coordinateSystem: camera.coordinateSystem,
-      reversedDepth: (camera as { _reversedDepth?: boolean })._reversedDepth,
-    };
-    for (const o of hidden) o.visible = false;
-    mesh.material = this.material;
-    mesh.visible = true;
-    scene.fog = null;
-    scene.background = BLACK;
-    // The standard depth buffer: a projection the viewer's WebGLRenderer reversed is made standard again.
-    if (saved.reversedDepth) {
-      (camera as { _reversedDepth?: boolean })._reversedDepth = false;
-      (camera as THREE.PerspectiveCamera).updateProjectionMatrix?.();
-    }
-    try {
-      draw();
-    } finally {
-      for (const o of hidden) o.visible = true;
-      mesh.material = saved.material;
-      mesh.visible = saved.visible;
-      scene.fog = saved.fog;
-      scene.background = saved.background;
-      camera.coordinateSystem = saved.coordinateSystem;
-      (camera as { _reversedDepth?: boolean })._reversedDepth = saved.reversedDepth;
-      (camera as THREE.PerspectiveCamera).updateProjectionMatrix?.();
-    }
+    return `${m.shading}|${m.lighting}|${m.celBands}|${m.phongLights.length}|${this.host.mesh.geometry.uuid}`;
   }
 
   /** The node material's generated code as the running backend compiled it (a scene of the mesh alone). */
@@ -239,19 +208,19 @@ export class WebGPUView {
     scene.add(probe);
     const camera = this.host.camera;
     const saved = camera.coordinateSystem;
+    const language = (renderer.backend as Backend).isWebGPUBackend === true ? 'WGSL' : 'GLSL';
     try {
       const { vertexShader, fragmentShader } = await renderer.debug.getShaderAsync(scene, camera, probe);
       if (this.renderer !== renderer || this.disposed) return;
-      const webgpu = (renderer.backend as Backend).isWebGPUBackend === true;
       this.events.onShader?.({
-        language: webgpu ? 'WGSL' : 'GLSL',
+        language,
         vertexShader: vertexShader ?? '',
         fragmentShader: fragmentShader ?? '',
       });
     } catch (error) {
       if (this.renderer === renderer && !this.disposed) {
         const text = `// The generated shader could not be read: ${error instanceof Error ? error.message : error}`;
-        this.events.onShader?.({ language: 'GLSL', vertexShader: text, fragmentShader: text });
+        this.events.onShader?.({ language, vertexShader: text, fragmentShader: text });
       }
     } finally {
       camera.coordinateSystem = saved;
@@ -278,12 +247,12 @@ export class WebGPUView {
     this.close();
     this.disposed = true;
     window.removeEventListener('unhandledrejection', this.onRejection);
+    this.host.canvas.removeEventListener('webglcontextrestored', this.onHostRestored);
     this.material.dispose();
     this.events.onShader?.(null);
   }
 }
 
-const BLACK = /* @__PURE__ */ new THREE.Color(0x000000);
 /** Tries at a WebGL2 context after a lost WebGPU device, and the pause between two, ms. */
 const RETRIES = 20;
 const RETRY_MS = 250;
