@@ -18,11 +18,13 @@ import {
   Object3D,
   OrthographicCamera,
   PerspectiveCamera,
+  Plane,
   Scene,
+  Vector3,
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { ClippingGroup, RenderTarget, WebGPURenderer } from 'three/webgpu';
 
 export type Backend = 'webgpu' | 'webgl2';
 export interface Variant {
@@ -33,7 +35,8 @@ export interface Variant {
  * 'ellipsoid' (the lecture's 2, 1, 2 scale, rotated), 'sphere' (a unit sphere off the axis), 'instanced' (both as
  * two instances of one InstancedMesh), 'mirrored' (the ellipsoid with a negative x scale: det < 0),
  * 'orthographic' (the ellipsoid and the sphere through an orthographic camera), 'inside' (a perspective eye
- * inside the ellipsoid: nothing drawn), 'fog' (the ellipsoid in three's range Fog), 'box' (a unit sphere with a box through it: depth against a mesh),
+ * inside the ellipsoid: nothing drawn), 'fog' (the ellipsoid in three's range Fog), 'clipped' (the ellipsoid
+ * cut by a clipping plane), 'clip-intersection' (by two planes with clipIntersection), 'box' (a unit sphere with a box through it: depth against a mesh),
  * 'box-alone' and 'sphere-alone' (each of the two without the other).
  */
 export type Scenario =
@@ -44,6 +47,8 @@ export type Scenario =
   | 'orthographic'
   | 'inside'
   | 'fog'
+  | 'clipped'
+  | 'clip-intersection'
   | 'box'
   | 'box-alone'
   | 'sphere-alone';
@@ -90,8 +95,38 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     mesh.applyMatrix4(matrix);
     s.add(mesh);
   };
-  if (scenario === 'ellipsoid' || scenario === 'orthographic' || scenario === 'inside' || scenario === 'fog')
+  if (
+    scenario === 'ellipsoid' ||
+    scenario === 'orthographic' ||
+    scenario === 'inside' ||
+    scenario === 'fog' ||
+    scenario === 'clipped' ||
+    scenario === 'clip-intersection'
+  )
     add(ellipsoid);
+  // The same planes (world space): WebGLRenderer reads a material's clippingPlanes, WebGPURenderer a ClippingGroup's.
+  const planes =
+    scenario === 'clipped'
+      ? [new Plane(new Vector3(1, 0.4, 0.3).normalize(), 0.3)]
+      : scenario === 'clip-intersection'
+        ? [
+            new Plane(new Vector3(1, 0.2, 0).normalize(), 0.2),
+            new Plane(new Vector3(-0.3, 1, 0.2).normalize(), 0),
+          ]
+        : [];
+  if (planes.length > 0) {
+    const intersection = scenario === 'clip-intersection';
+    if (gpu) {
+      const group = new ClippingGroup();
+      group.clippingPlanes = planes;
+      group.clipIntersection = intersection;
+      group.add(...s.children.filter((o) => o instanceof Mesh));
+      s.add(group);
+    } else {
+      impostorMaterial.clippingPlanes = planes;
+      impostorMaterial.clipIntersection = intersection;
+    }
+  }
   if (scenario === 'fog') s.fog = new Fog(new Color(0.2, 0.4, 0.6), 4.5, 7.5);
   if (scenario === 'sphere' || scenario === 'orthographic') add(sphere);
   if (scenario === 'mirrored') add(ellipsoid.clone().multiply(new Matrix4().makeScale(-1, 1, 1)));
@@ -179,6 +214,7 @@ async function renderGpu(
 let gl: WebGLRenderer | null = null;
 function renderGl(v: Variant, scenario: Scenario): Uint8Array {
   gl ??= new WebGLRenderer({ antialias: false });
+  gl.localClippingEnabled = true;
   const setup = scene(false, v, scenario);
   const target = new WebGLRenderTarget(SIZE, SIZE);
   gl.setRenderTarget(target);
@@ -233,8 +269,9 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
   const b = await renderGpu(backend, v, scenario);
   // Cel bands and where two surfaces meet (the box and the sphere, the ellipsoid and the sphere) are edges within
   // the picture.
-  const oneSurface =
-    scenario === 'ellipsoid' || scenario === 'sphere' || scenario === 'mirrored' || scenario === 'fog';
+  const oneSurface = ['ellipsoid', 'sphere', 'mirrored', 'fog', 'clipped', 'clip-intersection'].includes(
+    scenario,
+  );
   const edges = edgeMask(a, v.celBands > 0 || !oneSurface ? 24 : 255);
   let covered = 0;
   let coverageMismatch = 0;

@@ -21,8 +21,10 @@ import {
   modelViewMatrix,
   output,
   positionGeometry,
+  renderGroup,
   select,
   sqrt,
+  uniformArray,
   varying,
   vec2,
   vec3,
@@ -103,8 +105,8 @@ const maxAbs = (v: N): N => {
  * matrix is the mesh's `matrixWorld` × the instance's matrix (a non-uniform or sheared instance matrix makes the
  * exact ellipsoid, normals included). `instanceColor` is not applied (as on `ShadingNodeMaterial`).
  *
- * three's fog is applied at the hit's depth (range and density fogs; three's height fog reads the world
- * position, the quad's). Not yet: clipping planes at the hit (three's clipping nodes see the quad's position).
+ * three's fog (range and density fogs) and clipping planes are applied at the hit (three's height fog reads the
+ * world position, which is the quad's).
  *
  * @example
  * const material = new SphereImpostorNodeMaterial({ lighting: 'blinn-phong', lights: [light] });
@@ -262,6 +264,37 @@ export class SphereImpostorNodeMaterial extends ShadingNodeMaterial {
     const { view, normal } = this.#hit(builder);
     const v = builder.camera?.isOrthographicCamera === true ? vec3(0, 0, 1) : towardsEye(view);
     return this.lightSurface(builder, { n: unitOr(normal, v), v }, view);
+  }
+
+  /** No clip distances in the vertex stage (they would clip the quad): the hit is clipped in `setupClipping`. */
+  override setupHardwareClipping(builder: N): void {
+    builder.hardwareClipping = false;
+  }
+
+  /**
+   * The clipping planes (the renderer's and the material's, `clipIntersection` included) at the hit, as three's
+   * clipping node tests a mesh's fragment (three's would see the quad's position): a hit on the outer side of a
+   * plane (in view space, n·p > d) of a union plane, or of every intersection plane, is discarded.
+   */
+  override setupClipping(builder: N): N {
+    const context = builder.clippingContext;
+    if (context === null || context === undefined) return null;
+    const { unionPlanes, intersectionPlanes } = context as {
+      unionPlanes: unknown[];
+      intersectionPlanes: unknown[];
+    };
+    if (unionPlanes.length === 0 && intersectionPlanes.length === 0) return null;
+    const { view } = this.#hit(builder);
+    const outside = (planes: unknown[]): N[] => {
+      const array = (uniformArray(planes as never) as N).setGroup(renderGroup);
+      return planes.map((_, i) => {
+        const plane = array.element(i);
+        return view.dot(plane.xyz).greaterThan(plane.w);
+      });
+    };
+    if (unionPlanes.length > 0) Discard(outside(unionPlanes).reduce((a, b) => a.or(b)));
+    if (intersectionPlanes.length > 0) Discard(outside(intersectionPlanes).reduce((a, b) => a.and(b)));
+    return null;
   }
 
   /**
