@@ -26,8 +26,8 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { normalView, positionLocal, positionView, transformNormalToView } from 'three/tsl';
-import { MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { normalView, positionLocal, positionView, property, transformNormalToView } from 'three/tsl';
+import { ConditionalNode, MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
 
 /** Where a spec is drawn: WebGPURenderer's WebGPU or WebGL2 backend, or three's WebGLRenderer. */
 export type Backend = 'webgpu' | 'webgl2' | 'webgl';
@@ -185,12 +185,46 @@ async function info() {
  *   computed once in the main flow (on the stack) before the lighting, instead of again inside each light's
  *   specular branch;
  * - 'plain-normalize': n and v as plain `normalize()`, no zero-length fallbacks (a bound on what the fallbacks
- *   cost; not a proposal: the fallbacks are the material's contract).
+ *   cost; not a proposal: the fallbacks are the material's contract);
+ * - 'branch-free': every scalar or vector `select()` of the material compiled to one assignment of a ternary
+ *   (WGSL `select`, GLSL `?:`) in the flow it is in, both operands computed, instead of an if/else block
+ *   (three's ConditionalNode patched for this material only; three's own `uniformFlow` context does the same
+ *   but drops the parentheses and leaves reused selects unassigned in three 0.187);
+ * - 'branch-free-mix': the same with `mix(b, a, float(cond))`, what plain TSL can write (exact when both
+ *   operands are finite: weight 0 or 1).
  */
-export type Experiment = 'hoist-v' | 'plain-normalize';
+export type Experiment = 'hoist-v' | 'plain-normalize' | 'branch-free' | 'branch-free-mix';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes and three's node builder are dynamically typed.
 type N = any;
+
+const conditional = ConditionalNode.prototype as N;
+const generateConditional = conditional.generate as (this: N, builder: N, output: string) => string;
+conditional.generate = function (this: N, builder: N, output: string): string {
+  const mode = builder.material?.userData?.benchBranchFree as 'ternary' | 'mix' | undefined;
+  if (mode === undefined || output === 'void') {
+    return generateConditional.call(this, builder, output);
+  }
+  const { condNode, ifNode, elseNode } = builder.getNodeProperties(this);
+  if (elseNode === null || builder.getTypeLength(condNode.getNodeType(builder)) > 1) {
+    return generateConditional.call(this, builder, output);
+  }
+  const type = this.getNodeType(builder);
+  const data = builder.getDataFromNode(this);
+  if (data.propertyName !== undefined) return builder.format(data.propertyName, type, output);
+  const cond = condNode.build(builder, 'bool');
+  const a = ifNode.build(builder, type);
+  const b = elseNode.build(builder, type);
+  const name = (property(type) as N).build(builder);
+  data.propertyName = name;
+  const float = builder.getType('float');
+  const picked =
+    mode === 'mix'
+      ? `mix( ${b}, ${a}, ${builder.getType(type) === float ? '' : `${builder.getType(type)}`}( ${float}( ${cond} ) ) )`
+      : builder.getTernary(`( ${cond} )`, `( ${a} )`, `( ${b} )`);
+  builder.addLineFlowCode(`${name} = ${picked}`, this);
+  return builder.format(name, type, output);
+};
 
 function experimentalMaterial(name: Experiment, options: object): Material {
   class Experimental extends ShadingNodeMaterial {
@@ -218,7 +252,10 @@ function experimentalMaterial(name: Experiment, options: object): Material {
       return base.call(this, builder, { n: surface.n, v }, at);
     };
   }
-  return new Experimental(options as never) as unknown as Material;
+  const material = new Experimental(options as never) as unknown as Material;
+  if (name === 'branch-free') material.userData.benchBranchFree = 'ternary';
+  if (name === 'branch-free-mix') material.userData.benchBranchFree = 'mix';
+  return material;
 }
 
 // ── Scenes ──────────────────────────────────────────────────────────────────────────────────────────────────
