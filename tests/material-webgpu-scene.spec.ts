@@ -63,7 +63,7 @@ const SHADINGS: Pick<SceneCase, 'shading' | 'lighting'>[] = [
 
 for (const backend of BACKENDS) {
   for (const kind of KINDS) {
-    test(`${backend}: ${kind === 'skinned' ? 'SkinnedMesh (a bone rotated and moved)' : kind === 'morphed' ? 'morph targets (positions and normals at influence 0.5)' : kind === 'batched' ? 'BatchedMesh (two instances, different matrices)' : 'InstancedMesh (two instances, different matrices)'}, phong, gouraud and flat: drawn where MeshPhongNodeMaterial draws, colours = WebGLRenderer + ShadingMaterial within 2/255; flat = shade() with the deformed face normal`, async ({
+    test(`${backend}: ${kind === 'skinned' ? 'SkinnedMesh (a bone rotated and moved)' : kind === 'morphed' ? 'morph targets (positions and normals at influence 0.5)' : kind === 'batched' ? 'BatchedMesh (two instances, different matrices and colours)' : 'InstancedMesh (two instances, different matrices and colours)'}, phong, gouraud and flat: drawn where MeshPhongNodeMaterial draws, colours = WebGLRenderer + ShadingMaterial within 2/255; flat = shade() with the deformed face normal`, async ({
       page,
     }) => {
       test.setTimeout(90_000);
@@ -81,6 +81,14 @@ for (const backend of BACKENDS) {
           expect(sh?.compared, label).toBeGreaterThan(300);
           expect(sh?.mismatches, `${label} ${JSON.stringify(sh)}`).toBe(0);
           expect(sh?.maxError, label).toBeLessThanOrEqual(2);
+        }
+        if (kind === 'batched' || kind === 'instanced') {
+          // Per-instance colours multiply ka and kd, as on ShadingMaterial.
+          const tinted = { ...c, instanceColor: true };
+          const t = await run<[string, SceneCase], SceneStats>(page, 'sceneCompare', backend, tinted);
+          const tlabel = `${backend} ${JSON.stringify(tinted)}`;
+          expect(t.phongNode.coverageMismatches, tlabel).toBe(0);
+          expectSame(t.webgl, tlabel, s.shading === 'flat' ? 300 : 1500);
         }
       }
       expect(problems).toEqual([]);

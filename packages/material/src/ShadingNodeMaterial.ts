@@ -2,9 +2,11 @@
 // model of the lecture's equation, PhongLights as light nodes beside three's own lights.
 import {
   attribute,
+  batchColor,
   cameraViewMatrix,
   float,
   frontFacing,
+  instanceColor,
   ivec2,
   lightingContext,
   lightViewPosition,
@@ -533,8 +535,20 @@ export class ShadingNodeMaterial extends NodeMaterial {
    * @param positionView - The lit point in view space, when it is not three's `positionView`.
    */
   protected lightSurface(builder: N, surface: Surface, positionView?: N): N {
+    // An InstancedMesh's instanceColor and a BatchedMesh's colours multiply ka and kd (not ks), as on
+    // ShadingMaterial; three puts them in diffuseColor, which this lighting model does not read.
+    const object = builder.object ?? {};
+    const tint: N =
+      object.instanceColor != null
+        ? instanceColor
+        : object.isBatchedMesh === true && object._colorsTexture != null
+          ? (batchColor as N).rgb
+          : null;
+    const { ka, kd, ks } = this.#uniforms;
     const model = new LectureLightingModel(this, surface, {
-      ...this.#uniforms,
+      ka: tint === null ? ka : (ka as N).mul(tint),
+      kd: tint === null ? kd : (kd as N).mul(tint),
+      ks,
       shininess: this.#shininessNode,
     });
     // The scene's PhongLights come with three's lights (their registered light node); the listed ones, which
