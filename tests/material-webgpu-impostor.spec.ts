@@ -18,6 +18,7 @@ type Scenario =
   | 'fog'
   | 'clipped'
   | 'clip-intersection'
+  | 'extreme'
   | 'box';
 interface Variant {
   lighting: 'phong' | 'blinn-phong';
@@ -56,6 +57,16 @@ interface Harness {
     disagree: number;
     disagreeOffEdge: number;
   }>;
+  scaleInvariance(
+    b: Backend,
+    v: Variant,
+    scenario: 'huge' | 'tiny',
+  ): Promise<{
+    covered: number;
+    coverageMismatch: number;
+    coverageMismatchOffEdge: number;
+    maxDelta: number;
+  }>;
   errors(): {
     rows: { options: string; webgl: string; node: string }[];
     setters: string[];
@@ -81,7 +92,7 @@ const VARIANTS: Variant[] = (['phong', 'blinn-phong'] as const).flatMap((lightin
 );
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
-  test(`${backend} backend: the impostor (an ellipsoid 2, 1, 2 and a unit sphere, one mesh each and two instances of an InstancedMesh; mirrored; orthographic; in three's Fog; cut by clipping planes; the eye inside) = WebGLRenderer + SphereImpostorMaterial: same coverage but for silhouette pixels, colours within 2/255 away from edges`, async ({
+  test(`${backend} backend: the impostor (an ellipsoid 2, 1, 2 and a unit sphere, one mesh each and two instances of an InstancedMesh; mirrored; orthographic; in three's Fog; cut by clipping planes; spheres scaled by 1e±20 that draw nothing; the eye inside) = WebGLRenderer + SphereImpostorMaterial; the scene scaled by 1e15 and 1e-18 = the scene unscaled: same coverage but for silhouette pixels, colours within 2/255 away from edges`, async ({
     page,
   }) => {
     test.setTimeout(120_000);
@@ -101,6 +112,7 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       'fog',
       'clipped',
       'clip-intersection',
+      'extreme',
     ] as const;
     for (const scenario of scenarios) {
       // Fog softens the cel edges that the comparison leaves out: cel 0 there.
@@ -119,6 +131,19 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
         expect(stats.compared, label).toBeGreaterThan(stats.covered * (variant.celBands > 0 ? 0.5 : 0.75));
         expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
       }
+    }
+    // The whole scene scaled by 1e15 and by 1e-18 (the cofactors of the model-view matrix would overflow or
+    // underflow in 32-bit floats unscaled): the picture of the unscaled scene.
+    for (const scenario of ['huge', 'tiny'] as const) {
+      const stats = await page.evaluate(
+        ([b, v, sc]) => (window as never as { harness: Harness }).harness.scaleInvariance(b, v, sc),
+        [backend, VARIANTS[0], scenario] as const,
+      );
+      const label = `${backend} ${scenario} ${JSON.stringify(stats)}`;
+      expect(stats.covered, label).toBeGreaterThan(2000);
+      expect(stats.coverageMismatchOffEdge, label).toBe(0);
+      expect(stats.coverageMismatch, label).toBeLessThanOrEqual(stats.covered * 0.01);
+      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
     }
     // A perspective eye inside the ellipsoid: its front surface is behind the eye, nothing is drawn by either.
     const inside = await page.evaluate(

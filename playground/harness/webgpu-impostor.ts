@@ -36,7 +36,10 @@ export interface Variant {
  * two instances of one InstancedMesh), 'mirrored' (the ellipsoid with a negative x scale: det < 0),
  * 'orthographic' (the ellipsoid and the sphere through an orthographic camera), 'inside' (a perspective eye
  * inside the ellipsoid: nothing drawn), 'fog' (the ellipsoid in three's range Fog), 'clipped' (the ellipsoid
- * cut by a clipping plane), 'clip-intersection' (by two planes with clipIntersection), 'box' (a unit sphere with a box through it: depth against a mesh),
+ * cut by a clipping plane), 'clip-intersection' (by two planes with clipIntersection), 'huge' and 'tiny' (the
+ * ellipsoid and the sphere, the light and the camera scaled by 1e15 and 1e-18: the cofactors of 32-bit matrices
+ * would overflow or underflow unscaled; 'unit' is that scene unscaled, its light without attenuation too), 'extreme' (the ellipsoid beside a sphere scaled by 1e-20, one by 1e20
+ * beyond the far plane and one by 1e20 around the eye: neither of these three draws anything), 'box' (a unit sphere with a box through it: depth against a mesh),
  * 'box-alone' and 'sphere-alone' (each of the two without the other).
  */
 export type Scenario =
@@ -49,6 +52,10 @@ export type Scenario =
   | 'fog'
   | 'clipped'
   | 'clip-intersection'
+  | 'unit'
+  | 'huge'
+  | 'tiny'
+  | 'extreme'
   | 'box'
   | 'box-alone'
   | 'sphere-alone';
@@ -76,9 +83,14 @@ function transforms(): { ellipsoid: Matrix4; sphere: Matrix4 } {
 
 /** The scene; `gpu` picks the node materials (WebGPURenderer) or the GLSL ones (WebGLRenderer). */
 function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 'impostor') {
+  // The whole scene scaled by k (the light without attenuation: its distance is scaled too). At 1e18 the
+  // lighting's squared distances (about 1e37) come near float32's largest and the highlight drifts by up to
+  // 22/255: 1e15 keeps the lighting exact while the model-view matrix's cofactors (1e30, its determinant 1e45)
+  // would still overflow unscaled.
+  const k = scenario === 'huge' ? 1e15 : scenario === 'tiny' ? 1e-18 : 1;
   const light = new PhongLight({ ambient: 0.2, diffuse: [1, 0.95, 0.85], specular: 0.9 });
-  light.position.set(-2, 3, 4);
-  light.attenuation = { a: 0.6, b: 0.1, c: 0.02 };
+  light.position.set(-2, 3, 4).multiplyScalar(k);
+  if (scenario !== 'unit' && k === 1) light.attenuation = { a: 0.6, b: 0.1, c: 0.02 };
   const options = { ...v, lights: [light], shininess: 24 };
   const impostorMaterial: Material = gpu
     ? new SphereImpostorNodeMaterial(options)
@@ -92,7 +104,7 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     if (kind === 'mesh') {
       mesh = new Mesh(meshSphere, new ShadingNodeMaterial({ ...options, shading: 'phong' }));
     } else mesh = new Mesh(quad, impostorMaterial);
-    mesh.applyMatrix4(matrix);
+    mesh.applyMatrix4(new Matrix4().makeScale(k, k, k).multiply(matrix));
     s.add(mesh);
   };
   if (
@@ -101,9 +113,18 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     scenario === 'inside' ||
     scenario === 'fog' ||
     scenario === 'clipped' ||
-    scenario === 'clip-intersection'
+    scenario === 'clip-intersection' ||
+    scenario === 'unit' ||
+    scenario === 'huge' ||
+    scenario === 'tiny' ||
+    scenario === 'extreme'
   )
     add(ellipsoid);
+  if (scenario === 'extreme') {
+    add(new Matrix4().makeTranslation(-1, 1.8, 0).scale(new Vector3(1e-20, 1e-20, 1e-20)));
+    add(new Matrix4().makeTranslation(0, 0, -3e20).scale(new Vector3(1e20, 1e20, 1e20)));
+    add(new Matrix4().makeScale(1e20, 1e20, 1e20));
+  }
   // The same planes (world space): WebGLRenderer reads a material's clippingPlanes, WebGPURenderer a ClippingGroup's.
   const planes =
     scenario === 'clipped'
@@ -128,7 +149,7 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     }
   }
   if (scenario === 'fog') s.fog = new Fog(new Color(0.2, 0.4, 0.6), 4.5, 7.5);
-  if (scenario === 'sphere' || scenario === 'orthographic') add(sphere);
+  if (['sphere', 'orthographic', 'unit', 'huge', 'tiny'].includes(scenario)) add(sphere);
   if (scenario === 'mirrored') add(ellipsoid.clone().multiply(new Matrix4().makeScale(-1, 1, 1)));
   if (scenario === 'instanced') {
     const instanced = new InstancedMesh(quad, impostorMaterial, 2);
@@ -148,8 +169,8 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
   const camera =
     scenario === 'orthographic'
       ? new OrthographicCamera(-3, 3, 3, -3, 0.5, 20)
-      : new PerspectiveCamera(50, 1, 0.5, 20);
-  camera.position.set(0.5, 0.8, 6);
+      : new PerspectiveCamera(50, 1, 0.5 * k, 20 * k);
+  camera.position.set(0.5, 0.8, 6).multiplyScalar(k);
   camera.lookAt(0, 0, 0);
   if (scenario === 'inside') camera.position.set(-0.2, 0.5, -0.2);
   s.updateMatrixWorld();
@@ -307,6 +328,42 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
 }
 
 /**
+ * The 'huge' or 'tiny' scene (everything scaled by 1e15 or 1e-18) against the 'unit' scene on the same backend: the same
+ * picture (the same directions, no attenuation). `SphereImpostorMaterial` is no reference there: on
+ * WebGLRenderer it draws nothing of the 'tiny' scene and a few wrong pixels of the 'huge' one.
+ */
+async function scaleInvariance(backend: Backend, v: Variant, scenario: 'huge' | 'tiny') {
+  const a = await renderGpu(backend, v, 'unit');
+  const b = await renderGpu(backend, v, scenario);
+  const edges = edgeMask(a, 24);
+  let covered = 0;
+  let coverageMismatch = 0;
+  let coverageMismatchOffEdge = 0;
+  let maxDelta = 0;
+  let worst: unknown = null;
+  for (let k = 0; k < SIZE * SIZE; k++) {
+    const i = 4 * k;
+    const ca = !isBackground(a, i);
+    const cb = !isBackground(b, i);
+    if (ca) covered++;
+    if (ca !== cb) {
+      coverageMismatch++;
+      if (!edges[k]) coverageMismatchOffEdge++;
+    }
+    if (ca && cb && !edges[k] && delta(a, b, i) > maxDelta) {
+      maxDelta = delta(a, b, i);
+      worst = {
+        x: k % SIZE,
+        y: Math.floor(k / SIZE),
+        unit: [...a.subarray(i, i + 3)],
+        scaled: [...b.subarray(i, i + 3)],
+      };
+    }
+  }
+  return { covered, coverageMismatch, coverageMismatchOffEdge, maxDelta, worst };
+}
+
+/**
  * Depth (in the renderer's depth mode `mode`): in the 'box' scene on WebGPURenderer, the pixels of the box's colour (green dominant) and of the
  * sphere's (red dominant) with the sphere drawn as an impostor and as a level-6 mesh sphere, and in the scenes
  * of each alone: the box is partly hidden by the sphere and the sphere partly by the box, as with the mesh.
@@ -402,6 +459,6 @@ function errors() {
   };
 }
 
-const api = { backendInfo, crossRenderer, errors, occlusion };
+const api = { backendInfo, crossRenderer, errors, occlusion, scaleInvariance };
 (window as unknown as { harness: typeof api }).harness = api;
 document.body.dataset.ready = '1';

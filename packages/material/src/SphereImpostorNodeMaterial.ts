@@ -97,7 +97,8 @@ const maxAbs = (v: N): N => {
  * The quad covers the projected ellipsoid's exact screen bounds, computed in the vertex stage from T = P·V·M (the
  * planes x = a·w tangent to it in clip space, as `projectedBounds`), widened by one pixel; the whole viewport
  * when the eye plane touches the ellipsoid. Only the front surface between the near and far planes is drawn
- * (no caps); a singular model matrix (a zero scale) draws nothing. Depth is written in the renderer's depth mode
+ * (no caps); a singular model matrix (a zero scale) draws nothing. The columns of A are scaled to a largest
+ * component of 1 before its cofactors are taken, so an object scaled by 1e±20 stays in 32-bit range. Depth is written in the renderer's depth mode
  * (WebGPU's [0, 1] or WebGL2's [−1, 1] clip space, reversed or logarithmic depth), so meshes and impostors
  * occlude each other exactly. Writing depth disables early depth tests: overdraw costs a full fragment each.
  *
@@ -228,8 +229,7 @@ export class SphereImpostorNodeMaterial extends ShadingNodeMaterial {
     const [y0, y1] = interval(row('y'));
     const pixel = vec2(2).div(viewportSize as N);
     const tight = clamp(vec4(x0, y0, x1, y1).add(vec4(pixel.negate(), pixel)), -1, 1);
-    const a = linearColumns(builder);
-    const det = a[0].dot(a[1].cross(a[2]));
+    const { det } = cofactors(linearColumns(builder));
     const bounds = select(
       det.equal(0).or(m.equal(0)),
       vec4(2),
@@ -327,21 +327,28 @@ export class SphereImpostorNodeMaterial extends ShadingNodeMaterial {
     const zFar = reversed ? 0 : 1;
     // The pixel's NDC position: the quad's, interpolated (its clip w is 1: linear in screen space).
     const xy = varying(_clips.get(builder).xy) as N;
-    const k0 = a1.cross(a2);
-    const k1 = a2.cross(a0);
-    const k2 = a0.cross(a1);
-    const det = a0.dot(k0);
+    const {
+      scale,
+      k: [k0, k1, k2],
+      det,
+    } = cofactors([a0, a1, a2]);
+    // A⁻¹u = diag(1/scale)·cof(Â)ᵀu/det(Â).
     const toModel = (h: N): N => {
       const u = h.xyz.sub(c.mul(h.w));
-      return vec4(vec3(k0.dot(u), k1.dot(u), k2.dot(u)).div(det), h.w);
+      return vec4(vec3(k0.dot(u), k1.dot(u), k2.dot(u)).div(scale).div(det), h.w);
     };
     const inverseP = cameraProjectionMatrixInverse as N;
     const nearH = toModel(inverseP.mul(vec4(xy, zNear, 1))).toVar();
     const farH = toModel(inverseP.mul(vec4(xy, zFar, 1))).toVar();
     const o = nearH.xyz.div(nearH.w).toVar();
     // far − near without dividing by farH.w (about near/far: 0 for a far plane at infinity).
-    const d0 = farH.xyz.mul(nearH.w).sub(nearH.xyz.mul(farH.w));
-    const s = nearH.w.mul(farH.w);
+    // d and the product s of the w's rescaled together (neither the length nor the direction changes), so that
+    // |d|² stays in range at a scale of 1e±20.
+    const dRaw = farH.xyz.mul(nearH.w).sub(nearH.xyz.mul(farH.w)).toVar();
+    const dMax = max(max(abs(dRaw.x), abs(dRaw.y)), abs(dRaw.z));
+    const dScale = select(dMax.greaterThan(0), dMax, float(1)).toVar();
+    const d0 = dRaw.div(dScale);
+    const s = nearH.w.mul(farH.w.div(dScale));
     const len = select(s.greaterThan(0), d0.length().div(s), float(1e38));
     const d = d0
       .normalize()
@@ -361,15 +368,34 @@ export class SphereImpostorNodeMaterial extends ShadingNodeMaterial {
     Discard(t0.lessThan(0).or(t0.greaterThan(len)));
     const p = o.add(d.mul(t0)).toVar();
     const view = a0.mul(p.x).add(a1.mul(p.y)).add(a2.mul(p.z)).add(c).toVar();
+    // sign(det)·cof(A)·p ∝ sign(det(Â))·cof(Â)·(p/scale).
+    const ps = p.div(scale);
     const normal = k0
-      .mul(p.x)
-      .add(k1.mul(p.y))
-      .add(k2.mul(p.z))
+      .mul(ps.x)
+      .add(k1.mul(ps.y))
+      .add(k2.mul(ps.z))
       .mul(select(det.lessThan(0), float(-1), float(1)));
     const hit = { view, normal };
     _hits.set(builder, hit);
     return hit;
   }
+}
+
+/**
+ * A = Â·diag(scale), each column of Â scaled to a largest component of 1 (so that the cofactors and the
+ * determinant stay in 32-bit range for an object scaled by 1e±20): the scales, the columns k of cof(Â)
+ * (â1×â2, â2×â0, â0×â1) and det(Â); det is 0 for a singular A (a zero column included).
+ */
+function cofactors(a: [N, N, N]): { scale: N; k: [N, N, N]; det: N } {
+  const s = a.map((column: N) => max(max(abs(column.x), abs(column.y)), abs(column.z)));
+  const unit = a.map((column: N, i) => column.div(select(s[i].greaterThan(0), s[i], float(1))));
+  const k: [N, N, N] = [unit[1].cross(unit[2]), unit[2].cross(unit[0]), unit[0].cross(unit[1])];
+  const det = select(
+    s[0].greaterThan(0).and(s[1].greaterThan(0)).and(s[2].greaterThan(0)),
+    unit[0].dot(k[0]),
+    float(0),
+  );
+  return { scale: vec3(s[0], s[1], s[2]), k, det };
 }
 
 /** The model-view matrix of the object, × the instance's matrix on an InstancedMesh. */
