@@ -33,7 +33,7 @@ export interface Variant {
 }
 /**
  * 'ellipsoid' (the lecture's 2, 1, 2 scale, rotated), 'sphere' (a unit sphere off the axis), 'instanced' (both as
- * two instances of one InstancedMesh), 'mirrored' (the ellipsoid with a negative x scale: det < 0),
+ * two instances of one InstancedMesh, with instance colours), 'mirrored' (the ellipsoid with a negative x scale: det < 0),
  * 'orthographic' (the ellipsoid and the sphere through an orthographic camera), 'inside' (a perspective eye
  * inside the ellipsoid: nothing drawn), 'fog' (the ellipsoid in three's range Fog), 'clipped' (the ellipsoid
  * cut by a clipping plane), 'clip-intersection' (by two planes with clipIntersection), 'huge' and 'tiny' (the
@@ -156,6 +156,9 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
     instanced.setMatrixAt(0, ellipsoid);
     instanced.setMatrixAt(1, sphere);
     instanced.position.set(0.1, 0.2, -0.3); // the mesh's own matrix multiplies the instances'
+    // instanceColor multiplies ka and kd (not ks).
+    instanced.setColorAt(0, new Color(0.5, 1, 0.8));
+    instanced.setColorAt(1, new Color(1, 0.6, 1));
     s.add(instanced);
   }
   if (scenario === 'box' || scenario === 'sphere-alone') add(new Matrix4());

@@ -104,7 +104,7 @@ const maxAbs = (v: N): N => {
  *
  * **Instanced**: on an `InstancedMesh` of {@link createImpostorQuad}, each instance is one impostor whose model
  * matrix is the mesh's `matrixWorld` × the instance's matrix (a non-uniform or sheared instance matrix makes the
- * exact ellipsoid, normals included). `instanceColor` is not applied (as on `ShadingNodeMaterial`).
+ * exact ellipsoid, normals included); `instanceColor` multiplies ka and kd (not ks), as on `ShadingNodeMaterial`.
  *
  * three's fog (range and density fogs) and clipping planes are applied at the hit (three's height fog reads the
  * world position, which is the quad's).
