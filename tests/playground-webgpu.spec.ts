@@ -56,23 +56,28 @@ test.describe('the renderer switch, in a browser without WebGPU', () => {
     expect(problems).toEqual([]);
   });
 
-  test('the panel’s material and lights apply in WebGPU mode as in WebGL mode: Gouraud, Phong lighting, cel bands, two lights', async ({
-    page,
-  }) => {
-    test.setTimeout(90_000);
-    const problems = watchProblems(page);
-    const state = {
+  const STATES = {
+    'Gouraud shading, Phong lighting, 4 cel bands, two attenuated lights': {
       material: { shading: 'gouraud', lighting: 'phong', celBands: 4, ka: [0.3, 0.2, 0.6], shininess: 12 },
       lights: [light([-5, 10, 20], [1, 1, 1]), light([6, -4, 8], [0.2, 0.4, 1])],
       model: { scale: [1.5, 1, 1.5] },
-    };
-    await open(page, state);
-    const webgl = await shot(page);
-    await toWebGPU(page);
-    await expect(page.getByTestId('renderer-backend')).toHaveText(FALLBACK);
-    expectSamePicture(webgl, await shot(page));
-    expect(problems).toEqual([]);
-  });
+    },
+    'flat shading (the prepared flat geometry)': { material: { shading: 'flat' } },
+  };
+  for (const [name, state] of Object.entries(STATES)) {
+    test(`the panel’s material and lights apply in WebGPU mode as in WebGL mode: ${name}`, async ({
+      page,
+    }) => {
+      test.setTimeout(90_000);
+      const problems = watchProblems(page);
+      await open(page, state);
+      const webgl = await shot(page);
+      await toWebGPU(page);
+      await expect(page.getByTestId('renderer-backend')).toHaveText(FALLBACK);
+      expectSamePicture(webgl, await shot(page));
+      expect(problems).toEqual([]);
+    });
+  }
 
   test('edits apply live in WebGPU mode; what it does not draw is named; switching back restores WebGL mode’s picture and settings exactly', async ({
     page,
