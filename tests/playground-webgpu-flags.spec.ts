@@ -9,7 +9,9 @@ import { shadelabUse } from '@shadelab/playwright';
 import { choose, open, settle, urlState } from './playground-helpers';
 import { expectSamePicture, recordReports, shot, toWebGPU, watchProblems } from './playground-webgpu-helpers';
 
-test.use(shadelabUse({ webgpu: true }));
+// The lost device restarts Chromium's GPU process: a switch no other spec passes (Chromium ignores it) gives this
+// file a browser of its own, so the restart never reaches another spec's pages.
+test.use(shadelabUse({ webgpu: true, args: ['--shadelab-own-browser=playground-webgpu-flags'] }));
 
 const LOST = /^Renderer: WebGL2 \(WebGPU's fallback: the WebGPU device was lost: .+\)$/;
 
