@@ -9,10 +9,10 @@
  * canvas keeps its first context type) and says so.
  */
 import { ShadingMaterial } from '@shadelab/material';
-import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
+import { provokingVertexOf, ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import * as THREE from 'three';
 import { WebGPURenderer } from 'three/webgpu';
-import { drawnAsWebGPU, mirrorMaterial } from './scene';
+import { drawnAsWebGPU, flatFor, mirrorMaterial } from './scene';
 import type { FallbackReason, GeneratedShader, WebGPUStatus } from './status';
 
 /** What the view needs of the viewer: its canvas (the overlay's size and place), scene, camera and mesh. */
@@ -178,7 +178,9 @@ export class WebGPUView {
     if (canvas.width !== w || canvas.height !== h) renderer.setSize(w, h, false);
     const source = host.mesh.material;
     if (source instanceof ShadingMaterial) mirrorMaterial(source, this.material);
-    drawnAsWebGPU(host, this.material, () => renderer.render(host.scene, host.camera));
+    drawnAsWebGPU(host, this.material, provokingVertexOf(renderer), () =>
+      renderer.render(host.scene, host.camera),
+    );
     // The WebGL canvas stays below for the input; it shows again when WebGPU mode is left.
     host.canvas.style.opacity = '0';
     this.frames += 1;
@@ -200,7 +202,7 @@ export class WebGPUView {
   /** The node material's generated code as the running backend compiled it (a scene of the mesh alone). */
   private async readShader(renderer: WebGPURenderer) {
     const { mesh } = this.host;
-    const probe = new THREE.Mesh(mesh.geometry, this.material);
+    const probe = new THREE.Mesh(flatFor(mesh.geometry, provokingVertexOf(renderer)), this.material);
     probe.matrixWorld.copy(mesh.matrixWorld);
     probe.matrixAutoUpdate = false;
     probe.matrixWorldAutoUpdate = false;
