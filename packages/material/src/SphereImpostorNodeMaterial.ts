@@ -89,25 +89,27 @@ const maxAbs = (v: N): N => {
  * exact depth and lights it with `ShadingNodeMaterial`'s lighting model (PhongLights and three's lights, in view
  * space) and the exact normal sign(det)·cof(A)·p (A the linear part of the model-view matrix).
  *
- * Use it on a mesh of {@link createImpostorQuad} (`new Mesh(createImpostorQuad(), material)`; `SphereImpostor`
- * is typed for `SphereImpostorMaterial`). It takes `ShadingNodeMaterial`'s options (lighting, cel bands, ka, kd,
- * ks, shininess, lights), checked the same way and named after this class; `shading` is always `'phong'`
- * (anything else is a TypeError, as on `SphereImpostorMaterial`).
+ * Use it on a mesh of the impostor's quad, `createImpostorQuad()` of `@shadelab/material/impostor`
+ * (`new Mesh(createImpostorQuad(), material)`: `SphereImpostor` is typed for `SphereImpostorMaterial`). It takes
+ * `ShadingNodeMaterial`'s options (lighting, cel bands, ka, kd, ks, shininess, lights), checked the same way and
+ * named after this class; `shading` is always `'phong'` (anything else is a TypeError, as on
+ * `SphereImpostorMaterial`).
  *
  * The quad covers the projected ellipsoid's exact screen bounds, computed in the vertex stage from T = P·V·M (the
  * planes x = a·w tangent to it in clip space, as `projectedBounds`), widened by one pixel; the whole viewport
  * when the eye plane touches the ellipsoid. Only the front surface between the near and far planes is drawn
  * (no caps); a singular model matrix (a zero scale) draws nothing. The columns of A are scaled to a largest
- * component of 1 before its cofactors are taken, so an object scaled by 1e±20 stays in 32-bit range. Depth is written in the renderer's depth mode
- * (WebGPU's [0, 1] or WebGL2's [−1, 1] clip space, reversed or logarithmic depth), so meshes and impostors
- * occlude each other exactly. Writing depth disables early depth tests: overdraw costs a full fragment each.
+ * component of 1 before its cofactors are taken, so an object scaled by 1e±20 stays in 32-bit range. Depth is
+ * written in the renderer's depth mode (WebGPU's [0, 1] or WebGL2's [−1, 1] clip space, reversed or
+ * logarithmic depth), so meshes and impostors occlude each other exactly. Writing depth disables early depth
+ * tests: overdraw costs a full fragment each.
  *
- * **Instanced**: on an `InstancedMesh` of {@link createImpostorQuad}, each instance is one impostor whose model
+ * **Instanced**: on an `InstancedMesh` of `createImpostorQuad()`, each instance is one impostor whose model
  * matrix is the mesh's `matrixWorld` × the instance's matrix (a non-uniform or sheared instance matrix makes the
  * exact ellipsoid, normals included); `instanceColor` multiplies ka and kd (not ks), as on `ShadingNodeMaterial`.
  *
- * three's fog (range and density fogs) and clipping planes are applied at the hit (three's height fog reads the
- * world position, which is the quad's).
+ * three's fog (range and density fogs) and a `ClippingGroup`'s clipping planes are applied at the hit (three's
+ * height fog reads the world position, which is the quad's).
  *
  * @example
  * const material = new SphereImpostorNodeMaterial({ lighting: 'blinn-phong', lights: [light] });

@@ -5,7 +5,11 @@
  * @module @shadelab/material/webgpu
  */
 export { provokingVertexOf } from './provokingVertexOf.js';
-export { ShadingNodeMaterial, type ShadingNodeMaterialOptions } from './ShadingNodeMaterial.js';
+export {
+  ShadingNodeMaterial,
+  type ShadingNodeMaterialOptions,
+  type Surface,
+} from './ShadingNodeMaterial.js';
 export {
   SphereImpostorNodeMaterial,
   type SphereImpostorNodeMaterialOptions,
