@@ -19,7 +19,7 @@ import {
   TRADE_POINTS,
   type TradePoint,
 } from './benchData';
-import type { TradeOption } from './tradeoffScene';
+import type { TradeOption } from './tradeOption';
 
 const COLORS: Record<TradePoint['shading'], string> = {
   flat: '#e0a040',

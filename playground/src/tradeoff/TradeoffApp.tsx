@@ -2,12 +2,11 @@
 // bench point), and
 // the current view drawn with the chosen option beside its error heat map against the exact reference,
 // recomputed live whenever the option or the zoom changes. The scene comes from the playground's URL state
-// (`#s=…`, same schema and parser) when there is one, else the lecture's.
+// when there is one, else the lecture's (initialView.ts).
 import { compareToReference, type ImageError } from '@shadelab/reference';
 import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
 import { chooseSphereDetail, silhouetteErrorScalePx } from '@shadelab/sphere/detail';
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { readUrlState } from '../state/persist';
 import {
   cheapestMeeting,
   type ErrorMetric,
@@ -15,54 +14,12 @@ import {
   TRADE_POINTS,
   type TradePoint,
 } from './benchData';
-import {
-  errorHeatmap,
-  HEAT_BACKGROUND,
-  HEAT_EXACT,
-  HEAT_RAMP_STOPS,
-  heatColor,
-  type Rgb8,
-  silhouetteColor,
-} from './errorHeatmap';
+import { errorHeatmap } from './errorHeatmap';
+import { HeatmapLegend } from './HeatmapLegend';
+import { HEIGHT, initialFromUrl, MAX_LEVEL, WIDTH } from './initialView';
 import { ParetoChart } from './ParetoChart';
-import { optionCost, optionKey, type TradeOption, TradeoffScene, type TradeView } from './tradeoffScene';
-
-const WIDTH = 640;
-const HEIGHT = 360;
-/** The highest level the page draws live (and auto detail picks; tests/tradeoff-page.spec.ts expects 7). */
-const MAX_LEVEL = 7;
-
-interface Initial {
-  view: TradeView;
-  option: TradeOption;
-}
-
-/** The playground's state from the URL, mapped onto the trade-off scene (camera looks at the origin). */
-function initialFromUrl(): Initial {
-  const view: TradeView = { width: WIDTH, height: HEIGHT };
-  const parsed = readUrlState();
-  if (parsed === null || !parsed.ok) {
-    return { view, option: { shading: 'phong', base: 'tetrahedron', level: 6 } };
-  }
-  const { material, lights, model, camera, sphere } = parsed.state;
-  return {
-    view: {
-      ...view,
-      projection: camera.projection,
-      fovy: camera.fovy,
-      eye: camera.eye,
-      scale: model.scale,
-      lights: lights.length > 0 ? lights : undefined,
-      lighting: material.lighting,
-      celBands: material.celBands,
-      shininess: material.shininess,
-      ka: material.ka,
-      kd: material.kd,
-      ks: material.ks,
-    },
-    option: { shading: material.shading, base: sphere.base, level: Math.min(sphere.level, MAX_LEVEL) },
-  };
-}
+import { optionCost, optionKey, type TradeOption } from './tradeOption';
+import { TradeoffScene } from './tradeoffScene';
 
 interface Live {
   error: ImageError;
@@ -145,20 +102,6 @@ export function TradeoffApp() {
   const pick = (p: TradePoint) => setOption(p.option);
   const cheapest = cheapestMeeting(targetRmse, targetSilhouette);
   const bench = TRADE_POINTS.find((p) => p.name === name);
-  const swatch = (c: Rgb8, label: string) => (
-    <span className="swatch" key={label}>
-      <span
-        style={{
-          display: 'inline-block',
-          width: '0.9em',
-          height: '0.9em',
-          background: `rgb(${c.join(',')})`,
-        }}
-      />{' '}
-      {label}
-    </span>
-  );
-
   return (
     <div className="tradeoff">
       <h1>Speed against accuracy: the lit sphere against its exact image</h1>
@@ -275,13 +218,7 @@ export function TradeoffApp() {
       <section>
         <h2>error against the exact reference</h2>
         <canvas ref={heatCanvas} width={WIDTH} height={HEIGHT} data-testid="heatmap" />
-        <p className="legend" data-testid="legend">
-          {swatch(HEAT_EXACT, 'exact (or within 1 px of the edge, not compared)')} ·{' '}
-          {HEAT_RAMP_STOPS.map((e) => swatch(heatColor(e), `${e}${e === 16 ? '+' : ''}`))} interior colour
-          error (8-bit codes) · {swatch(silhouetteColor(0.5), '→')}
-          {swatch(silhouetteColor(2.6), 'silhouette off (brighter = farther)')} ·{' '}
-          {swatch(HEAT_BACKGROUND, 'background')}
-        </p>
+        <HeatmapLegend />
         {live && (
           <dl className="stats" data-testid="stats">
             <dt>RMSE</dt>

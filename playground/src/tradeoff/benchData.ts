@@ -1,6 +1,6 @@
 // The measured trade (bench/results/tradeoff.json, written by `npm run bench`) as chart points.
 import results from '../../../bench/results/tradeoff.json';
-import { optionCost, optionKey, type TradeOption } from './tradeoffScene';
+import { optionCost, optionKey, type TradeOption } from './tradeOption';
 
 /** One measured option. */
 export interface TradePoint {
