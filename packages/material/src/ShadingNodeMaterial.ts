@@ -377,6 +377,11 @@ export class ShadingNodeMaterial extends NodeMaterial {
   /** Always true: lets code tell a ShadingNodeMaterial from other materials without `instanceof`. */
   readonly isShadingNodeMaterial = true;
 
+  /** The class named in error messages (a subclass's own name). */
+  get #owner(): string {
+    return (this.constructor as typeof ShadingNodeMaterial).type;
+  }
+
   #shading: Shading = SHADING_DEFAULTS.shading;
   #lighting: Lighting = SHADING_DEFAULTS.lighting;
   #celBands: number = SHADING_DEFAULTS.celBands;
@@ -432,9 +437,9 @@ export class ShadingNodeMaterial extends NodeMaterial {
    */
   #refresh(): undefined {
     try {
-      checkColorChannels(`${OWNER}.ka`, this.#ka);
-      checkColorChannels(`${OWNER}.kd`, this.#kd);
-      checkColorChannels(`${OWNER}.ks`, this.#ks);
+      checkColorChannels(`${this.#owner}.ka`, this.#ka);
+      checkColorChannels(`${this.#owner}.kd`, this.#kd);
+      checkColorChannels(`${this.#owner}.ks`, this.#ks);
     } catch (error) {
       if (!(error instanceof RangeError)) throw error;
       if (error.message !== this.#reported) {
@@ -454,7 +459,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#shading;
   }
   set shading(value: Shading) {
-    const checked = checkShading(OWNER, value);
+    const checked = checkShading(this.#owner, value);
     if (checked !== this.#shading) this.needsUpdate = true;
     this.#shading = checked;
   }
@@ -464,7 +469,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#lighting;
   }
   set lighting(value: Lighting) {
-    const checked = checkLighting(OWNER, value);
+    const checked = checkLighting(this.#owner, value);
     if (checked !== this.#lighting) this.needsUpdate = true;
     this.#lighting = checked;
   }
@@ -477,7 +482,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#celBands;
   }
   set celBands(value: number) {
-    const checked = checkCelBands(OWNER, value);
+    const checked = checkCelBands(this.#owner, value);
     if (checked !== this.#celBands) this.needsUpdate = true;
     this.#celBands = checked;
   }
@@ -487,7 +492,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#ka;
   }
   set ka(value: ColorInput) {
-    setColor(`${OWNER}.ka`, this.#ka, value);
+    setColor(`${this.#owner}.ka`, this.#ka, value);
   }
 
   /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.6, 0.35, 0.2) */
@@ -495,7 +500,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#kd;
   }
   set kd(value: ColorInput) {
-    setColor(`${OWNER}.kd`, this.#kd, value);
+    setColor(`${this.#owner}.kd`, this.#kd, value);
   }
 
   /** ks, specular reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.5, 0.5, 0.5) */
@@ -503,7 +508,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#ks;
   }
   set ks(value: ColorInput) {
-    setColor(`${OWNER}.ks`, this.#ks, value);
+    setColor(`${this.#owner}.ks`, this.#ks, value);
   }
 
   /** α, the specular exponent (finite, ≥ 0; 0⁰ = 1). A uniform: changing it never recompiles. @default 32 */
@@ -511,7 +516,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#shininessNode.value as number;
   }
   set shininess(value: number) {
-    this.#shininessNode.value = checkNonNegative(`${OWNER}.shininess`, value);
+    this.#shininessNode.value = checkNonNegative(`${this.#owner}.shininess`, value);
   }
 
   /**
@@ -523,7 +528,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return this.#lights;
   }
   set phongLights(value: readonly PhongLight[]) {
-    this.#lights = checkPhongLights(OWNER, value);
+    this.#lights = checkPhongLights(this.#owner, value);
     this.needsUpdate = true;
   }
 
@@ -568,7 +573,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData?.[SPHERE_FLAG] === true;
     if (this.#shading !== 'flat' && !hasNormal && !sphere) {
       throw new TypeError(
-        `${OWNER}: ${this.#shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
+        `${this.#owner}: ${this.#shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
       );
     }
     const localNormal: N = hasNormal ? normalLocal : positionLocal;
@@ -645,7 +650,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
       if (!_warnedProvoking.has(geometry)) {
         _warnedProvoking.add(geometry);
         console.warn(
-          `${OWNER}: this flatShadingGeometry was made with provokingVertex '${made}', but this backend's is the ${wanted}: flat shading lights it per fragment with the face normal. Make it with flatShadingGeometry(geometry, { provokingVertex: '${wanted}' })`,
+          `${this.#owner}: this flatShadingGeometry was made with provokingVertex '${made}', but this backend's is the ${wanted}: flat shading lights it per fragment with the face normal. Make it with flatShadingGeometry(geometry, { provokingVertex: '${wanted}' })`,
         );
       }
       return null;

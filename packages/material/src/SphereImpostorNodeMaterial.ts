@@ -33,23 +33,19 @@ import {
   viewZToLogarithmicDepth,
 } from 'three/tsl';
 import {
-  Color,
   DoubleSide,
   DynamicDrawUsage,
   type InstancedBufferAttribute,
   InterleavedBufferAttribute,
   WebGLCoordinateSystem,
 } from 'three/webgpu';
-import { checkCelBands, checkLighting, checkPhongLights, type Shading } from './options.js';
-import type { PhongLight } from './PhongLight.js';
+import type { Shading } from './options.js';
 import {
   ShadingNodeMaterial,
   type ShadingNodeMaterialOptions,
   towardsEye,
   unitOr,
 } from './ShadingNodeMaterial.js';
-import type { Lighting } from './shade.js';
-import { type ColorInput, checkNonNegative, setColor } from './validate.js';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
 type N = any;
@@ -145,65 +141,6 @@ export class SphereImpostorNodeMaterial extends ShadingNodeMaterial {
       );
     }
     super.shading = value;
-  }
-
-  /** The lighting equation: `'phong'` or `'blinn-phong'`. @default 'phong' */
-  override get lighting(): Lighting {
-    return super.lighting;
-  }
-  override set lighting(value: Lighting) {
-    super.lighting = checkLighting(OWNER, value);
-  }
-
-  /** Cel shading: 0 = off; N in 2 … 255 diffuse shades and a hard-edged highlight. @default 0 */
-  override get celBands(): number {
-    return super.celBands;
-  }
-  override set celBands(value: number) {
-    super.celBands = checkCelBands(OWNER, value);
-  }
-
-  /** ka, ambient reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.6, 0.35, 0.2) */
-  override get ka(): Color {
-    return super.ka;
-  }
-  override set ka(value: ColorInput) {
-    setColor(`${OWNER}.ka`, new Color(), value);
-    super.ka = value;
-  }
-
-  /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.6, 0.35, 0.2) */
-  override get kd(): Color {
-    return super.kd;
-  }
-  override set kd(value: ColorInput) {
-    setColor(`${OWNER}.kd`, new Color(), value);
-    super.kd = value;
-  }
-
-  /** ks, specular reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.5, 0.5, 0.5) */
-  override get ks(): Color {
-    return super.ks;
-  }
-  override set ks(value: ColorInput) {
-    setColor(`${OWNER}.ks`, new Color(), value);
-    super.ks = value;
-  }
-
-  /** α, the specular exponent (finite, ≥ 0; 0⁰ = 1). A uniform: changing it never recompiles. @default 32 */
-  override get shininess(): number {
-    return super.shininess;
-  }
-  override set shininess(value: number) {
-    super.shininess = checkNonNegative(`${OWNER}.shininess`, value);
-  }
-
-  /** The PhongLights (the `lights` option), as on `ShadingNodeMaterial`. @default [] */
-  override get phongLights(): readonly PhongLight[] {
-    return super.phongLights;
-  }
-  override set phongLights(value: readonly PhongLight[]) {
-    super.phongLights = checkPhongLights(OWNER, value);
   }
 
   /**
