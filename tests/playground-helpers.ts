@@ -1,4 +1,4 @@
-import { expect, type Page } from '@playwright/test';
+import { expect, type Locator, type Page } from '@playwright/test';
 
 /** Overlays drawn over the canvas (stats, hints, messages): hidden in canvas screenshots. */
 export const HIDE_OVERLAYS = '.stats, .hint, .messages, .compare-labels { visibility: hidden !important; }';
@@ -70,6 +70,25 @@ async function drawn(page: Page, action: () => Promise<void>, draws = true): Pro
   await settle(page);
 }
 
+/**
+ * Opens the leva folder that holds an element if it is collapsed (the panel's Sphere, Camera, Trackball and
+ * light folders start collapsed), by a click on its title as a user would: a collapsed folder's content takes
+ * no pointer events.
+ */
+export async function openFolderOf(target: Locator): Promise<void> {
+  const title = await target.evaluate((element) => {
+    for (let node = element.parentElement; node; node = node.parentElement) {
+      const previous = node.previousElementSibling;
+      if (node.style.height === '0px' && previous?.firstElementChild instanceof SVGElement)
+        return previous.textContent;
+    }
+    return null;
+  });
+  if (title === null) return;
+  await target.page().locator('.panel').getByText(title, { exact: true }).click();
+  await expect(target).toHaveCSS('pointer-events', 'auto');
+}
+
 /** Types a value into a leva input (by its path id, e.g. `Material.shininess` or `Camera.eye.z`). */
 export async function typeInto(page: Page, id: string, value: string, { draws = true } = {}): Promise<void> {
   const input = page.locator(`[id="${id}"]`);
@@ -92,12 +111,16 @@ export async function choose(page: Page, id: string, label: string): Promise<voi
 
 /** Toggles a leva checkbox (by its path id). */
 export async function toggle(page: Page, id: string): Promise<void> {
-  await drawn(page, () => page.locator(`label[for="${id}"]`).last().click());
+  const label = page.locator(`label[for="${id}"]`).last();
+  await openFolderOf(label);
+  await drawn(page, () => label.click());
 }
 
 /** Clicks a leva button by its text. */
 export async function press(page: Page, text: string): Promise<void> {
-  await drawn(page, () => page.getByRole('button', { name: text, exact: true }).click());
+  const button = page.getByRole('button', { name: text, exact: true });
+  await openFolderOf(button);
+  await drawn(page, () => button.click());
 }
 
 /** The state the page last wrote to its URL. */

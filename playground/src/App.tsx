@@ -1,8 +1,7 @@
-import { Leva } from 'leva';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
-import { SCENE_LABELS, sceneNote } from './engine/scenes';
+import { SCENE_LABELS } from './engine/scenes';
 import {
   COMPARE_COLUMNS,
   compareLayout,
@@ -11,7 +10,7 @@ import {
   TURN_KEYS_TEXT,
   Viewer,
 } from './engine/Viewer';
-import { backendLabel, type GeneratedShader, type WebGPUStatus, webgpuNotes } from './engine/webgpu/status';
+import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
   DEPTH_MODES,
@@ -23,8 +22,7 @@ import {
   validateState,
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
-import { GeneratedShader as GeneratedShaderPanel } from './ui/GeneratedShader';
-import { ShaderEditor } from './ui/ShaderEditor';
+import { SidePanel } from './ui/SidePanel';
 import { Stats, StatsFeed } from './ui/Stats';
 import type { Update } from './ui/useFolder';
 
@@ -40,7 +38,6 @@ export function App() {
   const [context, setContext] = useState<'ok' | 'lost' | 'restored'>('ok');
   const [variant, setVariant] = useState<Variant | null>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
-  const panelRef = useRef<HTMLDivElement>(null);
   const viewerRef = useRef<Viewer | null>(null);
   const feed = useMemo(() => new StatsFeed(), []);
   const goodState = useRef<PlaygroundState | null>(null);
@@ -119,24 +116,6 @@ export function App() {
       viewerRef.current = null;
     };
   }, [feed, update, refreshVariant, depth]);
-
-  // leva labels only the first field of a vector (x/r); name the others for screen readers ("ka y", …).
-  useEffect(() => {
-    const panel = panelRef.current;
-    if (!panel) return;
-    const name = () => {
-      for (const input of panel.querySelectorAll<HTMLInputElement>('input[id$=".y"], input[id$=".z"]')) {
-        const base = input.id.slice(0, -2);
-        const label = panel.querySelector(`label[for="${CSS.escape(base)}"]`)?.textContent;
-        const wanted = `${label ?? base} ${input.id.slice(-1)}`;
-        if (label && input.getAttribute('aria-label') !== wanted) input.setAttribute('aria-label', wanted);
-      }
-    };
-    name();
-    const observer = new MutationObserver(name);
-    observer.observe(panel, { childList: true, subtree: true });
-    return () => observer.disconnect();
-  }, []);
 
   // A link pasted into this tab changes only the hash: take its state (or refuse it) without a reload.
   useEffect(() => {
@@ -275,36 +254,14 @@ export function App() {
           </a>
         </p>
       </main>
-      <aside className="side">
-        <div className="panel" ref={panelRef}>
-          <Leva fill flat titleBar={false} hideCopyButton />
-        </div>
-        <p
-          className="scene-note"
-          data-testid="scene-note"
-          style={{ flex: '0 0 auto', margin: 0, padding: '4px 8px', fontSize: 12, color: '#bbb' }}
-        >
-          {sceneNote(state.scene)}
-        </p>
-        {webgpuMode && (
-          <div className="renderer-note" data-testid="renderer-note">
-            <p data-testid="renderer-backend" role="status">
-              Renderer: {webgpu ? backendLabel(webgpu) : 'WebGPU mode: starting…'}
-            </p>
-            <ul>
-              {webgpuNotes(state).map((note) => (
-                <li key={note} data-testid="webgpu-note">
-                  {note}
-                </li>
-              ))}
-            </ul>
-          </div>
-        )}
-        {webgpuMode && <GeneratedShaderPanel shader={gpuShader} />}
-        {!webgpuMode && variant && state.scene === 'sphere' && (
-          <ShaderEditor variant={variant} tryShader={tryShader} clearShader={clearShader} />
-        )}
-      </aside>
+      <SidePanel
+        state={state}
+        variant={variant}
+        tryShader={tryShader}
+        clearShader={clearShader}
+        webgpu={webgpu}
+        gpuShader={gpuShader}
+      />
       <SceneControls state={state} update={update} actions={actions} />
       {state.lights.map((_, i) => (
         // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.

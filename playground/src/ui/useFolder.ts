@@ -1,11 +1,12 @@
 import { useControls } from 'leva';
 import { useEffect, useRef } from 'react';
 import type { PlaygroundState } from '../state/schema';
+import { folderCollapsed } from './panelLayout';
 
 type LooseUseControls = (
   name: string,
   schema: () => Record<string, unknown>,
-  settings: { order: number },
+  settings: { order: number; collapsed: boolean },
   deps: unknown[],
 ) => [unknown, (values: Record<string, unknown>) => void];
 
@@ -62,7 +63,7 @@ export function useFolder(
       ),
       ...extra,
     }),
-    { order },
+    { order, collapsed: folderCollapsed(name) },
     [],
   );
   const text = JSON.stringify(values);

@@ -1,0 +1,125 @@
+import { expect, type Page, test } from '@playwright/test';
+import { HIDE_OVERLAYS, open } from './playground-helpers';
+
+// The playground's layout at the two common desktop sizes: canvas on the left, the side column (the leva panel
+// above, the shader view below) on the right; nothing wider than the window, no part overlapping another, each
+// at least the size below (measured from the layout: index.html's CSS gives the side column 340 px, 520 px from
+// 1800 px up, and splits its height 55 : 45 between the panel and the shader view). Whole-page screenshots
+// (maxDiffPixels 0 as everywhere) with the animated overlays (stats, hint) hidden. Update the baselines after an
+// intended change with:
+//   SHADELAB_E2E_PORT=4316 npx playwright test tests/playground-layout.spec.ts --update-snapshots
+
+const SIZES = [
+  { width: 1280, height: 800, canvas: [935, 800], panel: [340, 420], shader: [340, 340] },
+  { width: 1920, height: 1080, canvas: [1395, 1080], panel: [520, 575], shader: [520, 470] },
+] as const;
+
+type Box = { x: number; y: number; width: number; height: number };
+
+async function box(page: Page, selector: string): Promise<Box> {
+  const found = await page.locator(selector).boundingBox();
+  if (!found) throw new Error(`${selector} has no box`);
+  return found;
+}
+
+const overlap = (a: Box, b: Box) =>
+  a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+
+/** A folder's title in the panel and whether its content is open (leva shrinks a closed folder's wrapper to 0). */
+const title = (page: Page, name: string) => page.locator('.panel').getByText(name, { exact: true });
+const isOpen = (page: Page, name: string) =>
+  title(page, name).evaluate((el) => (el.parentElement!.nextElementSibling as HTMLElement).offsetHeight > 0);
+
+for (const size of SIZES) {
+  test(`${size.width} × ${size.height}: canvas, panel and shader view fit side by side`, async ({ page }) => {
+    await page.setViewportSize({ width: size.width, height: size.height });
+    await open(page);
+    const scroll = await page.evaluate(() => [document.scrollingElement!.scrollWidth, window.innerWidth]);
+    expect(scroll[0]).toBeLessThanOrEqual(scroll[1]!);
+    const boxes = {
+      canvas: await box(page, '[data-testid="viewport"]'),
+      panel: await box(page, '.panel'),
+      shader: await box(page, '.shader-view'),
+    };
+    for (const [name, b] of Object.entries(boxes)) {
+      const [width, height] = size[name as keyof typeof boxes];
+      expect(b.width, `${name} width`).toBeGreaterThanOrEqual(width);
+      expect(b.height, `${name} height`).toBeGreaterThanOrEqual(height);
+      expect(b.x + b.width, `${name} right edge`).toBeLessThanOrEqual(size.width);
+      expect(b.y + b.height, `${name} bottom edge`).toBeLessThanOrEqual(size.height);
+    }
+    expect(overlap(boxes.canvas, boxes.panel)).toBe(false);
+    expect(overlap(boxes.canvas, boxes.shader)).toBe(false);
+    expect(overlap(boxes.panel, boxes.shader)).toBe(false);
+
+    // The GLSL wraps inside its box: nothing hidden sideways, even the longest line, which is wider than the box
+    // unwrapped; the box scrolls down to every line.
+    for (const stage of ['vertex', 'fragment']) {
+      await page.getByRole('tab', { name: stage }).click();
+      const text = page.getByLabel(`${stage} shader GLSL`);
+      const fit = await text.evaluate((area: HTMLTextAreaElement) => {
+        const longest = area.value.split('\n').reduce((a, b) => (b.length > a.length ? b : a), '');
+        const probe = document.createElement('span');
+        probe.style.cssText = `font: ${getComputedStyle(area).font}; white-space: pre; position: absolute;`;
+        probe.textContent = longest;
+        document.body.append(probe);
+        const unwrapped = probe.getBoundingClientRect().width;
+        probe.remove();
+        area.scrollTop = area.scrollHeight;
+        return {
+          unwrapped,
+          inner: area.clientWidth,
+          scrollWidth: area.scrollWidth,
+          bottom: area.scrollTop + area.clientHeight >= area.scrollHeight - 1,
+        };
+      });
+      expect(fit.unwrapped, 'the longest line is wider than the box').toBeGreaterThan(fit.inner);
+      expect(fit.scrollWidth, 'nothing hidden sideways').toBeLessThanOrEqual(fit.inner);
+      expect(fit.bottom, 'the last line is reachable').toBe(true);
+      await text.evaluate((area: HTMLTextAreaElement) => {
+        area.scrollTop = 0;
+      });
+    }
+    await page.getByRole('tab', { name: 'fragment' }).click();
+    await page.addStyleTag({ content: `${HIDE_OVERLAYS} textarea { caret-color: transparent; }` });
+    await expect(page).toHaveScreenshot(`layout-${size.width}x${size.height}.png`);
+  });
+}
+
+test('the panel folders collapse and expand, and the page remembers them', async ({ page }) => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await open(page);
+  const folders = {
+    View: true,
+    Material: true,
+    Lights: true,
+    'Light 1': false,
+    Sphere: false,
+    Camera: false,
+    Trackball: false,
+  };
+  for (const [name, open] of Object.entries(folders)) {
+    expect(await isOpen(page, name), `${name} open by default`).toBe(open);
+    await title(page, name).click();
+    await expect.poll(() => isOpen(page, name), `${name} toggled`).toBe(!open);
+  }
+  await page.reload();
+  for (const [name, open] of Object.entries(folders)) {
+    expect(await isOpen(page, name), `${name} remembered`).toBe(!open);
+    await title(page, name).click();
+    await expect.poll(() => isOpen(page, name), `${name} toggled back`).toBe(open);
+  }
+});
+
+test('the shader view collapses (the panel takes the column) and the page remembers it', async ({ page }) => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await open(page);
+  const panel = (await box(page, '.panel')).height;
+  await page.getByRole('button', { name: 'GLSL' }).click();
+  await expect(page.getByTestId('shader-text')).toBeHidden();
+  expect((await box(page, '.panel')).height).toBeGreaterThan(panel + 300);
+  await page.reload();
+  await expect(page.getByRole('button', { name: 'GLSL' })).toHaveAttribute('aria-expanded', 'false');
+  await page.getByRole('button', { name: 'GLSL' }).click();
+  await expect(page.getByTestId('shader-text')).toBeVisible();
+});
