@@ -123,3 +123,35 @@ test('the shader view collapses (the panel takes the column) and the page rememb
   await page.getByRole('button', { name: 'GLSL' }).click();
   await expect(page.getByTestId('shader-text')).toBeVisible();
 });
+
+test('the splitter gives the panel more of the column (drag or keys), and the page remembers it', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await open(page);
+  const splitter = page.getByRole('separator', { name: 'panel height' });
+  await expect(splitter).toHaveAttribute('aria-valuenow', '55');
+  const before = await box(page, '.panel');
+  const handle = await splitter.boundingBox();
+  const x = handle!.x + handle!.width / 2;
+  const y = handle!.y + handle!.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x, y + 200, { steps: 5 });
+  await page.mouse.up();
+  const after = await box(page, '.panel');
+  // The handle follows the pointer: the panel grows by the drag (to the pixel, less the rounding of the share).
+  expect(Math.abs(after.height - before.height - 200)).toBeLessThanOrEqual(6);
+  const dragged = Number(await splitter.getAttribute('aria-valuenow'));
+  expect(dragged).toBeGreaterThan(75);
+  await page.reload();
+  await expect(splitter).toHaveAttribute('aria-valuenow', String(dragged));
+  await splitter.focus();
+  await page.keyboard.press('ArrowUp');
+  await expect(splitter).toHaveAttribute('aria-valuenow', String(dragged - 5));
+  await page.keyboard.press('End');
+  await expect(splitter).toHaveAttribute('aria-valuenow', '85');
+  await page.keyboard.press('Home');
+  await expect(splitter).toHaveAttribute('aria-valuenow', '20');
+  expect((await box(page, '.panel')).height).toBeLessThan(before.height / 2);
+});

@@ -5,7 +5,14 @@ import { sceneNote } from '../engine/scenes';
 import { backendLabel, type GeneratedShader, type WebGPUStatus, webgpuNotes } from '../engine/webgpu/status';
 import type { PlaygroundState } from '../state/schema';
 import { GeneratedShader as GeneratedShaderPanel } from './GeneratedShader';
-import { rememberShaderCollapsed, shaderCollapsed, useRememberFolders } from './panelLayout';
+import {
+  PANEL_SHARE,
+  panelShare,
+  rememberPanelShare,
+  rememberShaderCollapsed,
+  shaderCollapsed,
+  useRememberFolders,
+} from './panelLayout';
 import { ShaderEditor } from './ShaderEditor';
 
 interface Props {
@@ -20,8 +27,9 @@ interface Props {
 }
 
 /**
- * The column beside the canvas: the leva panel (its folders collapse, remembered), the scene note, WebGPU mode's
- * notes, and the shader view (collapsible, remembered), which takes what the panel leaves (index.html's CSS).
+ * The column beside the canvas: the leva panel (its folders collapse), the scene note, WebGPU mode's notes, and the
+ * shader view (it collapses to its title), with a splitter between the panel and the shader view; the page
+ * remembers all three (`panelLayout.ts`).
  */
 export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuShader }: Props) {
   const panelRef = useRef<HTMLDivElement>(null);
@@ -34,9 +42,11 @@ export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuS
     setCollapsed(!collapsed);
     rememberShaderCollapsed(!collapsed);
   };
+  const [share, setShare] = useState(panelShare);
+  const split = (webgpuMode || showEditor) && !collapsed;
   return (
     <aside className="side">
-      <div className="panel" ref={panelRef}>
+      <div className="panel" ref={panelRef} style={split ? { flexBasis: `${share}%` } : undefined}>
         <Leva fill flat titleBar={false} hideCopyButton />
       </div>
       <p className="scene-note" data-testid="scene-note">
@@ -56,8 +66,12 @@ export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuS
           </ul>
         </div>
       )}
+      {split && <Splitter share={share} onShare={setShare} />}
       {(webgpuMode || showEditor) && (
-        <div className={`shader-view${collapsed ? ' collapsed' : ''}`}>
+        <div
+          className={`shader-view${collapsed ? ' collapsed' : ''}`}
+          style={collapsed ? undefined : { flexBasis: `${100 - share}%` }}
+        >
           <button
             type="button"
             className="shader-view-toggle"
@@ -74,6 +88,63 @@ export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuS
         </div>
       )}
     </aside>
+  );
+}
+
+/**
+ * The handle between the panel and the shader view: drag it (or focus it and press ↑/↓, Home/End) to give one
+ * more of the column's height; the share is remembered on release.
+ */
+function Splitter({ share, onShare }: { share: number; onShare: (share: number) => void }) {
+  const set = (next: number) => {
+    const clamped = Math.round(Math.min(PANEL_SHARE.max, Math.max(PANEL_SHARE.min, next)));
+    onShare(clamped);
+    return clamped;
+  };
+  // The panel and the shader view split what the notes between them leave (flex-basis share% and the rest):
+  // the share that puts the shader view's top edge (this handle) at the pointer.
+  const shareAt = (element: HTMLElement, clientY: number) => {
+    const column = element.parentElement!;
+    const height = (selector: string) => column.querySelector(selector)?.getBoundingClientRect().height ?? 0;
+    const shared = height('.panel') + height('.shader-view');
+    const notes = column.getBoundingClientRect().height - shared;
+    return ((clientY - column.getBoundingClientRect().top - notes) / shared) * 100;
+  };
+  const keys: Record<string, number> = {
+    ArrowUp: share - 5,
+    ArrowDown: share + 5,
+    Home: PANEL_SHARE.min,
+    End: PANEL_SHARE.max,
+  };
+  return (
+    // biome-ignore lint/a11y/useSemanticElements: a focusable separator (a window splitter) has no element of its own.
+    <div
+      className="splitter"
+      role="separator"
+      aria-orientation="horizontal"
+      aria-label="panel height"
+      aria-valuemin={PANEL_SHARE.min}
+      aria-valuemax={PANEL_SHARE.max}
+      aria-valuenow={share}
+      tabIndex={0}
+      onPointerDown={(e) => {
+        e.currentTarget.setPointerCapture(e.pointerId);
+        e.preventDefault();
+      }}
+      onPointerMove={(e) => {
+        if (e.currentTarget.hasPointerCapture(e.pointerId)) set(shareAt(e.currentTarget, e.clientY));
+      }}
+      onPointerUp={(e) => {
+        if (e.currentTarget.hasPointerCapture(e.pointerId))
+          rememberPanelShare(set(shareAt(e.currentTarget, e.clientY)));
+      }}
+      onKeyDown={(e) => {
+        const next = keys[e.key];
+        if (next === undefined) return;
+        e.preventDefault();
+        rememberPanelShare(set(next));
+      }}
+    />
   );
 }
 

@@ -1,9 +1,9 @@
 /**
- * Which parts of the side column are open: the panel's folders and the shader view. Folders open by default are
- * the ones used on every visit (the View folder's scene and export, the Material folder, the Lights folder's
- * "add light"); the others (Sphere, Camera, Trackball, each light) start collapsed so that the material fits
- * without scrolling at 1280 × 800. What the user opens or closes is kept in localStorage (this browser only, not
- * in the URL: it is the page's layout, not the scene's state).
+ * The side column's layout: which panel folders are open, whether the shader view is, and how the column's height
+ * is split between the panel and the shader view. The folders open on a first visit are the ones used on every
+ * visit (the View folder's scene, renderer and export, the Material folder, the Lights folder's "add light"); the
+ * others (Sphere, Camera, Trackball, each light) start collapsed. What the user changes is kept in localStorage
+ * (this browser only, not in the URL: it is the page's layout, not the scene's state).
  */
 import { useEffect } from 'react';
 
@@ -19,21 +19,30 @@ const FOLDERS = new Set<string>();
 interface Remembered {
   folders: Record<string, boolean>;
   shaderCollapsed: boolean;
+  /** The panel's share of the column's height when the shader view is open, percent. */
+  panelShare: number;
 }
+
+/** The panel's share of the column by default, and the range the splitter allows, percent. */
+export const PANEL_SHARE = { default: 55, min: 20, max: 85 } as const;
 
 function load(): Remembered {
   try {
     const value: unknown = JSON.parse(window.localStorage.getItem(STORAGE_KEY) ?? '{}');
-    const { folders, shaderCollapsed } = (value ?? {}) as Partial<Remembered>;
+    const { folders, shaderCollapsed, panelShare } = (value ?? {}) as Partial<Remembered>;
     const clean = Object.fromEntries(
       Object.entries(typeof folders === 'object' && folders !== null ? folders : {}).filter(
         ([, collapsed]) => typeof collapsed === 'boolean',
       ),
     );
-    return { folders: clean, shaderCollapsed: shaderCollapsed === true };
+    const share =
+      typeof panelShare === 'number' && panelShare >= PANEL_SHARE.min && panelShare <= PANEL_SHARE.max
+        ? panelShare
+        : PANEL_SHARE.default;
+    return { folders: clean, shaderCollapsed: shaderCollapsed === true, panelShare: share };
   } catch {
     // Malformed or storage disabled: the defaults.
-    return { folders: {}, shaderCollapsed: false };
+    return { folders: {}, shaderCollapsed: false, panelShare: PANEL_SHARE.default };
   }
 }
 
@@ -56,6 +65,18 @@ export function folderCollapsed(name: string): boolean {
 /** Whether the shader view opens collapsed (as the user left it; open by default). */
 export function shaderCollapsed(): boolean {
   return load().shaderCollapsed;
+}
+
+/** The panel's share of the column (percent) as the user left it, else {@link PANEL_SHARE}'s default. */
+export function panelShare(): number {
+  return load().panelShare;
+}
+
+/** Remembers the panel's share of the column, percent (kept within {@link PANEL_SHARE}'s range). */
+export function rememberPanelShare(share: number) {
+  save((r) => {
+    r.panelShare = Math.min(PANEL_SHARE.max, Math.max(PANEL_SHARE.min, share));
+  });
 }
 
 /** Remembers the shader view's state. */

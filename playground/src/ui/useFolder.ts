@@ -1,5 +1,5 @@
 import { useControls } from 'leva';
-import { useEffect, useRef } from 'react';
+import { useEffect, useRef, useState } from 'react';
 import type { PlaygroundState } from '../state/schema';
 import { folderCollapsed } from './panelLayout';
 
@@ -36,6 +36,8 @@ export function useFolder(
   extra: Extra = {},
   order = 0,
 ) {
+  // Read once: leva takes a folder's settings when it creates the folder.
+  const [collapsed] = useState(() => folderCollapsed(name));
   const fieldsRef = useRef(fields);
   fieldsRef.current = fields;
   const updateRef = useRef(update);
@@ -63,7 +65,7 @@ export function useFolder(
       ),
       ...extra,
     }),
-    { order, collapsed: folderCollapsed(name) },
+    { order, collapsed },
     [],
   );
   const text = JSON.stringify(values);
