@@ -1,15 +1,9 @@
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { MOVE_KEYS } from './engine/packages';
 import type { ShaderSource } from './engine/ShaderProbe';
 import { SCENE_LABELS } from './engine/scenes';
-import {
-  COMPARE_COLUMNS,
-  compareLayout,
-  type Layout,
-  type SectionErrors,
-  TURN_KEYS_TEXT,
-  Viewer,
-} from './engine/Viewer';
+import { MOVE_KEYS, TURN_KEYS_TEXT } from './engine/viewer/input';
+import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/layout';
+import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {

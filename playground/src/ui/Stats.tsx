@@ -1,5 +1,5 @@
 import { useEffect, useState } from 'react';
-import type { FrameStats } from '../engine/Viewer';
+import type { FrameStats } from '../engine/viewer/stats';
 
 /** A tiny subscription so per-frame stats re-render only this panel, never the controls. */
 export class StatsFeed {

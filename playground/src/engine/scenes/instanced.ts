@@ -4,15 +4,16 @@
  * and kd (the highlight keeps the light's colour). Deterministic: positions, sizes and colours follow the
  * instance's index.
  */
+import { ShadingMaterial } from '@shadelab/material';
 import * as THREE from 'three';
-import { createMaterial, createSphere } from '../packages';
+import { createSphere } from '../meshes';
 import { type DemoScene, disposeParts, scenePart } from './types';
 
 /** Instances per row and column, and rows of depth. */
 export const FIELD = { columns: 5, rows: 4, layers: 2 } as const;
 
 export function createInstancedScene(): DemoScene {
-  const material = createMaterial();
+  const material = new ShadingMaterial();
   const geometry = createSphere('icosahedron', 3, 'phong', 1);
   const count = FIELD.columns * FIELD.rows * FIELD.layers;
   const mesh = new THREE.InstancedMesh(geometry, material, count);

@@ -4,8 +4,9 @@
  * sphere (its cut shows the inside, lit with the flipped normal: DoubleSide), a box, a torus and spheres
  * going back into the fog. The lights and the clipping plane are fixed: the picture is the same on every run.
  */
+import { ShadingMaterial } from '@shadelab/material';
 import * as THREE from 'three';
-import { createMaterial, createSphere } from '../packages';
+import { createSphere } from '../meshes';
 import { type DemoScene, disposeParts, type ScenePart, scenePart } from './types';
 
 /** The fog (colour also the background), linear from `near` to `far` (world units from the eye). */
@@ -23,11 +24,11 @@ export function createLightsScene(): DemoScene {
   root.rotation.x = 0.38;
 
   const plane = new THREE.Plane(new THREE.Vector3(...CLIP_PLANE.normal).normalize(), CLIP_PLANE.constant);
-  const solid = createMaterial();
-  const clipped = createMaterial();
+  const solid = new ShadingMaterial();
+  const clipped = new ShadingMaterial();
   clipped.clippingPlanes = [plane];
   clipped.side = THREE.DoubleSide;
-  const ground = createMaterial();
+  const ground = new ShadingMaterial();
 
   const parts: ScenePart[] = [];
   const add = (mesh: THREE.Mesh, material: typeof solid, x: number, y: number, z: number) => {

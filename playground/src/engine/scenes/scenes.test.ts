@@ -1,13 +1,12 @@
+import { ShadingMaterial } from '@shadelab/material';
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
 import { SCENES } from '../../state/schema';
-import { createMaterial } from '../packages';
 import { createScene, SCENE_LABELS, SPHERE_ONLY_INPUTS, sceneNote } from './index';
 import { FIELD } from './instanced';
 import { bumpNormalTexture, checkerTexture, TEXTURE } from './textured';
 
 const NAMES = ['instanced', 'skinned', 'textured', 'lights'] as const;
-const ShadingMaterial = createMaterial().constructor;
 
 describe('the picker scenes', () => {
   it('label every scene and say what applies', () => {

@@ -4,8 +4,8 @@
  * surface is lit with its own normals). The pose and the morph weight are constants: the picture is the same
  * on every run.
  */
+import { ShadingMaterial } from '@shadelab/material';
 import * as THREE from 'three';
-import { createMaterial } from '../packages';
 import { type DemoScene, disposeParts, scenePart } from './types';
 
 /** The cylinder's height (model units) and its bones (evenly spaced along it). */
@@ -68,7 +68,7 @@ export function createSkinnedScene(): DemoScene {
     bones[b - 1]?.add(bone);
     bones.push(bone);
   }
-  const material = createMaterial();
+  const material = new ShadingMaterial();
   const mesh = new THREE.SkinnedMesh(geometry, material);
   mesh.name = 'skinned mesh';
   mesh.add(bones[0]!);

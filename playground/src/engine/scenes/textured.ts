@@ -4,8 +4,8 @@
  * run. They are set as three's `map` and `normalMap`, as on a MeshPhongMaterial. Flat shading draws a triangle
  * soup of the knot (`toNonIndexed`), which keeps the uv the textures need.
  */
+import { ShadingMaterial } from '@shadelab/material';
 import * as THREE from 'three';
-import { createMaterial } from '../packages';
 import { type DemoScene, disposeParts, scenePart } from './types';
 
 /** Texture size (texels per side) and repeats over the knot's uv. */
@@ -75,7 +75,7 @@ function finish(texture: THREE.DataTexture, colorSpace: THREE.ColorSpace): THREE
 export function createTexturedScene(): DemoScene {
   const map = checkerTexture();
   const normalMap = bumpNormalTexture();
-  const material = createMaterial();
+  const material = new ShadingMaterial();
   // three's property names, as on MeshPhongMaterial.
   Object.assign(material, { map, normalMap });
   const geometry = new THREE.TorusKnotGeometry(1, 0.36, 200, 24);

@@ -3,19 +3,20 @@
  * a ShadingMaterial (which take the panel's material options and lights), and what the scene sets on the
  * renderer while it is shown (fog, background, clipping).
  */
+import { flatShadingGeometry, type ShadingMaterial } from '@shadelab/material';
 import type * as THREE from 'three';
 import type { Shading } from '../../state/schema';
-import { createOutlineMesh, flatGeometry, type Material } from '../packages';
+import { createOutlineMesh, type Outline } from '../meshes';
 
 /** One mesh drawn with a ShadingMaterial, its geometry for each shading, and its cel outline. */
 export interface ScenePart {
   readonly mesh: THREE.Mesh;
-  readonly material: Material;
+  readonly material: ShadingMaterial;
   /**
    * The inverted-hull outline (a child of the mesh, of the mesh's kind: instanced or skinned as it is), on the
    * shared geometry whatever the shading; hidden until the viewer shows it.
    */
-  readonly outline: ReturnType<typeof createOutlineMesh>;
+  readonly outline: Outline;
   /** The geometry for `shading`: flat shading gets a prepared copy, made on first use and kept. */
   geometry(shading: Shading): THREE.BufferGeometry;
   dispose(): void;
@@ -39,8 +40,8 @@ export interface DemoScene {
  */
 export function scenePart(
   mesh: THREE.Mesh,
-  material: Material,
-  makeFlat: (shared: THREE.BufferGeometry) => THREE.BufferGeometry = flatGeometry,
+  material: ShadingMaterial,
+  makeFlat: (shared: THREE.BufferGeometry) => THREE.BufferGeometry = flatShadingGeometry,
 ): ScenePart {
   const shared = mesh.geometry;
   let flat: THREE.BufferGeometry | null = null;

@@ -1,21 +1,18 @@
 // @vitest-environment happy-dom
+import { Camera } from '@shadelab/camera';
+import { Trackball } from '@shadelab/trackball';
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
-import {
-  createCamera,
-  createTrackball,
-  setCameraPerspective,
-  setCameraView,
-  setTrackballRotation,
-} from './packages';
+import { setTrackballRotation } from './applyState';
 
 /** The lecture's camera, and a trackball on a pivot, listening on a 200 × 200 px element at (0, 0). */
 function scene() {
-  const camera = createCamera();
-  setCameraView(camera, [0, 0, 3], [0, 0, 0], [0, 1, 0]);
-  setCameraPerspective(camera, 90, 1, 0.1, 10);
+  const camera = new Camera({ fovy: 90, aspect: 1, near: 0.1, far: 10 });
+  camera.lookAt([0, 0, 3], [0, 0, 0], [0, 1, 0]);
+  camera.setPerspective(90, 1, 0.1, 10);
   const pivot = new THREE.Group();
-  const trackball = createTrackball(pivot, camera);
+  // The viewer's trackball: the package's defaults, turning the pivot in this camera's coordinates.
+  const trackball = new Trackball(pivot, null, { camera });
   const element = document.createElement('canvas');
   document.body.appendChild(element);
   element.getBoundingClientRect = () =>
@@ -76,7 +73,7 @@ describe('setTrackballRotation', () => {
   it('puts the object at any rotation through the trackball, from a turned camera too: its matrices agree', () => {
     const { camera, pivot, trackball, drag } = scene();
     drag([100, 100], [150, 120]);
-    setCameraView(camera, [2, 1, 2], [0, 0, 0], [0, 1, 0]);
+    camera.lookAt([2, 1, 2], [0, 0, 0], [0, 1, 0]);
     camera.updateMatrixWorld();
     setTrackballRotation(trackball, [0, 1.2, 0, 1.6]); // not normalised
     const q = new THREE.Quaternion(0, 0.6, 0, 0.8);

@@ -1,0 +1,295 @@
+/**
+ * The playground's renderer: owns the three.js objects, applies a {@link PlaygroundState} to them (only what
+ * changed), and renders on demand — after a change, trackball/camera events, a resize — never in a loop.
+ *
+ * Its parts: `sphere.ts` (the lecture's sphere), `pickedScene.ts` (the scene picker's scene), `lightRig.ts` (the
+ * lights and their gizmo), `input.ts` (trackball and keys), `applyState.ts` (state sections onto the packages'
+ * objects), `layout.ts` (the compare view's cells), `stats.ts` and `gpuTimer.ts` (the stats panel),
+ * `shaderEditing.ts` (the GLSL editor), and `../webgpu/` (WebGPU mode).
+ */
+import { Camera, CameraMovement, depthBufferParameters, depthModeOf } from '@shadelab/camera';
+import type { ShadingMaterial } from '@shadelab/material';
+import { Trackball } from '@shadelab/trackball';
+import * as THREE from 'three';
+import type { DepthMode, PlaygroundState } from '../../state/schema';
+import type { ShaderCheck, ShaderSource } from '../ShaderProbe';
+import { WebGPUSwitch } from '../webgpu/switch';
+import { applyMovement, applyProjection, applyTrackball } from './applyState';
+import { GpuTimer } from './gpuTimer';
+import type { ViewerEvents, ViewerHost } from './host';
+import { ViewInput } from './input';
+import { canvasSize, cellAspect, fitToCanvas, type Layout, viewLayout } from './layout';
+import { LightRig } from './lightRig';
+import { PickedScene } from './pickedScene';
+import { ShaderEditing } from './shaderEditing';
+import { cappedErrorScalePx, LectureSphere } from './sphere';
+import { FrameCounter, type FrameStats } from './stats';
+
+/** Errors by state section (`camera`, `sphere`, `lights`, …); a section with an error keeps its last good value. */
+export type SectionErrors = Partial<Record<string, string>>;
+
+/** Most GPU programs kept alive before the shading materials' cached variants are freed. */
+export const PROGRAM_CAP = 24;
+
+const _pixel = /* @__PURE__ */ new Uint8Array(4);
+
+export class Viewer implements ViewerHost {
+  readonly renderer: THREE.WebGLRenderer;
+  /** The depth mode the renderer really runs (without EXT_clip_control, 'reversed' falls back). */
+  readonly depth: DepthMode;
+  readonly scene = new THREE.Scene();
+  readonly camera: Camera;
+  /** The trackball turns this group; the sphere mesh sits in it. */
+  readonly pivot = new THREE.Group();
+  readonly trackball: Trackball;
+  readonly mover: CameraMovement;
+  /** The lecture's sphere mesh (WebGPU mode draws it too) and its material (the shader editor's). */
+  readonly mesh: THREE.Mesh;
+  readonly material: ShadingMaterial;
+  private readonly sphere: LectureSphere;
+  private readonly picked: PickedScene;
+  private readonly lightRig: LightRig;
+  private readonly input: ViewInput;
+  private readonly shader: ShaderEditing;
+  private readonly gpuTimer: GpuTimer;
+  private readonly frames: FrameCounter;
+  /** WebGPU mode (the `renderer` field): three/webgpu on a canvas over this one, loaded on first use. */
+  private readonly webgpu: WebGPUSwitch;
+  private applied: PlaygroundState | null = null;
+  /** The pending animation frame of {@link requestRender}; 0 when none. */
+  private scheduled = 0;
+  private disposed = false;
+  private contextLost = false;
+  private renderError = false;
+
+  /** @param depth - The renderer's depth mode; a different one needs a new canvas and Viewer. */
+  constructor(
+    readonly canvas: HTMLCanvasElement,
+    private readonly events: ViewerEvents = {},
+    depth: DepthMode = 'standard',
+  ) {
+    const params = { canvas, antialias: false, preserveDrawingBuffer: true, ...depthBufferParameters(depth) };
+    this.renderer = new THREE.WebGLRenderer(params);
+    this.depth = depthModeOf(this.renderer);
+    this.renderer.setPixelRatio(1);
+    this.renderer.info.autoReset = false;
+    this.scene.background = new THREE.Color(0x000000);
+    this.camera = new Camera({ fovy: 90, aspect: 1, near: 0.1, far: 10 });
+    this.scene.add(this.pivot);
+    // The gizmo listens first, so that grabbing a handle disables the trackball before it sees the press.
+    this.lightRig = new LightRig(this, events);
+    this.sphere = new LectureSphere(this.pivot);
+    this.mesh = this.sphere.mesh;
+    this.material = this.sphere.material;
+    this.trackball = new Trackball(this.pivot, null, { camera: this.camera });
+    this.mover = new CameraMovement(this.camera, null, { turnSpeed: 0 });
+    this.input = new ViewInput(this, events);
+    this.gpuTimer = new GpuTimer(this.renderer.getContext() as WebGL2RenderingContext, this.onGpuTime);
+    this.shader = new ShaderEditing(this);
+    this.picked = new PickedScene(this.pivot, this.scene, this.renderer);
+    this.frames = new FrameCounter(canvas, (ms) => this.events.onFirstFrame?.(ms));
+    canvas.addEventListener('webglcontextlost', this.onContextLost);
+    canvas.addEventListener('webglcontextrestored', this.onContextRestored);
+    this.webgpu = new WebGPUSwitch(this, events);
+  }
+
+  /** The state applied last; null before the first. */
+  get state(): PlaygroundState | null {
+    return this.applied;
+  }
+
+  /** Applies a state: rebuilds only what changed; returns an error message per section that was refused. */
+  apply(state: PlaygroundState): SectionErrors {
+    const previous = this.applied;
+    const errors: SectionErrors = {};
+    const changed = (key: keyof PlaygroundState) =>
+      !previous || JSON.stringify(previous[key]) !== JSON.stringify(state[key]);
+    const attempt = (section: string, run: () => void) => {
+      try {
+        run();
+      } catch (error) {
+        errors[section] = error instanceof Error ? error.message : String(error);
+      }
+    };
+    const { lights } = this.lightRig;
+    if (changed('lights')) attempt('lights', () => this.lightRig.apply(state.lights));
+    if (changed('material') || changed('lights')) {
+      attempt('material', () => {
+        this.sphere.applyMaterial(state.material, lights);
+        this.shader.capture();
+      });
+    }
+    this.applied = state;
+    if (changed('renderer')) this.webgpu.set(state.renderer === 'webgpu');
+    if (changed('scene')) attempt('scene', () => this.picked.pick(state.scene));
+    if (this.picked.active && (changed('scene') || changed('material') || changed('lights'))) {
+      attempt('material', () => this.picked.applyMaterial(state.material, lights));
+    }
+    attempt('model', () => this.sphere.applyScale(state.model.scale, state.sphere.radius));
+    attempt('camera', () => {
+      const c = state.camera;
+      this.camera.lookAt(c.eye, c.at, c.up);
+      applyProjection(this.camera, c, cellAspect(this.canvas, this.layout()));
+    });
+    attempt('sphere', () => this.sphere.applySphere(state, this.errorScalePx));
+    attempt('trackball', () => applyTrackball(this.trackball, state.trackball));
+    attempt('camera movement', () => applyMovement(this, state.camera, this.lightRig.gizmo.dragging));
+    this.requestRender();
+    return errors;
+  }
+
+  /** Puts the move gizmo on light `index` (0-based), or removes it (null). */
+  selectLight(index: number | null) {
+    this.lightRig.select(index);
+  }
+
+  /** The current variant's key and its generated GLSL (before any edit). */
+  getShaderSource(): ShaderSource & { key: string; defines: Record<string, unknown> } {
+    return this.shader.source();
+  }
+
+  /** Compiles an edited program off-screen first; only one that compiles and links replaces the rendered one. */
+  tryShader(edited: ShaderSource): ShaderCheck {
+    return this.shader.tryEdit(edited);
+  }
+
+  /** Drops the edit and goes back to the generated program. */
+  clearShaderOverride() {
+    this.shader.clear();
+  }
+
+  /** Renders at the next animation frame (coalesces many requests into one frame). */
+  requestRender() {
+    if (this.scheduled || this.disposed) return;
+    this.scheduled = requestAnimationFrame(() => {
+      this.scheduled = 0;
+      this.render();
+    });
+  }
+
+  /** Renders now. */
+  render() {
+    if (this.disposed || this.contextLost || !this.applied) return;
+    if (this.webgpu.active) return this.renderWebGPU();
+    const t0 = performance.now();
+    const { renderer, canvas } = this;
+    const { w, h } = fitToCanvas(renderer, canvas);
+    const gl = renderer.getContext() as WebGL2RenderingContext;
+    const query = this.gpuTimer.begin();
+    renderer.info.reset();
+    const layout = this.layout();
+    try {
+      applyProjection(this.camera, this.applied.camera, cellAspect(canvas, layout));
+    } catch {
+      // The camera section already reported the error; keep the last good projection.
+    }
+    try {
+      this.draw(this.applied, { layout, w, h });
+      if (this.renderError) this.events.onRenderError?.(null);
+      this.renderError = false;
+    } catch (error) {
+      // A throw from inside three (e.g. a material's onBeforeRender) must not stop the next frames.
+      this.renderError = true;
+      this.renderer.setScissorTest(false);
+      this.mesh.material = this.material;
+      this.events.onRenderError?.(error instanceof Error ? error.message : String(error));
+    }
+    this.gpuTimer.end(query);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, _pixel);
+    const cpuMs = performance.now() - t0;
+    this.frames.count();
+    this.capPrograms();
+    this.events.onStats?.(this.stats(cpuMs));
+    // The material settles some defines while drawing (analytic sphere normals, attenuation).
+    if (this.shader.variantChanged()) this.events.onVariant?.();
+  }
+
+  /** WebGPU mode's frame (webgpu/WebGPUView.ts): the same camera and scene on WebGPURenderer. */
+  private renderWebGPU() {
+    try {
+      applyProjection(this.camera, this.applied!.camera, cellAspect(this.canvas, this.layout()));
+      if (this.webgpu.render()) this.frames.count();
+      if (this.renderError) this.events.onRenderError?.(null);
+      this.renderError = false;
+    } catch (error) {
+      this.renderError = true;
+      this.events.onRenderError?.(error instanceof Error ? error.message : String(error));
+    }
+  }
+
+  /** Draws the picked scene or the sphere, in one view or the compare view's cells; records each draw. */
+  private draw(state: PlaygroundState, cells: { layout: Layout; w: number; h: number }) {
+    this.frames.drawn = [];
+    if (this.picked.active) {
+      this.sphere.hide();
+      this.picked.draw(this.camera, state.material, cells, this.frames.drawn);
+    } else {
+      this.sphere.draw(this.renderer, this.scene, this.camera, state, cells, this.frames.drawn);
+    }
+  }
+
+  /** The cells drawn: the compare view's (WebGL mode only: WebGPU mode draws the single view), or one. */
+  private layout(): Layout {
+    return viewLayout(this.canvas, this.applied?.view === 'compare' && !this.webgpu.active);
+  }
+
+  /** Pixels of silhouette error per unit of relative radial error (an upper bound), for automatic detail. */
+  private readonly errorScalePx = (): number => {
+    const { h } = canvasSize(this.canvas);
+    const { rows } = this.layout();
+    this.pivot.updateMatrixWorld(true);
+    return cappedErrorScalePx(this.camera, this.mesh.matrixWorld, h / rows, this.applied!.sphere.radius);
+  };
+
+  /**
+   * three keeps every program a material ever used until the material is disposed; a long session visiting
+   * many variants would grow without bound. Past {@link PROGRAM_CAP}, free them all: the next frame
+   * recompiles only the variants on screen.
+   */
+  private capPrograms() {
+    if ((this.renderer.info.programs?.length ?? 0) <= PROGRAM_CAP) return;
+    this.sphere.freePrograms();
+    this.picked.freePrograms();
+  }
+
+  private stats(cpuMs: number): FrameStats {
+    return this.frames.stats(this.renderer.info, {
+      cpuMs,
+      gpuMs: this.gpuTimer.gpuMs,
+      depth: this.depth,
+      detail: this.sphere.detail,
+      errorPx: this.applied && !this.picked.active ? this.sphere.errorPx(this.errorScalePx) : null,
+    });
+  }
+
+  private readonly onGpuTime = () => {
+    if (this.applied) this.events.onStats?.(this.stats(Number.NaN));
+  };
+  private readonly onContextLost = () => {
+    this.contextLost = true;
+    this.gpuTimer.contextLost();
+    this.events.onContext?.('lost');
+  };
+  private readonly onContextRestored = () => {
+    this.contextLost = false;
+    this.events.onContext?.('restored');
+    this.render();
+  };
+
+  dispose() {
+    this.disposed = true;
+    this.webgpu.dispose();
+    if (this.scheduled) cancelAnimationFrame(this.scheduled);
+    this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
+    this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
+    this.input.dispose();
+    this.lightRig.dispose();
+    this.trackball.dispose();
+    this.mover.dispose();
+    this.gpuTimer.dispose();
+    this.shader.dispose();
+    this.picked.leave();
+    this.sphere.dispose();
+    this.renderer.dispose();
+  }
+}
