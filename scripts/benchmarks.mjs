@@ -50,6 +50,11 @@ export const SOURCES = [
     command:
       'SHADELAB_FIRST_FRAME_JSON=bench/results/playground-first-frame.json CI=1 npx playwright test tests/playground-perf.spec.ts',
   },
+  {
+    name: 'playground-refactor',
+    writer: 'bench/playground-refactor.bench.mjs',
+    command: 'npm run bench -- playground-refactor',
+  },
   { name: 'reliability', writer: 'bench/reliability.bench.mjs', command: 'npm run bench -- reliability' },
   { name: 'rasterisers', writer: 'bench/rasterisers.bench.mjs', command: 'npm run bench -- rasterisers' },
 ];
@@ -968,8 +973,8 @@ function tarballs(r) {
   ];
 }
 
-/** @param {any} bundle @param {any} first @returns {string[]} */
-function playground(bundle, first) {
+/** @param {any} bundle @param {any} first @param {any} refactor @returns {string[]} */
+function playground(bundle, first, refactor) {
   const out = ['## Playground', ''];
   if (bundle) {
     const labels = /** @type {Record<string, string>} */ ({
@@ -1007,6 +1012,41 @@ function playground(bundle, first) {
       `Navigation to the first rendered frame of the built playground (\`${first.test}\`${vp ? `, ${vp.width}×${vp.height}` : ''}, ${first.loads} loads): median ${int(Math.round(median))} ms, fastest ${int(Math.round(min))} ms, first (cold) load ${int(Math.round(cold))} ms${samples ? ` (every load: ${samples.map((s) => int(Math.round(s))).join(', ')} ms)` : ''}.`,
     );
   } else out.push(missing('playground-first-frame'));
+  out.push('', '### Before and after issue 17', '');
+  if (refactor) {
+    const { before, after, ratios } = refactor;
+    const medianMs = (/** @type {number[]} */ xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+    const within = (/** @type {number} */ r) => (r <= 1.1 ? 'yes' : '**no**');
+    out.push(
+      fromLine('playground-refactor', refactor),
+      '',
+      `Issue 17 (one table of fields, the viewer in small parts, the layout, the scene in React) against the playground of \`${before.commit}\`, the commit before it, both built from the packages as checked out (only the playground's own change is measured); first frame at ${refactor.viewport.width}×${refactor.viewport.height}, ${refactor.rounds} loads of each build interleaved (ratio: the median of the per-round ratios). Target: after ≤ 1.10 × before.`,
+      '',
+      ...table(['', 'before', 'after', 'after / before', '≤ 1.10'], 'lrrrl', [
+        [
+          '`index.html` bundle, gzip -9',
+          kB(before.bundle.gzip),
+          kB(after.bundle.gzip),
+          ratios.bundleGzip.toFixed(3),
+          within(ratios.bundleGzip),
+        ],
+        [
+          '`index.html` bundle, raw',
+          kB(before.bundle.raw),
+          kB(after.bundle.raw),
+          ratios.bundleRaw.toFixed(3),
+          within(ratios.bundleRaw),
+        ],
+        [
+          'first frame, median',
+          `${int(Math.round(medianMs(before.firstFrameMs)))} ms`,
+          `${int(Math.round(medianMs(after.firstFrameMs)))} ms`,
+          ratios.firstFrame.toFixed(3),
+          within(ratios.firstFrame),
+        ],
+      ]),
+    );
+  } else out.push(missing('playground-refactor'));
   return out;
 }
 
@@ -1133,7 +1173,11 @@ export function renderBenchmarks(results) {
     section('trackball', trackball, 'Trackball'),
     section('size', sizes, 'Package sizes'),
     section('pack', tarballs, 'Tarballs'),
-    playground(results['playground-bundle'], results['playground-first-frame']),
+    playground(
+      results['playground-bundle'],
+      results['playground-first-frame'],
+      results['playground-refactor'],
+    ),
     section('reliability', reliability, 'Reliability'),
     section('rasterisers', rasterisers, 'Rasteriser variation'),
   ];

@@ -262,6 +262,25 @@ describe('renderBenchmarks: Material on WebGPURenderer', () => {
   });
 });
 
+describe('renderBenchmarks: the playground before and after issue 17', () => {
+  const refactor = {
+    meta: META,
+    before: { commit: '61841d5', bundle: { raw: 1_000_000, gzip: 300_000 }, firstFrameMs: [700, 720, 710] },
+    after: { commit: 'abcdef0', bundle: { raw: 1_050_000, gzip: 340_000 }, firstFrameMs: [730, 740, 735] },
+    viewport: { width: 800, height: 600 },
+    rounds: 3,
+    ratios: { bundleGzip: 340_000 / 300_000, bundleRaw: 1.05, firstFrame: 1.03 },
+  };
+
+  it('prints both builds, the ratios and the 10 % verdict of each row', () => {
+    const page = renderBenchmarks({ 'playground-refactor': refactor });
+    expect(page).toContain('### Before and after issue 17');
+    expect(page).toContain('| `index.html` bundle, gzip -9 | 300.0 kB | 340.0 kB | 1.133 | **no** |');
+    expect(page).toContain('| `index.html` bundle, raw | 1,000.0 kB | 1,050.0 kB | 1.050 | yes |');
+    expect(page).toContain('| first frame, median | 710 ms | 735 ms | 1.030 | yes |');
+  });
+});
+
 describe('formatting', () => {
   it('groups thousands with commas whatever the locale', () => {
     expect([int(0), int(999), int(1000), int(-1234567), int(1234.5)]).toEqual([
