@@ -1,7 +1,7 @@
 import { createHash } from 'node:crypto';
 import { expect, type Page, test } from '@playwright/test';
-import type { ProgramSource, SceneConfig, SceneInstance, SceneStats } from '../playground/harness/material';
 import { activeGlsl, withoutUseFog } from './glsl-active';
+import type { ProgramSource, SceneConfig, SceneInstance, SceneStats } from './harness/material';
 
 // ShadingMaterial in an ordinary three.js scene (issue 14, phase 1): three's program parameters (instancing,
 // batching, skinning, morph targets, fog, clipping, tone mapping, output colour space) through three's shader
@@ -498,6 +498,8 @@ for (const [name, light, object] of [
 test("0, 1 and 64 of each of three's light kinds compile in every shading; flipping them keeps programs bounded", async ({
   page,
 }) => {
+  // 45 programs compiled by SwiftShader: about 40 s on an idle machine, over a minute when it is shared.
+  test.setTimeout(180_000);
   await open(page);
   const errors: string[] = [];
   page.on('console', (m) => {
