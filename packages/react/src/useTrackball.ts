@@ -50,7 +50,8 @@ export function useTrackball(object?: Object3D | null, options: UseTrackballOpti
   } = options;
   const defaultCamera = useThree((state) => state.camera);
   const gl = useThree((state) => state.gl);
-  const connected = useThree((state) => state.events.connected) as HTMLElement | undefined;
+  // `false` until R3F's pointer events connect, and for good on a root made without them (`createRoot`).
+  const connected = useThree((state) => state.events.connected) as HTMLElement | false | undefined;
   const invalidate = useThree((state) => state.invalidate);
   const set = useThree((state) => state.set);
   const get = useThree((state) => state.get);
@@ -92,7 +93,7 @@ export function useTrackball(object?: Object3D | null, options: UseTrackballOpti
     enabled,
   ]);
 
-  const element = domElement ?? connected ?? gl.domElement;
+  const element = domElement ?? (connected || gl.domElement);
   useEffect(() => {
     trackball.connect(element);
     const onChange = () => invalidate();
