@@ -19,8 +19,13 @@ export default defineConfig(shadelabPreset(), {
     viewport: { width: 800, height: 600 },
   },
   webServer: {
-    // Each port builds into its own folder, so parallel runs (and `npm start`) never share an output.
-    command: `npx vite build playground --outDir dist-e2e-${port} --emptyOutDir --logLevel warn && npx vite preview playground --outDir dist-e2e-${port} --host 127.0.0.1 --port ${port} --strictPort`,
+    // Each port builds into its own folder, so parallel runs (and `npm start`) never share an output: the
+    // playground, then the tests' harness pages (tests/harness/, at /harness/<name>.html) beside it, one server.
+    command: [
+      `npx vite build playground --outDir dist-e2e-${port} --emptyOutDir --logLevel warn`,
+      `npx vite build --config tests/harness/vite.config.ts --outDir ../playground/dist-e2e-${port} --logLevel warn`,
+      `npx vite preview playground --outDir dist-e2e-${port} --host 127.0.0.1 --port ${port} --strictPort`,
+    ].join(' && '),
     url: `http://127.0.0.1:${port}`,
     reuseExistingServer: !process.env.CI,
     timeout: 180_000,

@@ -13,12 +13,13 @@
 //
 // A quick check of one cell: --modes standard --ratios 1e6 --distances 1e4 --per-decade 2 --no-timing
 //
-// Builds the playground harness pages into a temporary folder and serves them on its own port (lib/browser.mjs).
+// Builds the harness pages (tests/harness/camera.html among them) into a temporary folder and serves them on
+// its own port (lib/browser.mjs).
 import { arg, summarize, writeResults } from './lib/bench.mjs';
 import { openPlayground } from './lib/browser.mjs';
 
-/** @typedef {import('../playground/harness/camera').CameraDepthProbe} CameraDepthProbe (types window.cameraDepth) */
-/** @typedef {import('../playground/harness/camera').ProbeMode} ProbeMode */
+/** @typedef {import('../tests/harness/camera').CameraDepthProbe} CameraDepthProbe (types window.cameraDepth) */
+/** @typedef {import('../tests/harness/camera').ProbeMode} ProbeMode */
 
 /** @param {string} name @param {number[]} fallback */
 const numbers = (name, fallback) => {

@@ -14,7 +14,7 @@ const frames = Number(arg('--frames', '27'));
 const rounds = Number(arg('--rounds', '3'));
 const only = arg('--only', ''); // run only the variants whose name contains one of these (comma-separated)
 
-// 1. Build and serve the playground's harness pages, launch Chromium.
+// 1. Build and serve the harness pages (bench/harness/material-bench.html), launch Chromium.
 const playground = await openPlayground();
 const browser = playground.browser;
 const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
@@ -22,7 +22,7 @@ await page.goto(playground.url('harness/material-bench.html'));
 await page.waitForFunction(() => document.body.dataset.ready === '1');
 const hasTimer = await page.evaluate(() => window.materialBench.hasTimer);
 
-/** @type {Array<[string, import('../playground/harness/material-bench').BenchVariant]>} */
+/** @type {Array<[string, import('./harness/material-bench').BenchVariant]>} */
 const variants = [];
 for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {
   for (const lighting of /** @type {const} */ (['phong', 'blinn-phong'])) {
@@ -53,7 +53,7 @@ variants.push(['three MeshToonMaterial', { kind: 'three-toon' }]);
 // No lighting: what transforming and rasterising the sphere costs by itself.
 variants.push(['three MeshBasicMaterial (no lighting)', { kind: 'three-basic' }]);
 
-/** @typedef {import('../playground/harness/material-bench').BenchResult} BenchResult */
+/** @typedef {import('./harness/material-bench').BenchResult} BenchResult */
 /** @type {{ width: number, height: number, frames: number, rounds: number, gpuTimer: boolean, levels: Record<number, unknown> }} */
 const results = { width: 1280, height: 720, frames, rounds, gpuTimer: hasTimer, levels: {} };
 for (const level of levels) {

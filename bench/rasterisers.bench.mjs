@@ -1,6 +1,6 @@
 // How far pictures of one scene differ between rasterisers, the measurement behind @shadelab/playwright's
 // GPU_TOLERANCE (toMatchScreenshotAcrossGpus). A real GPU cannot be measured on a machine without one, so the
-// variation is measured where it can be, in headless Chromium (playground/harness/rasterisers.ts):
+// variation is measured where it can be, in headless Chromium (bench/harness/rasterisers.ts):
 // - ShadingMaterial through WebGLRenderer (SwiftShader) with MSAA off and on: the edges blend;
 // - the same with the camera shifted by 1/16 and 1/2 pixel: where another GPU's sub-pixel grid would put the
 //   vertices (OpenGL ES asks for at least 4 bits, 1/16 px) and, at 1/2 px, farther than any would;
@@ -45,8 +45,8 @@ function score(a, b) {
   };
 }
 
-/** The scenes: the kit's lecture scene (playground/harness/kitScene.ts) in each shading, at 320 × 240. */
-/** @type {{ name: string, edges: 'smooth' | 'hard', options: import('../playground/harness/kitScene').KitSceneOptions }[]} */
+/** The scenes: the kit's lecture scene (tests/harness/kitScene.ts) in each shading, at 320 × 240. */
+/** @type {{ name: string, edges: 'smooth' | 'hard', options: import('../tests/harness/kitScene').KitSceneOptions }[]} */
 const scenes = [
   { name: 'phong (icosahedron 6)', edges: 'smooth', options: { shading: 'phong' } },
   { name: 'gouraud (icosahedron 6)', edges: 'smooth', options: { shading: 'gouraud' } },
@@ -66,11 +66,11 @@ try {
   await page.goto(playground.url('harness/rasterisers.html'));
   await page.waitForFunction(() => document.body.dataset.ready === '1');
   for (const { name, edges, options } of scenes) {
-    /** @param {import('../playground/harness/kitScene').KitSceneOptions} extra */
+    /** @param {import('../tests/harness/kitScene').KitSceneOptions} extra */
     const draw = async (extra) =>
       image(await page.evaluate((o) => window.rasterisers.renderShading(o), { ...options, ...extra }));
     const base = await draw({});
-    /** @type {[string, boolean, import('../playground/harness/kitScene').KitSceneOptions][]} */
+    /** @type {[string, boolean, import('../tests/harness/kitScene').KitSceneOptions][]} */
     const variants = [
       ['picture shifted 1/16 px (x and y)', true, { shiftPx: [1 / 16, 1 / 16] }],
       ['picture shifted 1/2 px (x and y)', false, { shiftPx: [0.5, 0.5] }],
@@ -141,7 +141,7 @@ const tolerance = (edges) => ({
 const derived = { smooth: tolerance('smooth'), hardEdges: tolerance('hard') };
 console.log(`derived tolerances: ${JSON.stringify(derived)}`);
 writeResults({
-  note: 'Headless Chromium, SwiftShader (WebGL2 through ANGLE; WebGPU through Dawn on its Vulkan). 320 × 240, the lecture scene of playground/harness/kitScene.ts. A real GPU is not measured: the pairs are the variation that can be produced here.',
+  note: 'Headless Chromium, SwiftShader (WebGL2 through ANGLE; WebGPU through Dawn on its Vulkan). 320 × 240, the lecture scene of tests/harness/kitScene.ts. A real GPU is not measured: the pairs are the variation that can be produced here.',
   size: { width, height },
   ...notes,
   pairs,

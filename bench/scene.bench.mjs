@@ -80,7 +80,7 @@ async function bundleMaterialAt(rev) {
   }
 }
 
-/** @typedef {import('../playground/harness/scene-bench').TimedResult} TimedResult */
+/** @typedef {import('./harness/scene-bench').TimedResult} TimedResult */
 /** @typedef {{ frameMs: ReturnType<typeof summarize>, gpuMs: ReturnType<typeof summarize> | null, programs: number } | { error: string }} Row */
 
 /** Every timed frame of each variant, in the order of the cycles (for the paired ratios). */
@@ -92,7 +92,7 @@ const framesOf = new Map();
  * frame-time (and GPU-time) median, min, max. Frame k of every variant comes from the same cycle.
  * @param {import('@playwright/test').Page} page
  * @param {string} prefix a name for this group, which keeps its frames apart from other groups'
- * @param {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} variants
+ * @param {Array<[string, import('./harness/scene-bench').TimedScene]>} variants
  * @param {{ frames: number, rounds: number }} count frames per variant, in this many rounds
  * @returns {Promise<Record<string, Row>>}
  */
@@ -180,7 +180,7 @@ const results = {
 };
 
 if (only.includes('realistic')) {
-  /** @type {Array<[string, import('../playground/harness/scene-bench').RealisticVariant]>} */
+  /** @type {Array<[string, import('./harness/scene-bench').RealisticVariant]>} */
   const realisticVariants = [
     ['ShadingMaterial phong', { kind: 'shadelab', shading: 'phong' }],
     ['ShadingMaterial gouraud', { kind: 'shadelab', shading: 'gouraud' }],
@@ -196,7 +196,7 @@ if (only.includes('realistic')) {
     ['MeshPhongMaterial', { kind: 'three-phong' }],
     ['MeshLambertMaterial', { kind: 'three-lambert' }],
   ];
-  /** @type {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} */
+  /** @type {Array<[string, import('./harness/scene-bench').TimedScene]>} */
   const variants = realisticVariants.map(([name, variant]) => [name, { scene: 'realistic', variant }]);
   const rows = await roundRobin(page, 'realistic', variants, { frames, rounds });
   const vsPhong = (/** @type {string} */ name) => ratio('realistic', rows, name, 'MeshPhongMaterial');
@@ -239,7 +239,7 @@ if (only.includes('realistic')) {
 
 if (only.includes('lecture') && before) {
   const exported = await page.evaluate((code) => window.sceneBench.loadModule('before', code), before.code);
-  /** @type {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} */
+  /** @type {Array<[string, import('./harness/scene-bench').TimedScene]>} */
   const variants = [];
   for (const shading of /** @type {const} */ (['flat', 'gouraud', 'phong'])) {
     variants.push([`${shading} before`, { scene: 'lecture', variant: { build: 'before', shading } }]);
@@ -270,15 +270,15 @@ if (only.includes('lecture') && before) {
 }
 
 if (only.includes('flat')) {
-  /** @type {Array<import('../playground/harness/scene-bench').FlatMesh>} */
+  /** @type {Array<import('./harness/scene-bench').FlatMesh>} */
   const meshes = ['torus-knot', 'sphere-3', 'sphere-6'];
-  /** @type {Array<import('../playground/harness/scene-bench').FlatMode>} */
+  /** @type {Array<import('./harness/scene-bench').FlatMode>} */
   const modes = ['prepared', 'non-indexed', 'indexed'];
-  /** @type {Array<[string, import('../playground/harness/scene-bench').TimedScene]>} */
+  /** @type {Array<[string, import('./harness/scene-bench').TimedScene]>} */
   const variants = meshes.flatMap((mesh) =>
     modes.map(
       (mode) =>
-        /** @type {[string, import('../playground/harness/scene-bench').TimedScene]} */ ([
+        /** @type {[string, import('./harness/scene-bench').TimedScene]} */ ([
           `${mesh} ${mode}`,
           { scene: 'flat', mesh, mode },
         ]),

@@ -5,7 +5,7 @@
 // Scene: the lecture's (the material bench's level-6 sphere, one PhongLight; three's materials get the
 // equivalent AmbientLight + PointLight), and, for phong shading, three's lights (ambient, point, directional).
 // Every frame is drawn offscreen into a render target and followed by a 1×1 read-back (harness page:
-// playground/harness/webgpu-bench.ts). Variants run interleaved frame by frame (the page's cycle) in `rounds`
+// bench/harness/webgpu-bench.ts). Variants run interleaved frame by frame (the page's cycle) in `rounds`
 // rounds; ratios are the median of the ratios of frames from the same cycle (and of the medians).
 // Target: phong shading ≤ 1.0× MeshPhongNodeMaterial on the same backend.
 //
@@ -26,14 +26,14 @@ const rounds = Number(arg('--rounds', quick ? '2' : '8'));
 const width = Number(arg('--width', '1280'));
 const height = Number(arg('--height', '720'));
 const onlyBackends = arg('--backends', 'webgpu,webgl2,webgl').split(',');
-const experiments = /** @type {import('../playground/harness/webgpu-bench').Experiment[]} */ (
+const experiments = /** @type {import('./harness/webgpu-bench').Experiment[]} */ (
   arg('--experiments', '')
     .split(',')
     .filter((e) => e !== '')
 );
 
-/** @typedef {import('../playground/harness/webgpu-bench').BenchSpec} BenchSpec */
-/** @typedef {import('../playground/harness/webgpu-bench').Backend} Backend */
+/** @typedef {import('./harness/webgpu-bench').BenchSpec} BenchSpec */
+/** @typedef {import('./harness/webgpu-bench').Backend} Backend */
 /** @typedef {{ frameMs: ReturnType<typeof summarize>, gpuMs: ReturnType<typeof summarize> | null } | { error: string }} Row */
 
 /** @type {Array<[Backend, string]>} */

@@ -16,13 +16,6 @@ const pages = Object.fromEntries(
     .map((f) => [f === 'index.html' ? 'main' : f.slice(0, -5), here(`./${f}`)]),
 );
 
-// Test harness pages (playground/harness/*.html) are built beside the app for Playwright and the benchmarks.
-const harness = Object.fromEntries(
-  readdirSync(here('./harness'))
-    .filter((f) => f.endsWith('.html'))
-    .map((f) => [`harness/${f.slice(0, -5)}`, here(`./harness/${f}`)]),
-);
-
 export default defineConfig({
   root: fileURLToPath(new URL('.', import.meta.url)),
   plugins: [react()],
@@ -39,6 +32,6 @@ export default defineConfig({
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 2000,
-    rollupOptions: { input: { ...pages, ...harness } },
+    rollupOptions: { input: pages },
   },
 });

@@ -1,7 +1,7 @@
 import { expect, type Locator, test } from '@playwright/test';
-import type {} from '../playground/harness/camera';
+import type {} from './harness/camera';
 
-// playground/harness/camera.html: a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's Camera,
+// tests/harness/camera.html: a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's Camera,
 // moved by CameraMovement (moveSpeed 0.5, turnSpeed 0.005); window.cameraDepth probes depth order per mode.
 
 async function state(canvas: Locator) {

@@ -1,5 +1,5 @@
 import { expect, type Page, test } from '@playwright/test';
-import type { ShadowConfig, ShadowStats } from '../playground/harness/material-shadow';
+import type { ShadowConfig, ShadowStats } from './harness/material-shadow';
 
 // ShadingMaterial receiving three's shadows (issue 14): a ground plane in the shadow of an occluder, lit by one of
 // three's shadow-casting lights and an AmbientLight. Where the shadow falls is three's own MeshPhongMaterial's

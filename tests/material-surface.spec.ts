@@ -1,5 +1,5 @@
 import { expect, type Page, test } from '@playwright/test';
-import type { SceneConfig, SceneStats, SceneSurface } from '../playground/harness/material';
+import type { SceneConfig, SceneStats, SceneSurface } from './harness/material';
 
 // ShadingMaterial's surface (issue 14): three's map, vertexColors, emissive/emissiveMap, opacity/transparent,
 // alphaTest and alphaMap, by three's property names and chunks. Where and whether a pixel is drawn (alpha-tested

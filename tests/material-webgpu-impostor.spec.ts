@@ -1,7 +1,7 @@
 // SphereImpostorNodeMaterial (@shadelab/material/webgpu) under WebGPURenderer, on its WebGPU backend and its WebGL2
 // backend (forceWebGL), rendered offscreen into a RenderTarget and read back: against WebGLRenderer +
 // SphereImpostorMaterial in the same scene (coverage and colours), its depth against a mesh box and a subdivided
-// mesh sphere, and its bad-input errors against SphereImpostorMaterial's. Harness: playground/harness/webgpu-impostor.ts.
+// mesh sphere, and its bad-input errors against SphereImpostorMaterial's. Harness: tests/harness/webgpu-impostor.ts.
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 

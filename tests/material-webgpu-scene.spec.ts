@@ -3,10 +3,10 @@
 // kept; robustness). Oracles: for colours, the same scene through WebGLRenderer + ShadingMaterial (itself tested
 // against MeshPhongMaterial and shade()), within 2/255 away from triangle edges; for where and whether something
 // is drawn, three's MeshPhongNodeMaterial on the same WebGPURenderer; flat shading by derivatives against shade()
-// per fragment with the deformed face's normal. Harness: playground/harness/webgpu-scene.ts.
+// per fragment with the deformed face's normal. Harness: tests/harness/webgpu-scene.ts.
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
-import type { Diff, SceneCase, WebGPUSceneHarness } from '../playground/harness/webgpu-scene';
+import type { Diff, SceneCase, WebGPUSceneHarness } from './harness/webgpu-scene';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -279,7 +279,7 @@ interface LossReport {
   covered: number;
 }
 
-/** What the harness's deviceLoss() reports (playground/harness/webgpu-scene.ts). */
+/** What the harness's deviceLoss() reports (tests/harness/webgpu-scene.ts). */
 const lossMessage = /WebGPURenderer: (WebGPU|WebGL) Device Lost:/;
 
 test('WebGPU backend, device lost (GPU process crash, driver reset; simulated with the reason "unknown"): three calls renderer.onDeviceLost once with a clear message and stops drawing; a new WebGPURenderer draws the same scene with the same ShadingNodeMaterial to the same pixels', async ({

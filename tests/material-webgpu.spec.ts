@@ -2,7 +2,7 @@
 // with the kit's WebGPU flags: SwiftShader's adapter) and its WebGL2 backend (forceWebGL), rendered offscreen
 // into a RenderTarget and read back; every shading × lighting × cel variant against the CPU shade(), the same
 // scene against WebGLRenderer + ShadingMaterial, and the bad-input errors against ShadingMaterial's.
-// Harness: playground/harness/webgpu-material.ts.
+// Harness: tests/harness/webgpu-material.ts.
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 

@@ -1,5 +1,5 @@
 import { expect, type Page, test } from '@playwright/test';
-import type { CompareConfig, CompareStats } from '../playground/harness/material';
+import type { CompareConfig, CompareStats } from './harness/material';
 
 // GPU against CPU, pixel by pixel: the lecture's scene (tetrahedron sphere level 6, scale (2, 1, 2), camera
 // at (0, 0, 3) looking at the origin, fovy 90, light at (−5, 10, 20) with Ia 0.2, Id 1, Is 0.8) rendered

@@ -1,14 +1,14 @@
 // @shadelab/playwright's matchers on real canvases: toHaveRendered on a rendered, a blank, a context-less and a
 // lost canvas (with and without the kit's `test`, which records contexts); waitForFirstFrame; toMatchReference
 // on the lecture scene, passing and failing (with its attachments); toMatchScreenshotAcrossGpus against a
-// committed baseline. The scene comes from playground/harness/kitScene.ts, which the harness page draws and this
+// committed baseline. The scene comes from tests/harness/kitScene.ts, which the harness page draws and this
 // spec reads with referenceSceneOf, as a user's test reads the scene their app builds.
 
 import type { Page } from '@playwright/test';
 import { test as plainTest } from '@playwright/test';
 import { expect, referenceSceneOf, test } from '@shadelab/playwright/reference';
 import { waitForFirstFrame } from '@shadelab/playwright/test';
-import { buildKitScene, type KitSceneOptions } from '../playground/harness/kitScene';
+import { buildKitScene, type KitSceneOptions } from './harness/kitScene';
 
 /** Open the harness drawing `options`; resolves when it has drawn. */
 async function openKit(page: Page, options: KitSceneOptions = {}) {

@@ -1,5 +1,5 @@
 import { expect, type Page, test } from '@playwright/test';
-import type { LeakReport } from '../playground/harness/leaks';
+import type { LeakReport } from './harness/leaks';
 import { choose, frames, open, picture, settle, stateUrl, typeInto, urlState } from './playground-helpers';
 
 // Issue 8: a library that people embed must never take their page down. The playground's own spec already

@@ -2,8 +2,8 @@
 // view): colours within 1/255 over the interior (the bound is 2/255), the silhouette exact to half a
 // pixel, depth exact.
 import { expect, type Page, test } from '@playwright/test';
-import type { CompareResult } from '../playground/harness/tradeoff';
 import type { TradeOption, TradeView } from '../playground/src/tradeoff/tradeoffScene';
+import type { CompareResult } from './harness/tradeoff';
 
 async function open(page: Page) {
   await page.goto('/harness/tradeoff.html');

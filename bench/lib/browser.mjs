@@ -1,5 +1,6 @@
-// The browser side of the benchmarks: build the playground (its harness pages included) into a temporary
-// folder, serve it on a free loopback port and launch the same Chromium, with the same flags, as the tests.
+// The browser side of the benchmarks: build the playground and the harness pages (tests/harness/ and
+// bench/harness/, each at /harness/<name>.html) into one temporary folder, serve it on a free loopback port and
+// launch the same Chromium, with the same flags, as the tests.
 import { spawnSync } from 'node:child_process';
 import { createReadStream, existsSync, mkdtempSync, rmSync, statSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -21,17 +22,24 @@ const types = {
 };
 
 /**
- * Build and serve the playground, and launch Chromium. Call `close()` when done.
+ * Build and serve the playground and the harness pages, and launch Chromium. Call `close()` when done.
  * @returns {Promise<{ url: (path: string) => string, browser: import('@playwright/test').Browser, close: () => Promise<void> }>}
  */
 export async function openPlayground() {
   const outDir = mkdtempSync(join(tmpdir(), 'shadelab-bench-'));
-  const build = spawnSync(
-    'npx',
-    ['vite', 'build', 'playground', '--outDir', outDir, '--emptyOutDir', '--logLevel', 'warn'],
-    { cwd: root, stdio: 'inherit' },
-  );
-  if (build.status !== 0) throw new Error(`vite build of the playground failed (exit ${build.status})`);
+  /** @type {[string, string[]][]} */
+  const builds = [
+    ['the playground', ['playground', '--emptyOutDir']],
+    ['tests/harness', ['--config', 'tests/harness/vite.config.ts']],
+    ['bench/harness', ['--config', 'bench/harness/vite.config.ts']],
+  ];
+  for (const [what, args] of builds) {
+    const build = spawnSync('npx', ['vite', 'build', ...args, '--outDir', outDir, '--logLevel', 'warn'], {
+      cwd: root,
+      stdio: 'inherit',
+    });
+    if (build.status !== 0) throw new Error(`vite build of ${what} failed (exit ${build.status})`);
+  }
 
   const server = createServer((req, res) => {
     const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(

@@ -16,7 +16,7 @@ import {
   Scene,
   WebGPURenderer,
 } from 'three/webgpu';
-import { buildKitScene, type KitSceneOptions } from './kitScene';
+import { buildKitScene, type KitSceneOptions } from '../../tests/harness/kitScene';
 
 function base64(bytes: Uint8Array): string {
   let s = '';

@@ -35,7 +35,7 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { sphereGeometry } from './material-sphere';
+import { sphereGeometry } from '../../tests/harness/material-sphere';
 
 /** A variant of the realistic scene. */
 export interface RealisticVariant {

@@ -5,7 +5,12 @@
 import { SphereImpostor } from '@shadelab/material/impostor';
 import { compareToReference } from '@shadelab/reference';
 import { Mesh, MeshBasicMaterial, PlaneGeometry } from 'three';
-import { optionCost, type TradeOption, TradeoffScene, type TradeView } from '../src/tradeoff/tradeoffScene';
+import {
+  optionCost,
+  type TradeOption,
+  TradeoffScene,
+  type TradeView,
+} from '../../playground/src/tradeoff/tradeoffScene';
 
 const canvas = document.getElementById('viewport') as HTMLCanvasElement;
 const trade = new TradeoffScene(canvas);

@@ -16,7 +16,7 @@ import {
   Scene,
   WebGLRenderer,
 } from 'three';
-import { flatSphereGeometry, sphereGeometry } from './material-sphere';
+import { flatSphereGeometry, sphereGeometry } from '../../tests/harness/material-sphere';
 
 export interface BenchVariant {
   /** 'shadelab' or one of three's materials. */
