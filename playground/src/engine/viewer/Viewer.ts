@@ -7,10 +7,10 @@
  * objects), `layout.ts` (the compare view's cells), `stats.ts` and `gpuTimer.ts` (the stats panel),
  * `shaderEditing.ts` (the GLSL editor), and `../webgpu/` (WebGPU mode).
  */
-import { Camera, CameraMovement, depthBufferParameters, depthModeOf } from '@shadelab/camera';
+import { Camera, CameraMovement, depthModeOf } from '@shadelab/camera';
 import type { ShadingMaterial } from '@shadelab/material';
-import { Trackball } from '@shadelab/trackball';
-import * as THREE from 'three';
+import type { Trackball } from '@shadelab/trackball';
+import type * as THREE from 'three';
 import type { DepthMode, PlaygroundState } from '../../state/schema';
 import type { ShaderCheck, ShaderSource } from '../ShaderProbe';
 import { WebGPUSwitch } from '../webgpu/switch';
@@ -21,6 +21,7 @@ import { ViewInput } from './input';
 import { canvasSize, cellAspect, fitToCanvas, type Layout, viewLayout } from './layout';
 import { LightRig } from './lightRig';
 import { PickedScene } from './pickedScene';
+import { SceneRoot } from './sceneRoot';
 import { ShaderEditing } from './shaderEditing';
 import { cappedErrorScalePx, LectureSphere } from './sphere';
 import { FrameCounter, type FrameStats } from './stats';
@@ -37,15 +38,18 @@ export class Viewer implements ViewerHost {
   readonly renderer: THREE.WebGLRenderer;
   /** The depth mode the renderer really runs (without EXT_clip_control, 'reversed' falls back). */
   readonly depth: DepthMode;
-  readonly scene = new THREE.Scene();
+  /** R3F's scene (its background black, as the lecture's). */
+  readonly scene: THREE.Scene;
   readonly camera: Camera;
   /** The trackball turns this group; the sphere mesh sits in it. */
-  readonly pivot = new THREE.Group();
+  readonly pivot: THREE.Group;
   readonly trackball: Trackball;
   readonly mover: CameraMovement;
   /** The lecture's sphere mesh (WebGPU mode draws it too) and its material (the shader editor's). */
   readonly mesh: THREE.Mesh;
   readonly material: ShadingMaterial;
+  /** React Three Fiber's root: it made the renderer and mounted the sphere's JSX (sceneRoot.tsx). */
+  private readonly root: SceneRoot;
   private readonly sphere: LectureSphere;
   private readonly picked: PickedScene;
   private readonly lightRig: LightRig;
@@ -68,20 +72,20 @@ export class Viewer implements ViewerHost {
     private readonly events: ViewerEvents = {},
     depth: DepthMode = 'standard',
   ) {
-    const params = { canvas, antialias: false, preserveDrawingBuffer: true, ...depthBufferParameters(depth) };
-    this.renderer = new THREE.WebGLRenderer(params);
-    this.depth = depthModeOf(this.renderer);
-    this.renderer.setPixelRatio(1);
-    this.renderer.info.autoReset = false;
-    this.scene.background = new THREE.Color(0x000000);
     this.camera = new Camera({ fovy: 90, aspect: 1, near: 0.1, far: 10 });
-    this.scene.add(this.pivot);
+    this.root = new SceneRoot(canvas, depth, this.camera);
+    this.renderer = this.root.renderer;
+    this.scene = this.root.scene;
+    this.depth = depthModeOf(this.renderer);
+    this.renderer.info.autoReset = false;
     // The gizmo listens first, so that grabbing a handle disables the trackball before it sees the press.
     this.lightRig = new LightRig(this, events);
-    this.sphere = new LectureSphere(this.pivot);
+    const sphere = this.root.mountLectureSphere();
+    this.pivot = sphere.pivot;
+    this.trackball = sphere.trackball;
+    this.sphere = new LectureSphere(sphere);
     this.mesh = this.sphere.mesh;
     this.material = this.sphere.material;
-    this.trackball = new Trackball(this.pivot, null, { camera: this.camera });
     this.mover = new CameraMovement(this.camera, null, { turnSpeed: 0 });
     this.input = new ViewInput(this, events);
     this.gpuTimer = new GpuTimer(this.renderer.getContext() as WebGL2RenderingContext, this.onGpuTime);
@@ -125,7 +129,7 @@ export class Viewer implements ViewerHost {
     if (this.picked.active && (changed('scene') || changed('material') || changed('lights'))) {
       attempt('material', () => this.picked.applyMaterial(state.material, lights));
     }
-    attempt('model', () => this.sphere.applyScale(state.model.scale, state.sphere.radius));
+    this.root.setLectureSphere({ scale: state.model.scale, radius: state.sphere.radius });
     attempt('camera', () => {
       const c = state.camera;
       this.camera.lookAt(c.eye, c.at, c.up);
@@ -290,6 +294,6 @@ export class Viewer implements ViewerHost {
     this.shader.dispose();
     this.picked.leave();
     this.sphere.dispose();
-    this.renderer.dispose();
+    this.root.unmount();
   }
 }

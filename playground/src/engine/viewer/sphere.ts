@@ -4,40 +4,43 @@
  * silhouette error on screen with automatic detail).
  */
 import { type PhongLight, ShadingMaterial } from '@shadelab/material';
-import { SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
+import type { SphereImpostor } from '@shadelab/material/impostor';
 import {
   chooseSphereDetail,
   type SphereDetail,
   silhouetteErrorScalePx,
   sphereError,
 } from '@shadelab/sphere/detail';
-import * as THREE from 'three';
+import type * as THREE from 'three';
 import type { PlaygroundState, Shading, SphereBase } from '../../state/schema';
 import { createOutlineMesh, createSphere, type Outline, sphereKey } from '../meshes';
 import { applyLighting, applyMaterial, applyOutline, columnOptions } from './applyState';
 import { COMPARE_COLUMNS, drawCells, type Layout } from './layout';
+import type { LectureSphereObjects } from './sceneRoot';
 import type { Drawn } from './stats';
 
 export class LectureSphere {
   /** The panel's material (its program is the one the shader editor shows). */
-  readonly material = new ShadingMaterial();
+  readonly material: ShadingMaterial;
   /** One material per compare column. */
   readonly compareMaterials = COMPARE_COLUMNS.map(() => new ShadingMaterial());
-  readonly mesh = new THREE.Mesh(new THREE.BufferGeometry(), this.material);
-  readonly outline: Outline = createOutlineMesh(this.mesh);
+  readonly mesh: THREE.Mesh;
+  readonly outline: Outline;
   /** The ray-cast sphere, drawn instead of the mesh when `sphere.render` is 'impostor' (single view). */
-  readonly impostor = new SphereImpostor(new SphereImpostorMaterial());
+  readonly impostor: SphereImpostor;
   /** The level of detail automatic detail chose last; null when it is off. */
   detail: SphereDetail | null = null;
   /** Geometries of the current base, level and radius, by {@link sphereKey}. */
   private geometries = new Map<string, THREE.BufferGeometry>();
   private current: { base: SphereBase; level: number; radius: number } | null = null;
 
-  /** Puts the mesh (and the impostor, hidden until wanted) in `pivot`. */
-  constructor(pivot: THREE.Group) {
+  /** Takes the mesh, its material and the impostor that sceneRoot.tsx mounted, and gives the mesh its outline. */
+  constructor({ mesh, material, impostor }: Pick<LectureSphereObjects, 'mesh' | 'material' | 'impostor'>) {
+    this.mesh = mesh;
+    this.material = material;
+    this.impostor = impostor;
+    this.outline = createOutlineMesh(this.mesh);
     this.outline.visible = false;
-    this.impostor.visible = false;
-    pivot.add(this.mesh, this.impostor);
   }
 
   /** The panel's material options on the mesh's material, each column's and the impostor's, and the outline. */
@@ -48,12 +51,6 @@ export class LectureSphere {
     });
     applyLighting(this.impostor.material, options, lights);
     applyOutline(this.outline, options);
-  }
-
-  /** The model's scale on the mesh; on the impostor, a unit sphere, times the radius (the mesh's is in its geometry). */
-  applyScale([x, y, z]: readonly [number, number, number], radius: number): void {
-    this.mesh.scale.set(x, y, z);
-    this.impostor.scale.set(x * radius, y * radius, z * radius);
   }
 
   /**
@@ -104,7 +101,15 @@ export class LectureSphere {
     }
   }
 
-  /** Draws the sphere in the single view, or each compare column's in its cell; adds each draw to `drawn`. */
+  /**
+   * Draws the sphere in the single view, or each compare column's in its cell; adds each draw to `drawn`.
+   *
+   * Imperative: the compare view draws the one mesh four times in a frame, its material and geometry swapped
+   * between `renderer.render` calls under a scissor per cell, which no single set of JSX props can say. In R3F
+   * this is a `useFrame` that takes the render over (priority 1); it moves there once R3F drives the frame, which
+   * it does not yet (`frameloop: 'never'`, the viewer renders on demand): `advance` would also run
+   * `useTrackball`'s damping `useFrame` beside input.ts's own spin, turning a damped sphere twice per frame.
+   */
   draw(
     renderer: THREE.WebGLRenderer,
     scene: THREE.Scene,
