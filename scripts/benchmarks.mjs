@@ -980,12 +980,12 @@ function playground(bundle, first, refactor) {
     const labels = /** @type {Record<string, string>} */ ({
       three: 'three.js',
       app: 'React, react-dom, leva and the app',
-      shadelab: 'the @shadelab packages (their own chunks)',
+      shadelab: 'the @shadelab packages',
     });
     out.push(
       fromLine('playground-bundle', bundle),
       '',
-      'What `playground/index.html` loads at start (`vite build`: its entry chunk and every chunk it imports statically); kB = 1000 B:',
+      "What `playground/index.html` loads at start (`vite build`: its entry chunk and every chunk it imports statically); kB = 1000 B. The total is exact; the groups share each chunk by its modules' rendered (unminified) lengths, an estimate (the bundler puts three, the packages and the app in one chunk or several as the pages share them):",
       '',
       ...table(['what `index.html` loads', 'raw', 'gzip -9'], 'lrr', [
         ...Object.entries(bundle.groups).map(([k, g]) => [

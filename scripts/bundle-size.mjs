@@ -35,8 +35,8 @@ const kB = (/** @type {number} */ n) =>
 const lines = [
   '| what `index.html` loads (`vite build`) | raw | gzip -9 |',
   '| --- | ---: | ---: |',
-  ...Object.entries(LABELS).map(
-    ([k, label]) => `| ${label} | ${kB(totals[k].raw)} | ${kB(totals[k].gzip)} |`,
+  ...Object.entries(totals).map(
+    ([k, t]) => `| ${LABELS[/** @type {keyof typeof LABELS} */ (k)]} | ${kB(t.raw)} | ${kB(t.gzip)} |`,
   ),
   `| **total** | **${kB(all.raw)}** | **${kB(all.gzip)}** |`,
 ];

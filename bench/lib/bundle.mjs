@@ -1,6 +1,6 @@
 // What the playground's index.html loads at start, from a Vite build's output: its entry chunk and every chunk
-// it imports statically, in three groups (three.js; the @shadelab packages' own chunks; React, react-dom, leva and
-// the app), raw bytes and gzip -9. Used by scripts/bundle-size.mjs and bench/playground-refactor.bench.mjs.
+// it imports statically, raw bytes and gzip -9, split in three groups (three.js; the @shadelab packages; React,
+// react-dom, leva and the app) by the share of each chunk's rendered modules. Used by scripts/bundle-size.mjs and bench/playground-refactor.bench.mjs.
 import { sep } from 'node:path';
 import { gzipSync } from 'node:zlib';
 
@@ -11,7 +11,7 @@ import { gzipSync } from 'node:zlib';
 export const BUNDLE_GROUPS = /** @type {const} */ ({
   three: 'three.js',
   app: 'React, react-dom, leva and the app',
-  shadelab: 'the @shadelab packages (their own chunks)',
+  shadelab: 'the @shadelab packages',
 });
 
 /**
@@ -45,30 +45,47 @@ export function indexBundle(result, root) {
   const inThree = (/** @type {string} */ id) => /[\\/]node_modules[\\/]three[\\/]/.test(id);
   const inPackages = (/** @type {string} */ id) =>
     id.startsWith(`${root}packages${sep}`) || id.startsWith(`${root}packages/`);
-  // A chunk's group: all of its modules from three, all from packages/, or otherwise the app's. The bundler's own
-  // virtual helpers (ids starting with NUL: the module-preload polyfill, the runtime) do not decide it.
-  const group = (/** @type {Chunk} */ chunk) => {
-    const ids = Object.keys(chunk.modules).filter(
-      (id) => !id.startsWith('\0') && chunk.modules[id].renderedLength > 0,
-    );
-    if (ids.length > 0 && ids.every(inThree)) return 'three';
-    if (ids.length > 0 && ids.every(inPackages)) return 'shadelab';
-    return 'app';
-  };
-  const groups = /** @type {Record<keyof typeof BUNDLE_GROUPS, Group>} */ (
-    Object.fromEntries(Object.keys(BUNDLE_GROUPS).map((k) => [k, { raw: 0, gzip: 0, chunks: [] }]))
-  );
+  /** @param {string} id */
+  const groupOf = (id) => (inThree(id) ? 'three' : inPackages(id) ? 'shadelab' : 'app');
+  const empty = () => /** @type {Group} */ ({ raw: 0, gzip: 0, chunks: [] });
+  /** @type {Record<keyof typeof BUNDLE_GROUPS, Group>} */
+  const groups = { three: empty(), app: empty(), shadelab: empty() };
+  // A chunk's bytes (raw and gzip -9) go to the groups in proportion to its modules' rendered lengths: the
+  // bundler puts three, the packages and the app in one chunk or several as the entries share them. The
+  // bundler's own virtual helpers (ids starting with NUL: the module-preload polyfill, the runtime) count as
+  // the app's.
   for (const chunk of loaded) {
     const code = Buffer.from(chunk.code);
-    const g = groups[group(chunk)];
     const gzip = gzipSync(code, { level: 9 }).length;
-    g.raw += code.length;
-    g.gzip += gzip;
-    g.chunks.push({ file: chunk.fileName, raw: code.length, gzip });
+    const lengths = { three: 0, app: 0, shadelab: 0 };
+    for (const [id, m] of Object.entries(chunk.modules)) {
+      lengths[id.startsWith('\0') ? 'app' : groupOf(id)] += m.renderedLength;
+    }
+    const sum = lengths.three + lengths.app + lengths.shadelab;
+    for (const k of /** @type {(keyof typeof BUNDLE_GROUPS)[]} */ (['three', 'app', 'shadelab'])) {
+      const share = sum > 0 ? lengths[k] / sum : k === 'app' ? 1 : 0;
+      if (share === 0) continue;
+      const g = groups[k];
+      g.raw += code.length * share;
+      g.gzip += gzip * share;
+      g.chunks.push({
+        file: chunk.fileName,
+        raw: Math.round(code.length * share),
+        gzip: Math.round(gzip * share),
+      });
+    }
   }
-  const total = Object.values(groups).reduce((a, g) => ({ raw: a.raw + g.raw, gzip: a.gzip + g.gzip }), {
-    raw: 0,
-    gzip: 0,
-  });
+  for (const g of Object.values(groups)) {
+    g.raw = Math.round(g.raw);
+    g.gzip = Math.round(g.gzip);
+  }
+  // The total is the chunks' own bytes (the groups' rounded shares may differ from it by a byte or two).
+  const total = loaded.reduce(
+    (a, c) => {
+      const code = Buffer.from(c.code);
+      return { raw: a.raw + code.length, gzip: a.gzip + gzipSync(code, { level: 9 }).length };
+    },
+    { raw: 0, gzip: 0 },
+  );
   return { groups, total };
 }
