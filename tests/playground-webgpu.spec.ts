@@ -32,7 +32,8 @@ test.describe('the renderer switch, in a browser without WebGPU', () => {
     await expect(page.getByTestId('renderer-note')).toHaveCount(0);
 
     await toWebGPU(page);
-    expect(requests.some((u) => /three\.webgpu/.test(u))).toBe(true);
+    // The dynamic import: three/webgpu comes in the WebGPU view's chunk (or a chunk of its own), fetched now.
+    expect(requests.some((u) => /three\.webgpu|WebGPUView/.test(u))).toBe(true);
     await expect(page.getByTestId('renderer-backend')).toHaveText(FALLBACK);
     // The canvas drawn on is a WebGL2 one (a canvas with a WebGPU context would give null).
     expect(
