@@ -37,6 +37,7 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import { readCanvas } from './lib/pixels';
 
 // ── 1. the movement scene ────────────────────────────────────────────────────────────────────────────────────
 const canvas = document.getElementById('viewport') as HTMLCanvasElement;
@@ -246,11 +247,8 @@ const EYE = [2.5, 1.5, 3] as const;
 
 /** Render the sphere scene through `camera` and read every pixel back. */
 function pixels(camera: ThreeCamera): Uint8Array {
-  const out = new Uint8Array(COMPARE * COMPARE * 4);
   compareRenderer.render(sphereScene, camera);
-  const gl = compareRenderer.getContext();
-  gl.readPixels(0, 0, COMPARE, COMPARE, gl.RGBA, gl.UNSIGNED_BYTE, out);
-  return out;
+  return readCanvas(compareRenderer, COMPARE);
 }
 
 const differing = (a: Uint8Array, b: Uint8Array) => a.reduce((n, x, i) => n + (x === b[i] ? 0 : 1), 0);

@@ -42,6 +42,7 @@ import {
   Vector3,
   WebGLRenderer,
 } from 'three';
+import { readCanvas } from './lib/pixels';
 
 export interface ShadowConfig {
   shading: Shading;
@@ -150,10 +151,7 @@ function shadeLight(light: Light, visibility: number): ShadeThreeLight {
 
 function render(scene: Scene, camera: Camera, size: number): Uint8Array {
   renderer.render(scene, camera);
-  const gl = renderer.getContext();
-  const pixels = new Uint8Array(4 * size * size);
-  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-  return pixels;
+  return readCanvas(renderer, size);
 }
 
 function shadowCompare(config: ShadowConfig): ShadowStats {

@@ -74,6 +74,8 @@ import {
   Vector4,
   WebGLRenderer,
 } from 'three';
+import { deformNormal } from './lib/deform';
+import { hasRgb, maxRgbDelta, readCanvas } from './lib/pixels';
 import { flatSphereGeometry, sphereGeometry } from './material-sphere';
 
 /** What three keeps of a compiled program (`renderer.properties.get(material).currentProgram`). */
@@ -119,6 +121,8 @@ const canvas = document.getElementById('viewport') as HTMLCanvasElement;
 const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
 renderer.setPixelRatio(1);
 renderer.setClearColor(0x0000ff, 1); // pure blue: a NaN pixel (black) or a hole is never mistaken for it
+/** The clear colour in RGB: where nothing was drawn. */
+const CLEAR = [0, 0, 255] as const;
 
 function makeCamera(orthographic: boolean): Camera {
   const camera = orthographic
@@ -262,9 +266,7 @@ function render(config: CompareConfig): {
   scene.add(mesh, light);
   const camera = makeCamera(config.orthographic ?? false);
   renderer.render(scene, camera);
-  const gl = renderer.getContext();
-  const pixels = new Uint8Array(4 * size * size);
-  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  const pixels = readCanvas(renderer, size);
   return { pixels, mesh, material, light, camera, size };
 }
 
@@ -563,9 +565,7 @@ function sharedMaterial(): { identical: boolean; differing: number; covered: num
     const scene = new Scene();
     scene.add(left, right, light);
     renderer.render(scene, camera);
-    const gl = renderer.getContext();
-    const pixels = new Uint8Array(4 * size * size);
-    gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    const pixels = readCanvas(renderer, size);
     a.dispose();
     b.dispose();
     return pixels;
@@ -598,12 +598,9 @@ function outline(thickness: number): {
   mesh.scale.set(2, 1, 2);
   const scene = new Scene();
   scene.add(mesh, light);
-  const gl = renderer.getContext();
   const read = (): Uint8Array => {
     renderer.render(scene, camera);
-    const pixels = new Uint8Array(4 * size * size);
-    gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-    return pixels;
+    return readCanvas(renderer, size);
   };
   const before = read();
   const hull = createOutline(mesh, { thickness, color: '#000000' });
@@ -615,8 +612,8 @@ function outline(thickness: number): {
   let insideChanged = 0;
   let covered = 0;
   for (let i = 0; i < before.length; i += 4) {
-    const wasClear = before[i] === 0 && before[i + 1] === 0 && before[i + 2] === 255;
-    const isClear = after[i] === 0 && after[i + 1] === 0 && after[i + 2] === 255;
+    const wasClear = hasRgb(before, i, CLEAR);
+    const isClear = hasRgb(after, i, CLEAR);
     if (!wasClear) {
       covered++;
       if (before[i] !== after[i] || before[i + 1] !== after[i + 1] || before[i + 2] !== after[i + 2])
@@ -1301,10 +1298,7 @@ function sceneRenderer(config: SceneConfig, size: number): [WebGLRenderer, () =>
 
 function readPixels(r: WebGLRenderer, scene: Scene, camera: Camera, size: number): Uint8Array {
   r.render(scene, camera);
-  const gl = r.getContext();
-  const pixels = new Uint8Array(4 * size * size);
-  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-  return pixels;
+  return readCanvas(r, size);
 }
 
 /** three's sRGB transfer (linearToOutputTexel), not clamped above (three's fog mixes before the write clamps). */
@@ -1327,34 +1321,8 @@ function objectNormal(
 ): Vector3 {
   if (analytic) target.fromBufferAttribute(geometry.getAttribute('position'), vertex);
   else target.fromBufferAttribute(geometry.getAttribute('normal'), vertex);
-  const morphs = geometry.morphAttributes.normal;
-  const influences = object.morphTargetInfluences;
-  if (!analytic && morphs !== undefined && influences !== undefined) {
-    const sum = influences.reduce((a, b) => a + b, 0);
-    target.multiplyScalar(geometry.morphTargetsRelative ? 1 : 1 - sum);
-    const m = new Vector3();
-    morphs.forEach((attribute, i) => {
-      if (influences[i] !== 0)
-        target.addScaledVector(m.fromBufferAttribute(attribute, vertex), influences[i]);
-    });
-  }
-  const skinned = object as SkinnedMesh;
-  if (skinned.isSkinnedMesh) {
-    const index = geometry.getAttribute('skinIndex');
-    const weight = geometry.getAttribute('skinWeight');
-    const sum = new Matrix4().set(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
-    const bone = new Matrix4();
-    for (let j = 0; j < 4; j++) {
-      const w = weight.getComponent(vertex, j);
-      if (w === 0) continue;
-      const b = index.getComponent(vertex, j);
-      bone.multiplyMatrices(skinned.skeleton.bones[b].matrixWorld, skinned.skeleton.boneInverses[b]);
-      for (let e = 0; e < 16; e++) sum.elements[e] += w * bone.elements[e];
-    }
-    const skin = new Matrix4().multiplyMatrices(skinned.bindMatrixInverse, sum).multiply(skinned.bindMatrix);
-    target.transformDirection(skin).multiplyScalar(1); // direction (w = 0), then normalised by shade()
-  }
-  return target;
+  // A direction (w = 0), normalised by shade().
+  return deformNormal(object, geometry, vertex, target, !analytic);
 }
 
 /**
@@ -1407,7 +1375,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
   restore();
   oracle.dispose();
   oracleHull?.dispose();
-  const isClear = (p: Uint8Array, i: number) => p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 255;
+  const isClear = (p: Uint8Array, i: number) => hasRgb(p, 4 * i, CLEAR);
   const stats: SceneStats = {
     covered: 0,
     oracleCovered: 0,
@@ -1459,11 +1427,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
       if (a !== b) stats.coverageMismatches++;
       if (config.constant && a && b) {
         stats.oracleCompared++;
-        const err = Math.max(
-          Math.abs(ours[4 * i] - theirs[4 * i]),
-          Math.abs(ours[4 * i + 1] - theirs[4 * i + 1]),
-          Math.abs(ours[4 * i + 2] - theirs[4 * i + 2]),
-        );
+        const err = maxRgbDelta(ours, theirs, 4 * i);
         stats.oracleMaxError = Math.max(stats.oracleMaxError, err);
       }
     }

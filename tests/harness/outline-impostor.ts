@@ -39,6 +39,8 @@ import {
   Vector4,
   WebGLRenderer,
 } from 'three';
+import { deformNormal } from './lib/deform';
+import { hasRgb, readCanvas } from './lib/pixels';
 import { sphereGeometry } from './material-sphere';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#viewport');
@@ -46,6 +48,8 @@ if (canvas === null) throw new Error('no #viewport canvas');
 const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
 renderer.setPixelRatio(1);
 renderer.setClearColor(0x0000ff, 1);
+/** The clear colour in RGB: where nothing was drawn. */
+const CLEAR = [0, 0, 255] as const;
 
 let logRenderer: WebGLRenderer | null = null;
 
@@ -76,10 +80,7 @@ function makeCamera(size: number): PerspectiveCamera {
 function readPixels(scene: Scene, camera: Camera, size: number, r = renderer): Uint8Array {
   r.setSize(size, size, false);
   r.render(scene, camera);
-  const gl = r.getContext();
-  const pixels = new Uint8Array(4 * size * size);
-  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-  return pixels;
+  return readCanvas(r, size);
 }
 
 /** One instance: position, Euler rotation, scale. */
@@ -165,34 +166,7 @@ function deformedNormal(object: Mesh, vertex: number, deformed: boolean, target:
   const geometry = object.geometry;
   target.fromBufferAttribute(geometry.getAttribute('normal'), vertex);
   if (!deformed) return target;
-  const morphs = geometry.morphAttributes.normal;
-  const influences = object.morphTargetInfluences;
-  if (morphs !== undefined && influences !== undefined) {
-    const sum = influences.reduce((a, b) => a + b, 0);
-    target.multiplyScalar(geometry.morphTargetsRelative ? 1 : 1 - sum);
-    const m = new Vector3();
-    morphs.forEach((attribute, i) => {
-      if (influences[i] !== 0)
-        target.addScaledVector(m.fromBufferAttribute(attribute, vertex), influences[i]);
-    });
-  }
-  const skinned = object as SkinnedMesh;
-  if (skinned.isSkinnedMesh) {
-    const index = geometry.getAttribute('skinIndex');
-    const weight = geometry.getAttribute('skinWeight');
-    const sum = new Matrix4().set(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
-    const bone = new Matrix4();
-    for (let j = 0; j < 4; j++) {
-      const w = weight.getComponent(vertex, j);
-      if (w === 0) continue;
-      const b = index.getComponent(vertex, j);
-      bone.multiplyMatrices(skinned.skeleton.bones[b].matrixWorld, skinned.skeleton.boneInverses[b]);
-      for (let e = 0; e < 16; e++) sum.elements[e] += w * bone.elements[e];
-    }
-    const skin = new Matrix4().multiplyMatrices(skinned.bindMatrixInverse, sum).multiply(skinned.bindMatrix);
-    target.transformDirection(skin);
-  }
-  return target;
+  return deformNormal(object, geometry, vertex, target);
 }
 
 /**
@@ -233,7 +207,7 @@ function cpuHull(object: Mesh, matrices: Matrix4[], thickness: number, deformed:
 
 /** 0 clear (the blue background), 1 the outline (black), 2 the mesh. */
 function classify(p: Uint8Array, i: number): number {
-  if (p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 255) return 0;
+  if (hasRgb(p, 4 * i, CLEAR)) return 0;
   if (p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 0) return 1;
   return 2;
 }
@@ -531,7 +505,7 @@ function impostorCompare(config: ImpostorConfig): ImpostorStats {
   const floor = linearToSrgb8(
     m.ka.map((k: number, c: number) => k * 0.2 * Math.min(...tints.map((t) => t.toArray()[c]))),
   );
-  const isClear = (p: Uint8Array, i: number) => p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 255;
+  const isClear = (p: Uint8Array, i: number) => hasRgb(p, 4 * i, CLEAR);
   const stats: ImpostorStats = {
     covered: 0,
     oracleCovered: 0,

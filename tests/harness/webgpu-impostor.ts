@@ -24,9 +24,12 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { ClippingGroup, RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { ClippingGroup, RenderTarget } from 'three/webgpu';
+import { thrown } from './lib/errors';
+import { hasRgb, maxRgbDelta } from './lib/pixels';
+import { type Backend, backendFlags, type DepthMode, gpuRenderer, readTarget } from './lib/webgpu';
 
-export type Backend = 'webgpu' | 'webgl2';
+export type { Backend, DepthMode };
 export interface Variant {
   lighting: 'phong' | 'blinn-phong';
   celBands: number;
@@ -63,7 +66,7 @@ export type Scenario =
 export type SphereKind = 'impostor' | 'mesh';
 
 const SIZE = 112;
-const BACKGROUND = [0, 0, 255];
+const BACKGROUND = [0, 0, 255] as const;
 const meshSphere: BufferGeometry = new SubdivisionSphereGeometry({ level: 6, base: 'octahedron' });
 const box: BufferGeometry = new BoxGeometry(2.4, 0.5, 1.2);
 
@@ -181,26 +184,6 @@ function scene(gpu: boolean, v: Variant, scenario: Scenario, kind: SphereKind = 
   return { scene: s, camera };
 }
 
-/** The renderer's depth buffer: standard, logarithmic (`logarithmicDepthBuffer`) or reversed-Z (`reversedDepthBuffer`). */
-export type DepthMode = 'standard' | 'logarithmic' | 'reversed';
-
-const renderers = new Map<string, Promise<WebGPURenderer>>();
-function gpuRenderer(backend: Backend, mode: DepthMode = 'standard'): Promise<WebGPURenderer> {
-  const key = `${backend} ${mode}`;
-  let r = renderers.get(key);
-  if (r === undefined) {
-    const renderer = new WebGPURenderer({
-      antialias: false,
-      forceWebGL: backend === 'webgl2',
-      logarithmicDepthBuffer: mode === 'logarithmic',
-      reversedDepthBuffer: mode === 'reversed',
-    });
-    r = renderer.init().then(() => renderer);
-    renderers.set(key, r);
-  }
-  return r;
-}
-
 function dispose(s: Scene): void {
   s.traverse((o) => {
     if (o instanceof Mesh) (o.material as Material).dispose();
@@ -222,16 +205,10 @@ async function renderGpu(
   renderer.setClearColor(0x0000ff, 1);
   renderer.clear();
   renderer.render(setup.scene, setup.camera);
-  const data = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+  const pixels = await readTarget(renderer, target, SIZE);
   renderer.setRenderTarget(null);
   target.dispose();
   dispose(setup.scene);
-  // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL): flip to bottom-up.
-  const pixels = new Uint8Array(data);
-  if ((renderer.backend as unknown as { isWebGPUBackend?: boolean }).isWebGPUBackend === true) {
-    const row = 4 * SIZE;
-    for (let y = 0; y < SIZE; y++) pixels.set(data.subarray((SIZE - 1 - y) * row, (SIZE - y) * row), y * row);
-  }
   return pixels;
 }
 
@@ -253,10 +230,7 @@ function renderGl(v: Variant, scenario: Scenario): Uint8Array {
   return pixels;
 }
 
-const isBackground = (p: Uint8Array, i: number): boolean =>
-  p[i] === BACKGROUND[0] && p[i + 1] === BACKGROUND[1] && p[i + 2] === BACKGROUND[2];
-const delta = (a: Uint8Array, b: Uint8Array, i: number, j = i): number =>
-  Math.max(Math.abs(a[i] - b[j]), Math.abs(a[i + 1] - b[j + 1]), Math.abs(a[i + 2] - b[j + 2]));
+const isBackground = (p: Uint8Array, i: number): boolean => hasRgb(p, i, BACKGROUND);
 
 /**
  * A pixel on an edge of the reference picture: one of its 8 neighbours is background where it is not (or the
@@ -274,7 +248,7 @@ function edgeMask(p: Uint8Array, jump: number): boolean[] {
           const ny = y + dy;
           if (nx < 0 || ny < 0 || nx >= SIZE || ny >= SIZE) continue;
           const j = 4 * (ny * SIZE + nx);
-          edge = isBackground(p, i) !== isBackground(p, j) || delta(p, p, i, j) > jump;
+          edge = isBackground(p, i) !== isBackground(p, j) || maxRgbDelta(p, p, i, j) > jump;
         }
       }
       mask.push(edge);
@@ -315,7 +289,7 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
     }
     if (!ca || !cb || edges[k]) continue;
     compared++;
-    const d = delta(a, b, i);
+    const d = maxRgbDelta(a, b, i);
     if (d > maxDelta) {
       maxDelta = d;
       worst = {
@@ -353,8 +327,8 @@ async function scaleInvariance(backend: Backend, v: Variant, scenario: 'huge' | 
       coverageMismatch++;
       if (!edges[k]) coverageMismatchOffEdge++;
     }
-    if (ca && cb && !edges[k] && delta(a, b, i) > maxDelta) {
-      maxDelta = delta(a, b, i);
+    if (ca && cb && !edges[k] && maxRgbDelta(a, b, i) > maxDelta) {
+      maxDelta = maxRgbDelta(a, b, i);
       worst = {
         x: k % SIZE,
         y: Math.floor(k / SIZE),
@@ -412,9 +386,7 @@ async function occlusion(backend: Backend, v: Variant, mode: DepthMode = 'standa
 
 /** Which backend runs: proof that WebGPU is not a silent fallback to WebGL2. */
 async function backendInfo(backend: Backend) {
-  const renderer = await gpuRenderer(backend);
-  const b = renderer.backend as unknown as { isWebGPUBackend?: boolean; isWebGLBackend?: boolean };
-  return { isWebGPUBackend: b.isWebGPUBackend === true, isWebGLBackend: b.isWebGLBackend === true };
+  return backendFlags(await gpuRenderer(backend));
 }
 
 /** The message each impostor material throws for the same bad input. */
@@ -435,30 +407,22 @@ function errors() {
     { lights: [{}] },
     { lights: 'none' },
   ];
-  const message = (make: () => unknown): string => {
-    try {
-      make();
-      return 'no error';
-    } catch (e) {
-      return `${(e as Error).constructor.name}: ${(e as Error).message}`;
-    }
-  };
   const setters = (m: SphereImpostorNodeMaterial) => [
-    message(() => {
+    thrown(() => {
       m.shading = 'gouraud';
     }),
-    message(() => {
+    thrown(() => {
       m.lighting = 'x' as never;
     }),
   ];
   return {
     rows: cases.map((options) => ({
       options: JSON.stringify(options),
-      webgl: message(() => new SphereImpostorMaterial(options as never)),
-      node: message(() => new SphereImpostorNodeMaterial(options as never)),
+      webgl: thrown(() => new SphereImpostorMaterial(options as never)),
+      node: thrown(() => new SphereImpostorNodeMaterial(options as never)),
     })),
     setters: setters(new SphereImpostorNodeMaterial()),
-    valid: message(() => new SphereImpostorNodeMaterial({ lighting: 'blinn-phong', celBands: 4, ka: 0.3 })),
+    valid: thrown(() => new SphereImpostorNodeMaterial({ lighting: 'blinn-phong', celBands: 4, ka: 0.3 })),
   };
 }
 

@@ -42,7 +42,10 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { RenderTarget } from 'three/webgpu';
+import { thrown } from './lib/errors';
+import { hasRgb, maxRgbDelta } from './lib/pixels';
+import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 
 type Shading = 'flat' | 'gouraud' | 'phong';
 type Lighting = 'phong' | 'blinn-phong';
@@ -51,7 +54,7 @@ export interface Variant {
   lighting: Lighting;
   celBands: number;
 }
-export type Backend = 'webgpu' | 'webgl2';
+export type { Backend };
 /**
  * The lights and the geometry: 'lecture' (one PhongLight, the lecture's), 'attenuated' (a near coloured
  * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
@@ -79,6 +82,8 @@ export type Scenario =
   | 'doubleside';
 
 const SIZE = 128;
+/** The clear colour (0x0000ff) in RGB: where nothing was drawn. */
+const CLEAR = [0, 0, 255] as const;
 const geometry: BufferGeometry = new SubdivisionSphereGeometry({
   level: 3,
   base: 'tetrahedron',
@@ -230,17 +235,6 @@ function scene(
 
 const shininessOf = (scenario: Scenario): number => (scenario === 'attenuated' ? 0 : 32);
 
-const renderers = new Map<Backend, Promise<WebGPURenderer>>();
-function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
-  let r = renderers.get(backend);
-  if (r === undefined) {
-    const renderer = new WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl2' });
-    r = renderer.init().then(() => renderer);
-    renderers.set(backend, r);
-  }
-  return r;
-}
-
 /** Rows bottom-up, RGBA8, linear (a render target has no output colour space conversion). */
 async function renderGpu(backend: Backend, v: Variant, scenario: Scenario = 'lecture') {
   const renderer = await gpuRenderer(backend);
@@ -252,16 +246,10 @@ async function renderGpu(backend: Backend, v: Variant, scenario: Scenario = 'lec
   renderer.setClearColor(0x0000ff, 1);
   renderer.clear();
   renderer.render(setup.scene, setup.camera);
-  const data = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+  const pixels = await readTarget(renderer, target, SIZE);
   renderer.setRenderTarget(null);
   target.dispose();
   material.dispose();
-  // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL): flip to bottom-up.
-  const pixels = new Uint8Array(data);
-  if ((renderer.backend as unknown as { isWebGPUBackend?: boolean }).isWebGPUBackend === true) {
-    const row = 4 * SIZE;
-    for (let y = 0; y < SIZE; y++) pixels.set(data.subarray((SIZE - 1 - y) * row, (SIZE - y) * row), y * row);
-  }
   return { pixels, setup, material, backend: renderer.backend };
 }
 
@@ -287,19 +275,14 @@ function renderGl(v: Variant, scenario: Scenario = 'lecture'): Uint8Array {
 /** Which backend runs and what the adapter is: proof that WebGPU is not a silent fallback to WebGL2. */
 async function backendInfo(backend: Backend) {
   const renderer = await gpuRenderer(backend);
-  const b = renderer.backend as unknown as {
-    isWebGPUBackend?: boolean;
-    isWebGLBackend?: boolean;
-    device?: unknown;
-  };
+  const { device } = renderer.backend as unknown as { device?: unknown };
   const adapter =
     'gpu' in navigator
       ? await (navigator as unknown as { gpu: { requestAdapter(): Promise<unknown> } }).gpu.requestAdapter()
       : null;
   return {
-    isWebGPUBackend: b.isWebGPUBackend === true,
-    isWebGLBackend: b.isWebGLBackend === true,
-    device: typeof GPUDevice !== 'undefined' && b.device instanceof GPUDevice,
+    ...backendFlags(renderer),
+    device: typeof GPUDevice !== 'undefined' && device instanceof GPUDevice,
     adapter: adapter !== null,
   };
 }
@@ -426,7 +409,7 @@ async function compare(backend: Backend, v: Variant, scenario: Scenario = 'lectu
   for (let y = 0; y < SIZE; y++) {
     for (let x = 0; x < SIZE; x++) {
       const o = 4 * (y * SIZE + x);
-      const covered = !(pixels[o] === 0 && pixels[o + 1] === 0 && pixels[o + 2] === 255);
+      const covered = !hasRgb(pixels, o, CLEAR);
       raycaster.setFromCamera(new Vector2(((x + 0.5) / SIZE) * 2 - 1, ((y + 0.5) / SIZE) * 2 - 1), camera);
       const hit = raycaster.intersectObject(mesh)[0];
       if (covered) stats.covered++;
@@ -502,12 +485,12 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario = 
   let coverageMismatch = 0;
   let worst: unknown = null;
   for (let i = 0; i < a.length; i += 4) {
-    const ca = !(a[i] === 0 && a[i + 1] === 0 && a[i + 2] === 255);
-    const cb = !(b[i] === 0 && b[i + 1] === 0 && b[i + 2] === 255);
+    const ca = !hasRgb(a, i, CLEAR);
+    const cb = !hasRgb(b, i, CLEAR);
     if (ca !== cb) coverageMismatch++;
     if (!ca || !cb) continue;
     covered++;
-    const d = Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2]));
+    const d = maxRgbDelta(a, b, i);
     if (d > maxDelta) {
       maxDelta = d;
       const p = i / 4;
@@ -529,7 +512,7 @@ async function fogEffect(backend: Backend, v: Variant): Promise<number> {
   const { pixels: fogged } = await renderGpu(backend, v, 'fog');
   let changed = 0;
   for (let i = 0; i < clear.length; i += 4) {
-    const d = Math.max(...[0, 1, 2].map((k) => Math.abs(clear[i + k] - fogged[i + k])));
+    const d = maxRgbDelta(clear, fogged, i);
     if (d > 2) changed++;
   }
   return changed;
@@ -551,18 +534,10 @@ function errors() {
     { lights: [{}] },
     { lights: 'none' },
   ];
-  const message = (make: () => unknown): string => {
-    try {
-      make();
-      return 'no error';
-    } catch (e) {
-      return `${(e as Error).constructor.name}: ${(e as Error).message}`;
-    }
-  };
   return cases.map((options) => ({
     options: JSON.stringify(options),
-    webgl: message(() => new ShadingMaterial(options as never)),
-    node: message(() => new ShadingNodeMaterial(options as never)),
+    webgl: thrown(() => new ShadingMaterial(options as never)),
+    node: thrown(() => new ShadingNodeMaterial(options as never)),
   }));
 }
 

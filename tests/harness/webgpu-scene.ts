@@ -48,8 +48,10 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { ClippingGroup, MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { maxRgbDelta } from './lib/pixels';
+import { type Backend, gpuRenderer, readTarget } from './lib/webgpu';
 
-export type Backend = 'webgpu' | 'webgl2';
+export type { Backend };
 /** The object: a sphere Mesh, a SkinnedMesh (bent cylinder), a morphed sphere, a BatchedMesh, an InstancedMesh. */
 export type Kind = 'mesh' | 'skinned' | 'morphed' | 'batched' | 'instanced';
 /**
@@ -288,20 +290,6 @@ function build(material: Material, c: SceneCase, api: 'gpu' | 'gl'): Setup {
 const nodeMaterial = (c: SceneCase) =>
   new ShadingNodeMaterial({ shading: c.shading, lighting: c.lighting ?? 'phong', celBands: c.celBands ?? 0 });
 
-const renderers = new Map<Backend, Promise<WebGPURenderer>>();
-function gpuRenderer(backend: Backend): Promise<WebGPURenderer> {
-  let r = renderers.get(backend);
-  if (r === undefined) {
-    const renderer = new WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl2' });
-    r = renderer.init().then(() => renderer);
-    renderers.set(backend, r);
-  }
-  return r;
-}
-
-const isWebGPU = (r: WebGPURenderer) =>
-  (r.backend as unknown as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
-
 /**
  * Draws `scene` into a new target and reads it back, rows bottom-up, RGBA8, cleared to (0, 0, 0, 0). With
  * `output`, through the renderer's output pass (tone mapping, output colour space) into the target as the output
@@ -318,15 +306,7 @@ async function drawGpu(r: WebGPURenderer, scene: Scene, camera: Camera, c: Scene
   } else r.setRenderTarget(target);
   try {
     r.render(scene, camera);
-    const data = (await r.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
-    // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL).
-    const pixels = new Uint8Array(data);
-    if (isWebGPU(r)) {
-      const row = 4 * SIZE;
-      for (let y = 0; y < SIZE; y++)
-        pixels.set(data.subarray((SIZE - 1 - y) * row, (SIZE - y) * row), y * row);
-    }
-    return pixels;
+    return await readTarget(r, target, SIZE);
   } finally {
     r.setOutputRenderTarget(null);
     r.setRenderTarget(null);
@@ -498,11 +478,7 @@ function diff(a: Uint8Array, b: Uint8Array, mask?: Uint8Array): Diff {
       if (mask !== undefined && mask[i] === 1) continue;
       d.compared++;
       const o = 4 * i;
-      const delta = Math.max(
-        Math.abs(a[o] - b[o]),
-        Math.abs(a[o + 1] - b[o + 1]),
-        Math.abs(a[o + 2] - b[o + 2]),
-      );
+      const delta = maxRgbDelta(a, b, o);
       if (delta > d.maxDelta) {
         d.maxDelta = delta;
         d.worst = { x, y, a: Array.from(a.subarray(o, o + 4)), b: Array.from(b.subarray(o, o + 4)) };
