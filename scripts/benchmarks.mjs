@@ -1020,7 +1020,7 @@ function playground(bundle, first, refactor) {
     out.push(
       fromLine('playground-refactor', refactor),
       '',
-      `Issue 17 (one table of fields, the viewer in small parts, the layout, the scene in React) against the playground of \`${before.commit}\`, the commit before it, both built from the packages as checked out (only the playground's own change is measured); first frame at ${refactor.viewport.width}×${refactor.viewport.height}, ${refactor.rounds} loads of each build interleaved (ratio: the median of the per-round ratios). Target: after ≤ 1.10 × before.`,
+      `Issue 17 (one table of fields, the viewer in small parts, the layout, the scene in React) against the playground of \`${before.commit}\`, the commit before it, both built from the packages as checked out and without the test pages (only the playground's own change is measured); first frame at ${refactor.viewport.width}×${refactor.viewport.height}, ${refactor.rounds} loads of each build interleaved (ratio: the median of the per-round ratios). Target: after ≤ 1.10 × before.`,
       '',
       ...table(['', 'before', 'after', 'after / before', '≤ 1.10'], 'lrrrl', [
         [
@@ -1045,6 +1045,7 @@ function playground(bundle, first, refactor) {
           within(ratios.firstFrame),
         ],
       ]),
+      ...(refactor.note ? ['', refactor.note] : []),
     );
   } else out.push(missing('playground-refactor'));
   return out;
