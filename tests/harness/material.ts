@@ -28,7 +28,6 @@ import {
   type BufferGeometry,
   type Camera,
   Color,
-  CylinderGeometry,
   DataTexture,
   DirectionalLight,
   DoubleSide,
@@ -37,7 +36,6 @@ import {
   Fog,
   FogExp2,
   HemisphereLight,
-  InstancedBufferAttribute,
   InstancedMesh,
   type Light,
   LinearSRGBColorSpace,
@@ -68,13 +66,12 @@ import {
   TangentSpaceNormalMap,
   TorusKnotGeometry,
   Triangle,
-  Uint16BufferAttribute,
   Vector2,
   Vector3,
   Vector4,
   WebGLRenderer,
 } from 'three';
-import { deformNormal } from './lib/deform';
+import { deformNormal, instanceSkinned, skinnedCylinder } from './lib/deform';
 import { hasRgb, maxRgbDelta, readCanvas } from './lib/pixels';
 import { flatSphereGeometry, sphereGeometry } from './material-sphere';
 
@@ -1027,24 +1024,6 @@ export interface SceneStats {
 const WHITE_LIGHT: [number, number, number] = [1, 1, 1];
 let logRenderer: WebGLRenderer | null = null;
 
-/** The bone-weighted cylinder: 3 high, radius 0.5, bones at y = −1.5 (root) and y = 0, blended over |y| < 0.5. */
-function skinnedCylinder(): BufferGeometry {
-  const g = new CylinderGeometry(0.5, 0.5, 3, 16, 12);
-  const position = g.getAttribute('position');
-  const index = new Uint16Array(4 * position.count);
-  const weight = new Float32Array(4 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const y = position.getY(i);
-    const t = Math.min(Math.max(y + 0.5, 0), 1);
-    const w = t * t * (3 - 2 * t);
-    index.set([0, 1, 0, 0], 4 * i);
-    weight.set([1 - w, w, 0, 0], 4 * i);
-  }
-  g.setAttribute('skinIndex', new Uint16BufferAttribute(index, 4));
-  g.setAttribute('skinWeight', new Float32BufferAttribute(weight, 4));
-  return g;
-}
-
 /** The sphere with one morph target at full influence: stretched to (1.6, 0.8, 1.2), normals to match. */
 function morphedSphere(level: number, indexed = false): BufferGeometry {
   const g = sphereGeometry(level, true, indexed).clone();
@@ -1113,7 +1092,7 @@ function buildScene(config: SceneConfig): SceneSetup {
   let geometry: BufferGeometry;
   const skinned = kind === 'skinned' || kind === 'instanced-skinned';
   if (skinned) {
-    const cylinder = skinnedCylinder();
+    const cylinder = skinnedCylinder(0.5, 16, 12);
     geometry = flat
       ? config.flatCorners
         ? flatShadingGeometry(cylinder)
@@ -1193,19 +1172,7 @@ function buildScene(config: SceneConfig): SceneSetup {
     mesh.bind(new Skeleton([root, joint]));
     joint.rotation.z = config.bone ?? 0.7;
     if (kind === 'instanced-skinned') {
-      // three has no InstancedSkinnedMesh class; its program parameters and chunks combine both when an
-      // object is a SkinnedMesh with an InstancedMesh's instanceMatrix (what such classes in apps do).
-      const attribute = new InstancedBufferAttribute(new Float32Array(16 * instances.length), 16);
-      instances.forEach((m, i) => {
-        m.toArray(attribute.array, 16 * i);
-      });
-      Object.assign(mesh, {
-        isInstancedMesh: true,
-        instanceMatrix: attribute,
-        instanceColor: null,
-        morphTexture: null,
-        count: instances.length,
-      });
+      instanceSkinned(mesh, instances);
     }
     object = mesh;
   } else {
@@ -1745,7 +1712,7 @@ function flipFeatures(flips: number): { before: number; after: number; max: numb
   instanced.setMatrixAt(1, new Matrix4().makeTranslation(1, 0, 0));
   const batched = new BatchedMesh(1, geometry.getAttribute('position').count, 0, material);
   batched.addInstance(batched.addGeometry(geometry));
-  const skinned = new SkinnedMesh(skinnedCylinder(), material);
+  const skinned = new SkinnedMesh(skinnedCylinder(0.5, 16, 12), material);
   const bone = new Bone();
   skinned.add(bone);
   skinned.bind(new Skeleton([bone, new Bone()]));

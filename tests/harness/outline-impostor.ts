@@ -14,11 +14,9 @@ import {
   BufferGeometry,
   type Camera,
   Color,
-  CylinderGeometry,
   Euler,
   Float32BufferAttribute,
   Fog,
-  InstancedBufferAttribute,
   InstancedMesh,
   Matrix3,
   Matrix4,
@@ -33,13 +31,12 @@ import {
   Skeleton,
   SkinnedMesh,
   SphereGeometry,
-  Uint16BufferAttribute,
   Vector2,
   Vector3,
   Vector4,
   WebGLRenderer,
 } from 'three';
-import { deformNormal } from './lib/deform';
+import { deformNormal, instanceSkinned, skinnedCylinder } from './lib/deform';
 import { hasRgb, readCanvas } from './lib/pixels';
 import { sphereGeometry } from './material-sphere';
 
@@ -124,23 +121,6 @@ export interface OutlineStats {
   mismatches: number;
   /** The same comparison against the hull of the undeformed, uninstanced geometry (the old outline). */
   staleMismatches: number;
-}
-
-/** The bone-weighted cylinder: 3 high, radius 0.5, bones at y = −1.5 (root) and y = 0, blended over |y| < 0.5. */
-function skinnedCylinder(): BufferGeometry {
-  const g = new CylinderGeometry(0.5, 0.5, 3, 24, 12);
-  const position = g.getAttribute('position');
-  const index = new Uint16Array(4 * position.count);
-  const weight = new Float32Array(4 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const t = Math.min(Math.max(position.getY(i) + 0.5, 0), 1);
-    const w = t * t * (3 - 2 * t);
-    index.set([0, 1, 0, 0], 4 * i);
-    weight.set([1 - w, w, 0, 0], 4 * i);
-  }
-  g.setAttribute('skinIndex', new Uint16BufferAttribute(index, 4));
-  g.setAttribute('skinWeight', new Float32BufferAttribute(weight, 4));
-  return g;
 }
 
 /** A smooth sphere with one morph target: stretched to (1.6, 0.8, 1.2), normals to match. */
@@ -244,7 +224,7 @@ function outlineCompare(config: OutlineConfig): OutlineStats {
   let object: Mesh;
   let matrices = [new Matrix4()];
   if (config.object === 'skinned' || config.object === 'instanced-skinned') {
-    const mesh = new SkinnedMesh(skinnedCylinder(), body);
+    const mesh = new SkinnedMesh(skinnedCylinder(0.5, 24, 12), body);
     const root = new Bone();
     root.position.set(0, -1.5, 0);
     const joint = new Bone();
@@ -255,20 +235,8 @@ function outlineCompare(config: OutlineConfig): OutlineStats {
     joint.rotation.z = config.bone ?? 0.9;
     mesh.rotation.y = 0.3;
     if (config.object === 'instanced-skinned') {
-      // three has no InstancedSkinnedMesh class; its program parameters and chunks combine both when a
-      // SkinnedMesh has an InstancedMesh's instanceMatrix (what such classes in apps do).
       matrices = specs.map(instanceMatrix);
-      const attribute = new InstancedBufferAttribute(new Float32Array(16 * matrices.length), 16);
-      matrices.forEach((m, i) => {
-        m.toArray(attribute.array, 16 * i);
-      });
-      Object.assign(mesh, {
-        isInstancedMesh: true,
-        instanceMatrix: attribute,
-        instanceColor: null,
-        morphTexture: null,
-        count: matrices.length,
-      });
+      instanceSkinned(mesh, matrices);
       mesh.frustumCulled = false;
     }
     object = mesh;

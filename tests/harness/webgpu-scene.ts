@@ -21,7 +21,6 @@ import {
   type BufferGeometry,
   type Camera,
   Color,
-  CylinderGeometry,
   DirectionalLight,
   Euler,
   Float32BufferAttribute,
@@ -41,13 +40,13 @@ import {
   Skeleton,
   SkinnedMesh,
   SRGBColorSpace,
-  Uint16BufferAttribute,
   Vector2,
   Vector3,
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
 import { ClippingGroup, MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { skinnedCylinder } from './lib/deform';
 import { maxRgbDelta } from './lib/pixels';
 import { type Backend, gpuRenderer, readTarget } from './lib/webgpu';
 
@@ -87,23 +86,6 @@ const P2 = new Plane(new Vector3(0, -1, 0.2).normalize(), 0.35);
 const sphere = (indexed: boolean) =>
   new SubdivisionSphereGeometry({ level: 2, base: 'tetrahedron', indexed });
 
-/** The bone-weighted cylinder: 3 high, radius 0.6, bones at y = −1.5 (root) and y = 0, blended over |y| < 0.5. */
-function skinnedCylinder(): BufferGeometry {
-  const g = new CylinderGeometry(0.6, 0.6, 3, 8, 6);
-  const position = g.getAttribute('position');
-  const index = new Uint16Array(4 * position.count);
-  const weight = new Float32Array(4 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const t = Math.min(Math.max(position.getY(i) + 0.5, 0), 1);
-    const w = t * t * (3 - 2 * t);
-    index.set([0, 1, 0, 0], 4 * i);
-    weight.set([1 - w, w, 0, 0], 4 * i);
-  }
-  g.setAttribute('skinIndex', new Uint16BufferAttribute(index, 4));
-  g.setAttribute('skinWeight', new Float32BufferAttribute(weight, 4));
-  return g;
-}
-
 /** The sphere with one morph target (positions stretched to (1.6, 0.8, 1.2), normals to match). */
 function morphed(source: BufferGeometry): BufferGeometry {
   const g = source.clone();
@@ -129,7 +111,7 @@ function morphed(source: BufferGeometry): BufferGeometry {
  * geometries between the two renderers.
  */
 function geometries() {
-  const cylinder = skinnedCylinder();
+  const cylinder = skinnedCylinder(0.6, 8, 6);
   return {
     sphereIndexed: sphere(true),
     sphereSoup: sphere(false),

@@ -1,6 +1,17 @@
-// The CPU side of three's vertex deformation that the harness pages' references share: a normal moved by the
-// morph targets and the skin as three's vertex chunks move it.
-import { type BufferGeometry, Matrix4, type Mesh, type SkinnedMesh, Vector3 } from 'three';
+// Three's vertex deformation as the harness pages share it: a normal moved by the morph targets and the skin as
+// three's vertex chunks move it (the CPU side of their references), the skinned cylinder they deform, and an
+// instanced SkinnedMesh.
+import {
+  type BufferGeometry,
+  CylinderGeometry,
+  Float32BufferAttribute,
+  InstancedBufferAttribute,
+  Matrix4,
+  type Mesh,
+  type SkinnedMesh,
+  Uint16BufferAttribute,
+  Vector3,
+} from 'three';
 
 /**
  * Moves the object-space normal `target` of `vertex` as three's vertex chunks do: by the morph targets' normals
@@ -42,4 +53,47 @@ export function deformNormal(
     target.transformDirection(skin);
   }
   return target;
+}
+
+/**
+ * The bone-weighted cylinder the skinning references use: 3 high, bones at y = −1.5 (root) and y = 0, the two
+ * blended by smoothstep over |y| < 0.5 (skinIndex Uint16, skinWeight float).
+ */
+export function skinnedCylinder(
+  radius: number,
+  radialSegments: number,
+  heightSegments: number,
+): BufferGeometry {
+  const g = new CylinderGeometry(radius, radius, 3, radialSegments, heightSegments);
+  const position = g.getAttribute('position');
+  const index = new Uint16Array(4 * position.count);
+  const weight = new Float32Array(4 * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const t = Math.min(Math.max(position.getY(i) + 0.5, 0), 1);
+    const w = t * t * (3 - 2 * t);
+    index.set([0, 1, 0, 0], 4 * i);
+    weight.set([1 - w, w, 0, 0], 4 * i);
+  }
+  g.setAttribute('skinIndex', new Uint16BufferAttribute(index, 4));
+  g.setAttribute('skinWeight', new Float32BufferAttribute(weight, 4));
+  return g;
+}
+
+/**
+ * Gives a SkinnedMesh an InstancedMesh's instance matrices. three has no InstancedSkinnedMesh class; its program
+ * parameters and chunks combine both when a SkinnedMesh has an InstancedMesh's instanceMatrix (what such classes
+ * in apps do).
+ */
+export function instanceSkinned(mesh: SkinnedMesh, matrices: readonly Matrix4[]): void {
+  const attribute = new InstancedBufferAttribute(new Float32Array(16 * matrices.length), 16);
+  matrices.forEach((m, i) => {
+    m.toArray(attribute.array, 16 * i);
+  });
+  Object.assign(mesh, {
+    isInstancedMesh: true,
+    instanceMatrix: attribute,
+    instanceColor: null,
+    morphTexture: null,
+    count: matrices.length,
+  });
 }
