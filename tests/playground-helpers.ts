@@ -71,9 +71,39 @@ async function drawn(page: Page, action: () => Promise<void>, draws = true): Pro
 }
 
 /**
+ * Waits until leva's panel rests. leva opens or closes a folder in two moves, a height transition and then a
+ * smooth scroll that brings an opened folder into view; a click during either can land on a neighbour that slid
+ * under the pointer between mousedown and mouseup (seen in CI: the press went to "remove light 2", the release
+ * to the button below it, and the click to neither). At rest: no folder's height set (leva sets it while it
+ * animates, and keeps only a closed folder's 0px) and nothing in the panel moved for five animation frames.
+ */
+export async function panelAtRest(page: Page): Promise<void> {
+  await page.locator('.panel').evaluate(
+    (panel) =>
+      new Promise<void>((resolve) => {
+        let last = '';
+        let still = 0;
+        const step = () => {
+          const elements = [...panel.querySelectorAll<HTMLElement>('*')];
+          const folders = elements.filter(
+            (e) => e.previousElementSibling?.firstElementChild instanceof SVGElement,
+          );
+          const animating = folders.some((e) => e.style.height !== '' && e.style.height !== '0px');
+          const at = elements.map((e) => e.getBoundingClientRect().y).join(' ');
+          still = !animating && at === last ? still + 1 : 0;
+          last = at;
+          if (still >= 5) resolve();
+          else requestAnimationFrame(step);
+        };
+        requestAnimationFrame(step);
+      }),
+  );
+}
+
+/**
  * Opens the leva folder that holds an element if it is collapsed (the panel's Sphere, Camera, Trackball and
- * light folders start collapsed), by a click on its title as a user would: a collapsed folder's content takes
- * no pointer events.
+ * light folders start collapsed), by a click on its title as a user would (a collapsed folder's content takes
+ * no pointer events), and waits for the panel to rest.
  */
 export async function openFolderOf(target: Locator): Promise<void> {
   const title = await target.evaluate((element) => {
@@ -87,6 +117,7 @@ export async function openFolderOf(target: Locator): Promise<void> {
   if (title === null) return;
   await target.page().locator('.panel').getByText(title, { exact: true }).click();
   await expect(target).toHaveCSS('pointer-events', 'auto');
+  await panelAtRest(target.page());
 }
 
 /** Types a value into a leva input (by its path id, e.g. `Material.shininess` or `Camera.eye.z`). */

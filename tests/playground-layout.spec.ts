@@ -1,5 +1,5 @@
 import { expect, type Page, test } from '@playwright/test';
-import { HIDE_OVERLAYS, open } from './playground-helpers';
+import { HIDE_OVERLAYS, open, panelAtRest } from './playground-helpers';
 
 // The playground's layout at the two common desktop sizes: canvas on the left, the side column (the leva panel
 // above, the shader view below) on the right; nothing wider than the window, no part overlapping another, each
@@ -102,12 +102,14 @@ test('the panel folders collapse and expand, and the page remembers them', async
     expect(await isOpen(page, name), `${name} open by default`).toBe(open);
     await title(page, name).click();
     await expect.poll(() => isOpen(page, name), `${name} toggled`).toBe(!open);
+    await panelAtRest(page);
   }
   await page.reload();
   for (const [name, open] of Object.entries(folders)) {
     expect(await isOpen(page, name), `${name} remembered`).toBe(!open);
     await title(page, name).click();
     await expect.poll(() => isOpen(page, name), `${name} toggled back`).toBe(open);
+    await panelAtRest(page);
   }
 });
 
