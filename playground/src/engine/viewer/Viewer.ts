@@ -1,6 +1,7 @@
 /**
  * The playground's renderer: owns the three.js objects, applies a {@link PlaygroundState} to them (only what
- * changed), and renders on demand — after a change, trackball/camera events, a resize — never in a loop.
+ * changed), and renders on demand — after a change, trackball/camera events, a resize, a damped spin's step —
+ * never in a loop. Each frame is React Three Fiber's ({@link SceneRoot.frame}).
  *
  * Its parts: `sphere.ts` (the lecture's sphere), `pickedScene.ts` (the scene picker's scene), `lightRig.ts` (the
  * lights and their gizmo), `input.ts` (trackball and keys), `applyState.ts` (state sections onto the packages'
@@ -90,7 +91,11 @@ export class Viewer implements ViewerHost {
     this.input = new ViewInput(this, events);
     this.gpuTimer = new GpuTimer(this.renderer.getContext() as WebGL2RenderingContext, this.onGpuTime);
     this.shader = new ShaderEditing(this);
-    this.picked = new PickedScene(this.pivot, this.scene, this.renderer);
+    this.picked = new PickedScene(
+      (picked) => this.root.setLectureSphere({ picked }),
+      this.scene,
+      this.renderer,
+    );
     this.frames = new FrameCounter(canvas, (ms) => this.events.onFirstFrame?.(ms));
     canvas.addEventListener('webglcontextlost', this.onContextLost);
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
@@ -126,6 +131,7 @@ export class Viewer implements ViewerHost {
     this.applied = state;
     if (changed('renderer')) this.webgpu.set(state.renderer === 'webgpu');
     if (changed('scene')) attempt('scene', () => this.picked.pick(state.scene));
+    if (this.picked.active) this.sphere.hide();
     if (this.picked.active && (changed('scene') || changed('material') || changed('lights'))) {
       attempt('material', () => this.picked.applyMaterial(state.material, lights));
     }
@@ -171,10 +177,17 @@ export class Viewer implements ViewerHost {
     });
   }
 
-  /** Renders now. */
+  /**
+   * Renders now: one R3F frame ({@link SceneRoot.frame}). Its `useFrame`s run first (`useTrackball` steps a
+   * damped spin, whose `change` asks for the next frame), then it draws with WebGL or, in WebGPU mode, WebGPU.
+   */
   render() {
     if (this.disposed || this.contextLost || !this.applied) return;
-    if (this.webgpu.active) return this.renderWebGPU();
+    this.root.frame(this.webgpu.active ? this.drawWebGPU : this.drawWebGL);
+  }
+
+  /** A WebGL frame: the view drawn, timed on the CPU and GPU, counted, its stats reported. */
+  private readonly drawWebGL = () => {
     const t0 = performance.now();
     const { renderer, canvas } = this;
     const { w, h } = fitToCanvas(renderer, canvas);
@@ -183,19 +196,22 @@ export class Viewer implements ViewerHost {
     renderer.info.reset();
     const layout = this.layout();
     try {
-      applyProjection(this.camera, this.applied.camera, cellAspect(canvas, layout));
+      applyProjection(this.camera, this.applied!.camera, cellAspect(canvas, layout));
     } catch {
       // The camera section already reported the error; keep the last good projection.
     }
     try {
-      this.draw(this.applied, { layout, w, h });
+      // The picked scene (the sphere is hidden then) or the sphere, in its cells; each draw recorded.
+      const [state, cells] = [this.applied!, { layout, w, h }];
+      this.frames.drawn = [];
+      if (this.picked.active) this.picked.draw(this.camera, state.material, cells, this.frames.drawn);
+      else this.sphere.draw(renderer, this.scene, this.camera, state, cells, this.frames.drawn);
       if (this.renderError) this.events.onRenderError?.(null);
       this.renderError = false;
     } catch (error) {
       // A throw from inside three (e.g. a material's onBeforeRender) must not stop the next frames.
       this.renderError = true;
       this.renderer.setScissorTest(false);
-      this.mesh.material = this.material;
       this.events.onRenderError?.(error instanceof Error ? error.message : String(error));
     }
     this.gpuTimer.end(query);
@@ -206,10 +222,10 @@ export class Viewer implements ViewerHost {
     this.events.onStats?.(this.stats(cpuMs));
     // The material settles some defines while drawing (analytic sphere normals, attenuation).
     if (this.shader.variantChanged()) this.events.onVariant?.();
-  }
+  };
 
   /** WebGPU mode's frame (webgpu/WebGPUView.ts): the same camera and scene on WebGPURenderer. */
-  private renderWebGPU() {
+  private readonly drawWebGPU = () => {
     try {
       applyProjection(this.camera, this.applied!.camera, cellAspect(this.canvas, this.layout()));
       if (this.webgpu.render()) this.frames.count();
@@ -219,18 +235,7 @@ export class Viewer implements ViewerHost {
       this.renderError = true;
       this.events.onRenderError?.(error instanceof Error ? error.message : String(error));
     }
-  }
-
-  /** Draws the picked scene or the sphere, in one view or the compare view's cells; records each draw. */
-  private draw(state: PlaygroundState, cells: { layout: Layout; w: number; h: number }) {
-    this.frames.drawn = [];
-    if (this.picked.active) {
-      this.sphere.hide();
-      this.picked.draw(this.camera, state.material, cells, this.frames.drawn);
-    } else {
-      this.sphere.draw(this.renderer, this.scene, this.camera, state, cells, this.frames.drawn);
-    }
-  }
+  };
 
   /** The cells drawn: the compare view's (WebGL mode only: WebGPU mode draws the single view), or one. */
   private layout(): Layout {

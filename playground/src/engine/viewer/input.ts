@@ -35,13 +35,10 @@ const _axis = /* @__PURE__ */ new THREE.Vector3();
 const _turn = /* @__PURE__ */ new THREE.Quaternion();
 
 export class ViewInput {
-  /** Reports the view once the wheel rests (a wheel zoom has no drag to end). */
+  /** Reports the view once the wheel or a damped spin rests (neither has a drag to end). */
   private viewTimer = 0;
-  /** The damped spin's animation frame; 0 when the trackball rests. */
-  private spinFrame = 0;
   /** A drag turns the camera's gaze: its view is reported when the drag ends. */
   private moverDragging = false;
-  private disposed = false;
 
   /** Listens to the host's trackball and camera movement, and connects them (and the turn keys) to its canvas. */
   constructor(
@@ -84,20 +81,13 @@ export class ViewInput {
   };
 
   /**
-   * A drag ended: report the view, and with damping on keep the trackball spinning, one `update` per
-   * animation frame until it rests (each step's `change` renders; the view is reported once it is quiet).
+   * A drag ended: report the view, and render once more. With damping on, that frame steps the spin
+   * (`useTrackball`'s `useFrame`, see sceneRoot.tsx), whose `change` asks for the next, until it rests; the view
+   * is reported again once it is quiet.
    */
   private readonly onTrackballEnd = () => {
     this.onViewEnd();
-    const { trackball } = this.host;
-    if (!trackball.enableDamping || this.spinFrame !== 0) return;
-    let last = performance.now();
-    const step = (now: number) => {
-      const dt = Math.min(0.1, Math.max(0, (now - last) / 1000));
-      last = now;
-      this.spinFrame = !this.disposed && trackball.update(dt) ? requestAnimationFrame(step) : 0;
-    };
-    this.spinFrame = requestAnimationFrame(step);
+    this.host.requestRender();
   };
 
   /** The movement keys translate the camera: `at` moves with the eye. */
@@ -148,12 +138,10 @@ export class ViewInput {
   };
 
   dispose(): void {
-    this.disposed = true;
     const { trackball, mover, canvas } = this.host;
     canvas.removeEventListener('keydown', this.onKeyDown);
     trackball.removeEventListener('change', this.onTrackballChange);
     trackball.removeEventListener('end', this.onTrackballEnd);
-    cancelAnimationFrame(this.spinFrame);
     mover.removeEventListener('change', this.onMoverChange);
     mover.removeEventListener('start', this.onMoverStart);
     mover.removeEventListener('end', this.onMoverEnd);

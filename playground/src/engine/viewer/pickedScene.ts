@@ -1,6 +1,7 @@
 /**
- * The scene picker's slot: the picked scene (built anew, in the pivot in place of the sphere) when it is not the
- * lecture's sphere, the panel's material on its parts, and its drawing in the single or the compare view.
+ * The scene picker's slot: the picked scene when it is not the lecture's sphere (built anew, and mounted under
+ * the trackball by sceneRoot.tsx's JSX), the panel's material on its parts, and its drawing in the single or the
+ * compare view.
  */
 import type { PhongLight } from '@shadelab/material';
 import type * as THREE from 'three';
@@ -14,8 +15,12 @@ export class PickedScene {
   /** The picked scene; null for the lecture's sphere. */
   private demo: { name: SceneName; scene: DemoScene } | null = null;
 
+  /**
+   * @param mount - Mounts a scene under the trackball, or none (null), at once (sceneRoot.tsx).
+   * @param scene - The three.js scene it is drawn in, with `renderer`.
+   */
   constructor(
-    private readonly pivot: THREE.Group,
+    private readonly mount: (scene: DemoScene | null) => void,
     private readonly scene: THREE.Scene,
     private readonly renderer: THREE.WebGLRenderer,
   ) {}
@@ -28,22 +33,15 @@ export class PickedScene {
   /** Swaps the picked scene in (built anew) and the previous one out (disposed); the sphere is none. */
   pick(name: SceneName): void {
     if (this.demo?.name === name) return;
-    const next = name === 'sphere' ? null : { name, scene: createScene(name) };
-    this.leave();
-    this.demo = next;
-    if (next) {
-      this.pivot.add(next.scene.root);
-      next.scene.enter?.(this.scene, this.renderer);
-    }
+    const previous = this.demo;
+    this.demo = name === 'sphere' ? null : { name, scene: createScene(name) };
+    this.mount(this.demo?.scene ?? null);
+    previous?.scene.dispose();
   }
 
   /** Takes the picked scene out and frees it. */
   leave(): void {
-    if (!this.demo) return;
-    this.demo.scene.leave?.(this.scene, this.renderer);
-    this.pivot.remove(this.demo.scene.root);
-    this.demo.scene.dispose();
-    this.demo = null;
+    this.pick('sphere');
   }
 
   /** The panel's material options and lights on every part (and its outline). */

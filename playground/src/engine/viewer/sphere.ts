@@ -1,9 +1,9 @@
 /**
- * The lecture's sphere: its mesh (with the panel's material, and one material per compare column), the cel
- * outline, the ray-cast impostor, and the subdivision geometries of the current base and level (chosen from the
- * silhouette error on screen with automatic detail).
+ * The lecture's sphere: its mesh (with the panel's material), the compare view's meshes (one per column, with
+ * that column's material), the cel outlines, the ray-cast impostor, and the subdivision geometries of the
+ * current base and level (chosen from the silhouette error on screen with automatic detail).
  */
-import { type PhongLight, ShadingMaterial } from '@shadelab/material';
+import type { PhongLight, ShadingMaterial } from '@shadelab/material';
 import type { SphereImpostor } from '@shadelab/material/impostor';
 import {
   chooseSphereDetail,
@@ -22,10 +22,12 @@ import type { Drawn } from './stats';
 export class LectureSphere {
   /** The panel's material (its program is the one the shader editor shows). */
   readonly material: ShadingMaterial;
-  /** One material per compare column. */
-  readonly compareMaterials = COMPARE_COLUMNS.map(() => new ShadingMaterial());
   readonly mesh: THREE.Mesh;
   readonly outline: Outline;
+  /** The compare view's meshes, one per column, each drawn in its own cell. */
+  readonly columns: LectureSphereObjects['columns'];
+  /** The outline of each cel column's mesh (null for the others). */
+  private readonly columnOutlines: (Outline | null)[];
   /** The ray-cast sphere, drawn instead of the mesh when `sphere.render` is 'impostor' (single view). */
   readonly impostor: SphereImpostor;
   /** The level of detail automatic detail chose last; null when it is off. */
@@ -34,23 +36,32 @@ export class LectureSphere {
   private geometries = new Map<string, THREE.BufferGeometry>();
   private current: { base: SphereBase; level: number; radius: number } | null = null;
 
-  /** Takes the mesh, its material and the impostor that sceneRoot.tsx mounted, and gives the mesh its outline. */
-  constructor({ mesh, material, impostor }: Pick<LectureSphereObjects, 'mesh' | 'material' | 'impostor'>) {
+  /** Takes the meshes, the material and the impostor that sceneRoot.tsx mounted, and gives the meshes outlines. */
+  constructor({
+    mesh,
+    material,
+    impostor,
+    columns,
+  }: Pick<LectureSphereObjects, 'mesh' | 'material' | 'impostor' | 'columns'>) {
     this.mesh = mesh;
     this.material = material;
     this.impostor = impostor;
+    this.columns = columns;
     this.outline = createOutlineMesh(this.mesh);
     this.outline.visible = false;
+    this.columnOutlines = COMPARE_COLUMNS.map((column, i) =>
+      column.cel ? createOutlineMesh(columns[i]!) : null,
+    );
   }
 
   /** The panel's material options on the mesh's material, each column's and the impostor's, and the outline. */
   applyMaterial(options: PlaygroundState['material'], lights: PhongLight[]): void {
     applyMaterial(this.material, options, lights);
     COMPARE_COLUMNS.forEach((column, i) => {
-      applyMaterial(this.compareMaterials[i]!, columnOptions(options, column), lights);
+      applyMaterial(this.columns[i]!.material, columnOptions(options, column), lights);
     });
     applyLighting(this.impostor.material, options, lights);
-    applyOutline(this.outline, options);
+    for (const outline of [this.outline, ...this.columnOutlines]) if (outline) applyOutline(outline, options);
   }
 
   /**
@@ -80,14 +91,19 @@ export class LectureSphere {
     this.showGeometry(state.material.shading);
   }
 
-  /** Puts the sphere geometry for `shading` on the mesh (and its outline). */
+  /** Puts the sphere geometry for `shading` on the single view's mesh (and its outline). */
   showGeometry(shading: Shading): void {
+    this.setGeometry(this.mesh, this.outline, shading);
+  }
+
+  /** Puts the sphere geometry for `shading` on `mesh` and its outline. */
+  private setGeometry(mesh: THREE.Mesh, outline: Outline | null, shading: Shading): void {
     if (!this.current) return;
     const { base, level, radius } = this.current;
     const geometry = this.geometries.get(sphereKey(base, level, shading, radius));
     if (!geometry) return;
-    this.mesh.geometry = geometry;
-    this.outline.geometry = geometry;
+    mesh.geometry = geometry;
+    if (outline) outline.geometry = geometry;
   }
 
   /** The silhouette error on screen in pixels (at most); null before a sphere is built or when unknown. */
@@ -102,13 +118,8 @@ export class LectureSphere {
   }
 
   /**
-   * Draws the sphere in the single view, or each compare column's in its cell; adds each draw to `drawn`.
-   *
-   * Imperative: the compare view draws the one mesh four times in a frame, its material and geometry swapped
-   * between `renderer.render` calls under a scissor per cell, which no single set of JSX props can say. In R3F
-   * this is a `useFrame` that takes the render over (priority 1); it moves there once R3F drives the frame, which
-   * it does not yet (`frameloop: 'never'`, the viewer renders on demand): `advance` would also run
-   * `useTrackball`'s damping `useFrame` beside input.ts's own spin, turning a damped sphere twice per frame.
+   * Draws the sphere in the single view (the mesh or the impostor), or in the compare view each column's mesh in
+   * its cell (only that one shown); adds each draw to `drawn`.
    */
   draw(
     renderer: THREE.WebGLRenderer,
@@ -118,13 +129,11 @@ export class LectureSphere {
     { layout, w, h }: { layout: Layout; w: number; h: number },
     drawn: Drawn[],
   ): void {
-    const cells = layout.cols * layout.rows;
     const impostor = state.sphere.render === 'impostor';
-    this.outline.visible = state.material.outline && state.material.celBands > 0;
-    this.mesh.visible = !impostor || cells > 1;
-    this.impostor.visible = impostor && cells === 1;
-    if (cells === 1) {
-      this.mesh.material = this.material;
+    if (layout.cols * layout.rows === 1) {
+      this.outline.visible = state.material.outline && state.material.celBands > 0;
+      this.mesh.visible = !impostor;
+      this.impostor.visible = impostor;
       this.showGeometry(state.material.shading);
       drawn.push(
         impostor
@@ -136,34 +145,38 @@ export class LectureSphere {
       renderer.render(scene, camera);
       return;
     }
-    drawCells(renderer, scene, camera, layout, w, h, (column, i) => {
-      this.mesh.material = this.compareMaterials[i]!;
-      this.showGeometry(column.shading);
-      this.outline.visible = column.cel && state.material.outline;
-      drawn.push({ geometry: this.mesh.geometry, outline: this.outline.visible });
-    });
-    renderer.setScissorTest(false);
-    this.mesh.material = this.material;
-    this.showGeometry(state.material.shading);
+    this.hide();
+    try {
+      drawCells(renderer, scene, camera, layout, w, h, (column, i) => {
+        const outline = this.columnOutlines[i] ?? null;
+        this.columns.forEach((mesh, j) => {
+          mesh.visible = j === i;
+        });
+        this.setGeometry(this.columns[i]!, outline, column.shading);
+        if (outline) outline.visible = state.material.outline;
+        drawn.push({ geometry: this.columns[i]!.geometry, outline: outline?.visible ?? false });
+      });
+    } finally {
+      renderer.setScissorTest(false);
+      for (const mesh of this.columns) mesh.visible = false;
+    }
   }
 
-  /** Hides the mesh, its outline and the impostor (a picked scene is drawn instead). */
+  /** Hides the meshes, their outlines and the impostor (a picked scene, or the compare view, is drawn instead). */
   hide(): void {
-    this.mesh.visible = false;
-    this.impostor.visible = false;
-    this.outline.visible = false;
+    for (const object of [this.mesh, this.impostor, this.outline, ...this.columns]) object.visible = false;
   }
 
   /** Frees the materials' programs (the next frame compiles only the variants on screen). */
   freePrograms(): void {
     this.material.dispose();
-    for (const material of this.compareMaterials) material.dispose();
+    for (const mesh of this.columns) mesh.material.dispose();
   }
 
   dispose(): void {
     for (const geometry of this.geometries.values()) geometry.dispose();
     this.freePrograms();
-    this.outline.material.dispose();
+    for (const outline of [this.outline, ...this.columnOutlines]) outline?.material.dispose();
     this.impostor.geometry.dispose();
     this.impostor.material.dispose();
   }
