@@ -1,6 +1,12 @@
 /**
  * The scene picker's scenes: a builder per scene (one file each), their labels in the panel, and what of the
  * panel applies to each.
+ *
+ * A scene is mounted as JSX (sceneRoot.tsx: a `<primitive>` under the trackball, its `enter`/`leave` in a layout
+ * effect) but built in code, as an R3F app builds such content in a `useMemo`: its substance is numbers (40
+ * instance matrices and colours, four posed bones and a morph target, textures computed pixel by pixel), and the
+ * viewer needs its parts as objects to set the panel's material on them and each compare cell's shading. Unit
+ * tests build them without a renderer (scenes.test.ts).
  */
 import type { SceneName } from '../../state/schema';
 import { createInstancedScene } from './instanced';

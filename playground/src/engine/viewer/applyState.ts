@@ -1,6 +1,10 @@
 /**
  * How the state's sections are set on the packages' objects: the materials and lights, the trackball's options
  * and rotation, the camera's projection. The viewer calls these for the sections that changed.
+ *
+ * Imperative on purpose, not JSX props: the packages' setters refuse a bad value by throwing, and the playground
+ * must report it for its section while the last good value stays on screen. As a prop, the throw would come
+ * from inside R3F's commit, which unmounts the whole tree; here each section is tried on its own (Viewer.apply).
  */
 import type { Camera, CameraMovement } from '@shadelab/camera';
 import type { PhongLight, ShadingMaterial } from '@shadelab/material';
