@@ -58,7 +58,7 @@ interface Harness {
     disagreeOffEdge: number;
   }>;
   scaleInvariance(
-    b: Backend,
+    on: Backend | 'webgl',
     v: Variant,
     scenario: 'huge' | 'tiny',
   ): Promise<{
@@ -90,6 +90,26 @@ async function open(page: Page): Promise<string[]> {
 const VARIANTS: Variant[] = (['phong', 'blinn-phong'] as const).flatMap((lighting) =>
   [0, 4].map((celBands) => ({ lighting, celBands })),
 );
+
+test('WebGLRenderer + SphereImpostorMaterial: the whole scene scaled by 1e15 and by 1e-18 = the scene unscaled (same coverage but for silhouette pixels, colours within 2/255 away from edges); neither did before its inverse matrix was scaled by a power of two (1e15: the coverage wrong off the silhouette; 1e-18: nothing drawn)', async ({
+  page,
+}) => {
+  const problems = await open(page);
+  for (const variant of VARIANTS) {
+    for (const scenario of ['huge', 'tiny'] as const) {
+      const stats = await page.evaluate(
+        ([v, sc]) => (window as never as { harness: Harness }).harness.scaleInvariance('webgl', v, sc),
+        [variant, scenario] as const,
+      );
+      const label = `${scenario} ${JSON.stringify(variant)} ${JSON.stringify(stats)}`;
+      expect(stats.covered, label).toBeGreaterThan(2000);
+      expect(stats.coverageMismatchOffEdge, label).toBe(0);
+      expect(stats.coverageMismatch, label).toBeLessThanOrEqual(stats.covered * 0.01);
+      expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+    }
+  }
+  expect(problems).toEqual([]);
+});
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
   test(`${backend} backend: the impostor (an ellipsoid 2, 1, 2 and a unit sphere, one mesh each and two instances of an InstancedMesh; mirrored; orthographic; in three's Fog; cut by clipping planes; spheres scaled by 1e±20 that draw nothing; the eye inside) = WebGLRenderer + SphereImpostorMaterial; the scene scaled by 1e15 and 1e-18 = the scene unscaled: same coverage but for silhouette pixels, colours within 2/255 away from edges`, async ({

@@ -305,13 +305,14 @@ async function crossRenderer(backend: Backend, v: Variant, scenario: Scenario) {
 }
 
 /**
- * The 'huge' or 'tiny' scene (everything scaled by 1e15 or 1e-18) against the 'unit' scene on the same backend: the same
- * picture (the same directions, no attenuation). `SphereImpostorMaterial` is no reference there: on
- * WebGLRenderer it draws nothing of the 'tiny' scene and a few wrong pixels of the 'huge' one.
+ * The 'huge' or 'tiny' scene (everything scaled by 1e15 or 1e-18) against the 'unit' scene drawn the same way
+ * (the same directions, no attenuation: the same picture): by SphereImpostorNodeMaterial on a backend of
+ * WebGPURenderer, or (`'webgl'`) by SphereImpostorMaterial on WebGLRenderer.
  */
-async function scaleInvariance(backend: Backend, v: Variant, scenario: 'huge' | 'tiny') {
-  const a = await renderGpu(backend, v, 'unit');
-  const b = await renderGpu(backend, v, scenario);
+async function scaleInvariance(on: Backend | 'webgl', v: Variant, scenario: 'huge' | 'tiny') {
+  const render = async (s: Scenario) => (on === 'webgl' ? renderGl(v, s) : await renderGpu(on, v, s));
+  const a = await render('unit');
+  const b = await render(scenario);
   const edges = edgeMask(a, 24);
   let covered = 0;
   let coverageMismatch = 0;

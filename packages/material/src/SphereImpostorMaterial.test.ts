@@ -117,9 +117,11 @@ describe('SphereImpostorMaterial', () => {
       .multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse)
       .multiply(impostor.matrixWorld);
     expect(u.impostorMvp.value.elements).toEqual(mvp.elements);
+    // The inverse, times a power of two (see the extreme scales below).
     const product = new Matrix4().multiplyMatrices(u.impostorMvp.value, u.impostorInverseMvp.value);
+    const factor = 2 ** Math.round(Math.log2(product.elements[0]));
     product.elements.forEach((v, i) => {
-      expect(v).toBeCloseTo(new Matrix4().elements[i], 12);
+      expect(v / factor).toBeCloseTo(new Matrix4().elements[i], 12);
     });
     expect(u.impostorViewport.value.toArray()).toEqual([0, 0, 1280, 720]);
     // The lecture ellipsoid spans NDC x ±(2/√5)/(16/9) and y ±1/√5 (tangents from the eye), plus 1 px.
@@ -251,9 +253,8 @@ describe('SphereImpostorMaterial on an InstancedMesh', () => {
 });
 
 describe('SphereImpostorMaterial at extreme scales (32-bit floats on the GPU)', () => {
-  const draw = (scale: number, z: number) => {
+  const draw = (scale: number, z: number, camera = lectureCamera()) => {
     const material = new SphereImpostorMaterial();
-    const camera = lectureCamera();
     const object = new SphereImpostor(material);
     object.scale.setScalar(scale);
     object.position.set(0, 0, z);
@@ -264,16 +265,38 @@ describe('SphereImpostorMaterial at extreme scales (32-bit floats on the GPU)', 
       .multiply(object.matrixWorld);
     return { u: material.uniforms, inverse: mvp.clone().invert() };
   };
+  const wRow = (m: Matrix4) => Math.max(...[3, 7, 11, 15].map((i) => Math.abs(m.elements[i])));
+  /** The whole lecture scene (camera, near and far included) scaled by `k`. */
+  const scaledCamera = (k: number) => {
+    const camera = new PerspectiveCamera(90, 1280 / 720, 0.1 * k, 10 * k);
+    camera.position.set(0, 0, 3 * k);
+    camera.updateMatrixWorld();
+    return camera;
+  };
 
-  it('keeps the inverse P·V·M as it is (its w row is P⁻¹’s, whatever the model scale)', () => {
-    for (const [scale, z] of [
-      [1, 0],
-      [1e20, -3e20],
-      [1e-20, -1],
-    ]) {
-      const { u, inverse } = draw(scale, z);
-      expect(u.impostorInverseMvp.value.elements).toEqual(inverse.elements);
+  it('uploads the inverse P·V·M times the power of two that brings its w row into [1/√2, √2]: the same rays, the same rounding (every element scaled exactly)', () => {
+    for (const [scale, z, k] of [
+      [1, 0, 1],
+      [1e20, -3e20, 1],
+      [1e-20, -1, 1],
+      [1e15, 0, 1e15],
+      [1e-18, 0, 1e-18],
+    ] as const) {
+      const { u, inverse } = draw(scale, z, scaledCamera(k));
+      const uploaded = u.impostorInverseMvp.value;
+      const w = wRow(uploaded);
+      expect(w).toBeGreaterThanOrEqual(Math.SQRT1_2);
+      expect(w).toBeLessThanOrEqual(Math.SQRT2);
+      const factor = w / wRow(inverse);
+      expect(Number.isInteger(Math.log2(factor))).toBe(true);
+      expect(uploaded.elements).toEqual(inverse.elements.map((e) => e * factor));
     }
+  });
+
+  it('a whole scene scaled by 1e-18: the inverse P·V·M as uploaded stays within 32-bit range in the fragment stage (its w row was about 1e19, and products of w and xyz, squared in |d|², overflowed: nothing was drawn)', () => {
+    const { u, inverse } = draw(1e-18, 0, scaledCamera(1e-18));
+    expect(wRow(inverse)).toBeGreaterThan(1e18);
+    for (const e of u.impostorInverseMvp.value.elements) expect(Math.abs(e)).toBeLessThan(100);
   });
 
   it('draws nothing when the eye is inside the sphere (its front surface is behind the eye)', () => {

@@ -146,7 +146,7 @@ export class SphereImpostorMaterial extends ShadingMaterial {
       .multiply(object.matrixWorld);
     u.impostorViewProjection.value.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
     u.impostorMvp.value.copy(mvp);
-    u.impostorInverseMvp.value.copy(mvp).invert();
+    scaleToUnitW(u.impostorInverseMvp.value.copy(mvp).invert());
     u.impostorModelMatrix.value.copy(object.matrixWorld);
     const viewport = renderer.getCurrentViewport(_viewport);
     u.impostorViewport.value.copy(viewport);
@@ -164,6 +164,20 @@ export class SphereImpostorMaterial extends ShadingMaterial {
       projectedBounds(mvp, viewport.z, viewport.w, u.impostorBounds.value);
     else u.impostorBounds.value.set(2, 2, 2, 2);
   }
+}
+
+/**
+ * Scales (P·V·M)⁻¹ by a power of two that brings its w row's largest element into [1/√2, √2]. A positive factor
+ * changes no ray (the points are homogeneous: the origin o = xyz/w, the direction and the near–far length are
+ * ratios), but it keeps the fragment stage's products of w and xyz in 32-bit range: for a whole scene scaled by
+ * 1e-18 the w row is about 1/near ≈ 1e19, and those products (≈ 1e38, squared in |d|²) overflowed, so nothing
+ * was drawn (at 1e15, the coverage was wrong). A power of two changes no rounding either: every other scene draws the same pixels. A zero or
+ * non-finite w row is left as it is (nothing is drawn then).
+ */
+function scaleToUnitW(inverse: Matrix4): Matrix4 {
+  const e = inverse.elements;
+  const w = Math.max(Math.abs(e[3]), Math.abs(e[7]), Math.abs(e[11]), Math.abs(e[15]));
+  return w > 0 && Number.isFinite(w) ? inverse.multiplyScalar(2 ** -Math.round(Math.log2(w))) : inverse;
 }
 
 /** Put the impostor's shaders back (ShadingMaterial resets its own when the light count changes). */
