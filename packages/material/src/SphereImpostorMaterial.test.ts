@@ -274,7 +274,7 @@ describe('SphereImpostorMaterial at extreme scales (32-bit floats on the GPU)', 
     return camera;
   };
 
-  it('uploads the inverse P·V·M times the power of two that brings its w row into [1/√2, √2]: the same rays, the same rounding (every element scaled exactly)', () => {
+  it('uploads the inverse P·V·M times the power of two that brings its w row into [1/√2, √2]: the same rays, the same rounding (every element scaled exactly); a zero inverse as it is', () => {
     for (const [scale, z, k] of [
       [1, 0, 1],
       [1e20, -3e20, 1],
@@ -284,6 +284,11 @@ describe('SphereImpostorMaterial at extreme scales (32-bit floats on the GPU)', 
     ] as const) {
       const { u, inverse } = draw(scale, z, scaledCamera(k));
       const uploaded = u.impostorInverseMvp.value;
+      // three's invert gives the zero matrix where it finds none (three r179 for the 1e20 sphere): kept as it is.
+      if (wRow(inverse) === 0) {
+        expect(uploaded.elements).toEqual(inverse.elements);
+        continue;
+      }
       const w = wRow(uploaded);
       expect(w).toBeGreaterThanOrEqual(Math.SQRT1_2);
       expect(w).toBeLessThanOrEqual(Math.SQRT2);
