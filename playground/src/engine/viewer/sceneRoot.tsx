@@ -50,8 +50,8 @@ export interface LectureSphereObjects {
   columns: THREE.Mesh<THREE.BufferGeometry, ShadingMaterial>[];
 }
 
-/** Draws one frame with R3F's renderer, scene and camera (what the frame's `useFrame` calls). */
-export type DrawFrame = (state: RootState) => void;
+/** Draws one frame (what the frame's `useFrame` calls; the viewer's draws use its own renderer and camera). */
+export type DrawFrame = () => void;
 
 /** The values the JSX sets from the state. */
 export interface LectureSphereProps {
@@ -102,7 +102,7 @@ function LectureSphereScene({
   into.columns ??= [];
   const columns = into.columns;
   // Priority 1: R3F does not render by itself; this draws the frame (the viewer's draw for this frame).
-  useFrame((state) => draw.current?.(state), 1);
+  useFrame(() => draw.current?.(), 1);
   return (
     <TrackballElement
       ref={(trackball) => {
