@@ -171,8 +171,8 @@ export class SphereImpostorMaterial extends ShadingMaterial {
  * changes no ray (the points are homogeneous: the origin o = xyz/w, the direction and the near–far length are
  * ratios), but it keeps the fragment stage's products of w and xyz in 32-bit range: for a whole scene scaled by
  * 1e-18 the w row is about 1/near ≈ 1e19, and those products (≈ 1e38, squared in |d|²) overflowed, so nothing
- * was drawn (at 1e15, the coverage was wrong). A power of two changes no rounding either: every other scene draws the same pixels. A zero or
- * non-finite w row is left as it is (nothing is drawn then).
+ * was drawn (at 1e15, the coverage was wrong). A power of two changes no rounding either: every other scene
+ * draws the same pixels. A zero or non-finite w row is left as it is (nothing is drawn then).
  */
 function scaleToUnitW(inverse: Matrix4): Matrix4 {
   const e = inverse.elements;

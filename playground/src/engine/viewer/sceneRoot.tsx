@@ -50,6 +50,9 @@ export interface LectureSphereObjects {
   columns: THREE.Mesh<THREE.BufferGeometry, ShadingMaterial>[];
 }
 
+/** What the JSX's refs fill: the objects, and the compare view's meshes by column. */
+type Into = Partial<LectureSphereObjects> & Pick<LectureSphereObjects, 'columns'>;
+
 /** Draws one frame (what the frame's `useFrame` calls; the viewer's draws use its own renderer and camera). */
 export type DrawFrame = () => void;
 
@@ -92,15 +95,13 @@ function LectureSphereScene({
   scale: [x, y, z],
   radius,
   picked,
-}: LectureSphereProps & { into: Partial<LectureSphereObjects>; draw: RefObject<DrawFrame | null> }) {
+}: LectureSphereProps & { into: Into; draw: RefObject<DrawFrame | null> }) {
   const impostorMaterial = useMemo(() => new SphereImpostorMaterial(), []);
   const keep =
     <K extends keyof LectureSphereObjects>(key: K) =>
     (value: LectureSphereObjects[K] | null) => {
       if (value) into[key] = value;
     };
-  into.columns ??= [];
-  const columns = into.columns;
   // Priority 1: R3F does not render by itself; this draws the frame (the viewer's draw for this frame).
   useFrame(() => draw.current?.(), 1);
   return (
@@ -126,7 +127,7 @@ function LectureSphereScene({
           visible={false}
           scale={[x, y, z]}
           ref={(mesh: LectureSphereObjects['columns'][number] | null) => {
-            if (mesh) columns[i] = mesh;
+            if (mesh) into.columns[i] = mesh;
           }}
         >
           <shadingMaterial />
@@ -143,7 +144,7 @@ export class SceneRoot {
   readonly scene: THREE.Scene;
   private readonly root: ReconcilerRoot<HTMLCanvasElement>;
   /** The objects the lecture sphere's JSX made (filled by its refs). */
-  private readonly into: Partial<LectureSphereObjects> = {};
+  private readonly into: Into = { columns: [] };
   /** The props last rendered. */
   private props: LectureSphereProps = { scale: [1, 1, 1], radius: 1, picked: null };
   /** What the frame's `useFrame` draws, set for the length of one {@link SceneRoot.frame}. */
@@ -206,7 +207,7 @@ export class SceneRoot {
       !mesh ||
       !material ||
       !impostor ||
-      columns?.length !== COMPARE_COLUMNS.length
+      columns.length !== COMPARE_COLUMNS.length
     ) {
       throw new Error('The lecture sphere did not mount.');
     }
