@@ -86,6 +86,9 @@ const _warnedProvoking = /* @__PURE__ */ new WeakSet<BufferGeometry>();
 /** The class named in error messages. */
 const OWNER = 'ShadingMaterial';
 
+/** 1/π: three's factor of every light's colour (BRDF_Lambert), as `shade()` applies it to three's lights. */
+const RECIPROCAL_PI = 1 / Math.PI;
+
 /** What a scene holds for the material, found once per frame (see {@link sceneLightsOf}). */
 interface SceneLights {
   /** three's renderer frame it was found in. */
@@ -670,9 +673,10 @@ export class ShadingMaterial extends ShaderMaterial {
       return;
     }
     this.#reported = null;
-    u.shadingKa.value.copy(this.#ka);
-    u.shadingKd.value.copy(this.#kd);
-    u.shadingKs.value.copy(this.#ks);
+    // three's lights light the material as they light three's own (BRDF_Lambert's 1/π, folded in here, once).
+    u.shadingKa.value.copy(this.#ka).multiplyScalar(RECIPROCAL_PI);
+    u.shadingKd.value.copy(this.#kd).multiplyScalar(RECIPROCAL_PI);
+    u.shadingKs.value.copy(this.#ks).multiplyScalar(RECIPROCAL_PI);
     u.emissive.value.copy(this.#emissive);
     const position: Float32Array = u.lightPosition.value;
     const diffuse: Float32Array = u.lightDiffuse.value;

@@ -64,6 +64,9 @@ type N = any;
 
 const OWNER = 'ShadingNodeMaterial';
 
+/** 1/π: three's factor of every light's colour (BRDF_Lambert); see `shade()`. */
+const RECIPROCAL_PI = 1 / Math.PI;
+
 /** Options of {@link ShadingNodeMaterial}: the lecture's options, the same as `ShadingMaterial`'s. */
 export type ShadingNodeMaterialOptions = ShadingOptions;
 
@@ -175,14 +178,16 @@ class LectureLightingModel extends LightingModel {
     const { n, back } = this.surface;
     const { ka } = this.uniforms;
     // The ambient lights' irradiance is the same on both sides; the hemispheres' is not.
-    back?.addAssign(builder.context.irradiance.mul(ka));
+    back?.addAssign(builder.context.irradiance.mul(ka).mul(RECIPROCAL_PI));
     for (const node of hemispheres) {
       // Registered for its per-frame update (colours, direction); its own setup is not built.
       builder.addNode(node);
       const direction = (cameraViewMatrix as N).mul(vec4(node.lightDirectionNode, 0)).xyz;
       const weight = n.dot(direction).mul(0.5);
       builder.context.irradiance.addAssign(mix(node.groundColorNode, node.colorNode, weight.add(0.5)));
-      back?.addAssign(mix(node.groundColorNode, node.colorNode, weight.negate().add(0.5)).mul(ka));
+      back?.addAssign(
+        mix(node.groundColorNode, node.colorNode, weight.negate().add(0.5)).mul(ka).mul(RECIPROCAL_PI),
+      );
     }
     this.indirect(builder);
   }
@@ -208,10 +213,10 @@ class LectureLightingModel extends LightingModel {
       ambient = ka.mul(node.ambient);
       reflectedLight.indirectDiffuse.addAssign(ambient);
     } else {
-      // three's lights: Id = Is = colour × intensity × three's falloff.
+      // three's lights: Id = Is = colour × intensity / π × three's falloff (as three's materials receive them).
       l = data.lightDirection;
-      id = data.lightColor;
-      is = data.lightColor;
+      id = data.lightColor.mul(RECIPROCAL_PI);
+      is = id;
     }
     const ndl = n.dot(l);
     const h = this.material.lighting === 'blinn-phong' ? l.add(v) : null;
@@ -258,9 +263,9 @@ class LectureLightingModel extends LightingModel {
   }
 
   override indirect(builder: N): void {
-    // three's ambient and hemisphere lights: Ia = their irradiance.
+    // three's ambient and hemisphere lights: Ia = their irradiance / π.
     const { irradiance, reflectedLight } = builder.context;
-    reflectedLight.indirectDiffuse.addAssign(irradiance.mul(this.uniforms.ka));
+    reflectedLight.indirectDiffuse.addAssign(irradiance.mul(this.uniforms.ka).mul(RECIPROCAL_PI));
   }
 }
 

@@ -281,25 +281,30 @@ describe('shade: properties', () => {
   });
 });
 
-describe("shade() with three's lights (Id = Is = colour × intensity, three's falloff, ambient as Ia)", () => {
+describe("shade() with three's lights (Id = Is = colour × intensity / π, three's falloff, ambient as Ia)", () => {
+  const PI = Math.PI;
   const m: ShadeMaterial = { ka: [0.5, 0.5, 0.5], kd: [0.4, 0.4, 0.4], ks: [0.2, 0.2, 0.2], shininess: 1 };
   const sample = { position: [0, 0, 0], normal: [0, 0, 1], eye: [0, 0, 10] };
 
-  it('ambient: ka·Ia; hemisphere: three’s sky/ground blend by the normal', () => {
-    expectClose(shade(sample, m, [{ type: 'ambient', color: [0.2, 0.4, 0.6] }]), [0.1, 0.2, 0.3]);
+  it('ambient: ka·Ia with Ia = colour / π; hemisphere: three’s sky/ground blend by the normal, / π', () => {
+    expectClose(shade(sample, m, [{ type: 'ambient', color: [0.2, 0.4, 0.6] }]), [
+      0.1 / PI,
+      0.2 / PI,
+      0.3 / PI,
+    ]);
     const hemi = { type: 'hemisphere', color: [1, 1, 1], groundColor: [0, 0, 0] } as const;
     // The normal along the sky direction: all sky; against it: all ground; across: half of each.
-    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 0, 1] }]), [0.5, 0.5, 0.5]);
+    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 0, 1] }]), [0.5 / PI, 0.5 / PI, 0.5 / PI]);
     expectClose(shade(sample, m, [{ ...hemi, direction: [0, 0, -1] }]), [0, 0, 0]);
-    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 1, 0] }]), [0.25, 0.25, 0.25]);
+    expectClose(shade(sample, m, [{ ...hemi, direction: [0, 1, 0] }]), [0.25 / PI, 0.25 / PI, 0.25 / PI]);
   });
 
-  it('directional: kd·I·(l·n) + ks·I·(v·r)^α, no falloff', () => {
+  it('directional: (kd·(l·n) + ks·(v·r)^α)·I/π, no falloff', () => {
     // l = (0, 0.6, 0.8): l·n = 0.8; r = (0, −0.6, 0.8), v = z: v·r = 0.8.
     const out = shade(sample, m, [{ type: 'directional', color: [2, 2, 2], direction: [0, 0.6, 0.8] }]);
     expectClose(
       out,
-      [0, 1, 2].map(() => 2 * (0.4 * 0.8 + 0.2 * 0.8)),
+      [0, 1, 2].map(() => (2 * (0.4 * 0.8 + 0.2 * 0.8)) / PI),
     );
   });
 
@@ -310,8 +315,8 @@ describe("shade() with three's lights (Id = Is = colour × intensity, three's fa
     expect(threeDistanceFalloff(5, 4, 2)).toBe(0);
     expect(threeDistanceFalloff(0, 0, 2)).toBe(100);
     const out = shade(sample, m, [{ type: 'point', color: [1, 1, 1], position: [0, 0, 2], decay: 2 }]);
-    // Head-on from 2 units: l·n = 1, v·r = 1: (0.4 + 0.2) / 4.
-    expectClose(out, [0.15, 0.15, 0.15]);
+    // Head-on from 2 units: l·n = 1, v·r = 1: (0.4 + 0.2) / 4 / π.
+    expectClose(out, [0.15 / PI, 0.15 / PI, 0.15 / PI]);
   });
 
   it('spot: the point falloff times smoothstep(coneCos, penumbraCos, l·direction)', () => {
@@ -324,7 +329,7 @@ describe("shade() with three's lights (Id = Is = colour × intensity, three's fa
       coneCos: Math.cos(0.5),
       penumbraCos: Math.cos(0.25),
     } as const;
-    expectClose(shade(sample, m, [spot]), [0.6, 0.6, 0.6]); // on the axis: full
+    expectClose(shade(sample, m, [spot]), [0.6 / PI, 0.6 / PI, 0.6 / PI]); // on the axis: full
     const outside = { ...sample, position: [3, 0, 0] }; // 56° off the axis: dark
     expectClose(shade(outside, m, [spot]), [0, 0, 0]);
     // Between the cone and the penumbra: smoothstep of the cosine.
@@ -334,7 +339,7 @@ describe("shade() with three's lights (Id = Is = colour × intensity, three's fa
     const inPenumbra = shade({ ...sample, position: [x, 0, 0] }, { ...m, ks: [0, 0, 0] }, [spot]);
     expectClose(
       inPenumbra,
-      [0, 1, 2].map(() => cone * 0.4 * l[2]),
+      [0, 1, 2].map(() => (cone * 0.4 * l[2]) / PI),
     );
     expect(cone).toBeGreaterThan(0.05);
     expect(cone).toBeLessThan(0.95);
@@ -348,8 +353,60 @@ describe("shade() with three's lights (Id = Is = colour × intensity, three's fa
     // The point light at the point: head-on, falloff 1/0.01.
     expectClose(
       out.map((c, k) => c - phong[k]),
-      [0, 1, 2].map((k) => 100 * (0.4 * [1, 0.5, 0][k] + 0.2)),
+      [0, 1, 2].map((k) => (100 * (0.4 * [1, 0.5, 0][k] + 0.2)) / PI),
       9,
+    );
+  });
+});
+
+describe('shade() under three’s lights is three’s Lambert (the drop-in mapping)', () => {
+  // three's MeshLambertMaterial / MeshPhongMaterial({ specular: 0 }) at a point, written from three's chunks:
+  // outgoing = BRDF_Lambert(c) · (ambient + hemisphere irradiance + Σ colour·falloff·max(n·l, 0)), BRDF_Lambert =
+  // c / π (lights_lambert_pars_fragment, bsdfs, lights_pars_begin).
+  it('{ ka: c, kd: c, ks: 0 } equals three’s Lambert for any mix of the five kinds (property)', () => {
+    const unit = fc
+      .tuple(
+        fc.double({ min: -1, max: 1, noNaN: true }),
+        fc.double({ min: -1, max: 1, noNaN: true }),
+        fc.double({ min: -1, max: 1, noNaN: true }),
+      )
+      .filter((v) => Math.hypot(...v) > 0.1);
+    const rgb = fc.tuple(
+      fc.double({ min: 0, max: 2, noNaN: true }),
+      fc.double({ min: 0, max: 2, noNaN: true }),
+      fc.double({ min: 0, max: 2, noNaN: true }),
+    );
+    fc.assert(
+      fc.property(unit, unit, unit, rgb, rgb, rgb, (n0, sky, toPoint, c, ambient, direct) => {
+        const norm = (v: number[]) => v.map((x) => x / Math.hypot(...v));
+        const n = norm(n0);
+        const dir = norm(sky);
+        const position = toPoint.map((x) => 3 * x);
+        const lights = [
+          { type: 'ambient', color: ambient },
+          { type: 'hemisphere', color: direct, groundColor: ambient, direction: dir },
+          { type: 'directional', color: direct, direction: dir },
+          { type: 'point', color: direct, position, decay: 2 },
+        ] as const;
+        const out = shade(
+          { position: [0, 0, 0], normal: n, eye: [0, 0, 10] },
+          { ka: c, kd: c, ks: [0, 0, 0], shininess: 8 },
+          lights,
+        );
+        const t = Math.hypot(...position);
+        const l = position.map((x) => x / t);
+        const dot = (a: readonly number[], b: readonly number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        const w = 0.5 * dot(n, dir) + 0.5;
+        const three = [0, 1, 2].map((k) => {
+          const irradiance =
+            ambient[k] +
+            (ambient[k] + (direct[k] - ambient[k]) * w) +
+            direct[k] * Math.max(dot(n, dir), 0) +
+            (direct[k] / Math.max(t * t, 0.01)) * Math.max(dot(n, l), 0);
+          return (c[k] / Math.PI) * irradiance;
+        });
+        expectClose(out, three, 9);
+      }),
     );
   });
 });

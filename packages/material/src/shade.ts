@@ -42,11 +42,13 @@ export interface ShadeLight {
 }
 
 /**
- * One of three's lights as `shade` (and `ShadingMaterial`) maps it onto the lecture's equation: Id = Is =
- * `color` (three's colour × intensity, linear), three's own falloff in place of 1/(a + b·t + c·t²), and
- * ambient and hemisphere lights as Ia:
- * - `'ambient'`: Ia = color;
- * - `'hemisphere'`: Ia = mix(groundColor, color, 0.5·(n·direction) + 0.5) (three's sky/ground blend);
+ * One of three's lights as `shade` (and `ShadingMaterial`) maps it onto the lecture's equation, as three's own
+ * materials receive it: with three's factor 1/π (`BRDF_Lambert`), Id = Is = `color` / π (three's colour ×
+ * intensity, linear), three's own falloff in place of 1/(a + b·t + c·t²), and ambient and hemisphere lights as
+ * Ia (their irradiance / π). So `{ ka: c, kd: c, ks: 0 }` lights a point as `MeshLambertMaterial({ color: c })`
+ * and `MeshPhongMaterial({ color: c, specular: 0 })` do:
+ * - `'ambient'`: Ia = color / π;
+ * - `'hemisphere'`: Ia = mix(groundColor, color, 0.5·(n·direction) + 0.5) / π (three's sky/ground blend);
  * - `'directional'`: l = direction, no falloff;
  * - `'point'`: falloff 1/max(t^decay, 0.01), times (1 − (t/distance)⁴)² clamped to 0 … 1 when distance > 0;
  * - `'spot'`: the point light's falloff times smoothstep(coneCos, penumbraCos, l·direction).
@@ -160,6 +162,9 @@ export function celSpecular(power: number): number {
   return power >= 0.5 ? 1 : 0;
 }
 
+/** three's factor of a light's colour (`BRDF_Lambert`): see {@link ShadeThreeLight}. */
+const RECIPROCAL_PI = 1 / Math.PI;
+
 const AXIS_Z: Vec3Like = [0, 0, 1];
 const WHITE: Vec3Like = [1, 1, 1];
 const ZERO: Vec3Like = [0, 0, 0];
@@ -173,8 +178,8 @@ const UP: Vec3Like = [0, 1, 0];
  * with l the unit vector to the light, t its distance, v the unit vector to the eye, spec 0 where l·n ≤ 0;
  * a sample's `tint` (instance colour × vertex colour × texel) multiplies the ka and kd terms, and the material's
  * `emissive` is added once, outside the sum. three's lights ({@link ShadeThreeLight})
- * enter the same sum with Id = Is = colour × intensity, three's falloff as att and no Ia, ambient and
- * hemisphere lights with Ia only.
+ * enter the same sum as three's materials receive them: Id = Is = colour × intensity / π, three's falloff as
+ * att and no Ia; ambient and hemisphere lights with Ia = irradiance / π only.
  * Degenerate inputs stay finite: a light at the point (t = 0) lights it head-on (l = n); an eye at the
  * point uses v = n; a zero normal uses n = v (or +z when the eye is at the point too); h = 0 (l = −v) gives
  * no Blinn-Phong highlight. The GPU shaders of `ShadingMaterial` implement exactly these rules.
@@ -222,13 +227,14 @@ export function shade(
           const w = 0.5 * dot(n, direction) + 0.5;
           ia = [0, 1, 2].map((k) => ground[k] + (color[k] - ground[k]) * w);
         }
-        r += tint[0] * ka[0] * ia[0];
-        g += tint[1] * ka[1] * ia[1];
-        b += tint[2] * ka[2] * ia[2];
+        r += tint[0] * ka[0] * ia[0] * RECIPROCAL_PI;
+        g += tint[1] * ka[1] * ia[1] * RECIPROCAL_PI;
+        b += tint[2] * ka[2] * ia[2] * RECIPROCAL_PI;
         continue;
       }
       id = color;
       is = color;
+      att = RECIPROCAL_PI; // three's 1/π, times the falloff below
       if (type === 'directional') {
         l[0] = direction[0];
         l[1] = direction[1];
@@ -237,7 +243,7 @@ export function shade(
         sub(l, position, p);
         const t = length(l);
         normalizeOr(l, l, n);
-        att = threeDistanceFalloff(t, distance, decay);
+        att *= threeDistanceFalloff(t, distance, decay);
         if (type === 'spot') att *= smoothstep(light.coneCos ?? 0, light.penumbraCos ?? 0, dot(l, direction));
       }
     } else {
