@@ -454,7 +454,7 @@ const THREE_LIGHTS = [
 ] as const;
 
 for (const [name, variant] of SHADINGS) {
-  test(`three's Ambient, Hemisphere, Directional, Point and Spot lights with a PhongLight, ${name}: = shade() (Id = Is = colour × intensity, three's falloff)`, async ({
+  test(`three's Ambient, Hemisphere, Directional, Point and Spot lights with a PhongLight, ${name}: = shade() (Id = Is = colour × intensity / π, three's falloff)`, async ({
     page,
   }) => {
     await open(page);

@@ -184,9 +184,10 @@ function isRigid(m: Matrix4): boolean {
  * vertices), `scene.fog` (`fog`), clipping planes (`clippingPlanes`, the renderer's, `clipIntersection`), tone
  * mapping (`toneMapped`) and the output colour space. Instance normals use the instance matrix's robust
  * normal matrix, as the object's do. three's lights in the scene (AmbientLight, HemisphereLight, PointLight,
- * DirectionalLight, SpotLight) light it through the same equation with three's light uniforms: Id = Is =
- * colour × intensity, three's distance and cone falloff in place of the attenuation, ambient and hemisphere
- * lights as Ia (see `ShadeThreeLight`); compiled only when the scene has one of three's lights (the scene is
+ * DirectionalLight, SpotLight) light it through the same equation with three's light uniforms, as they light
+ * three's own materials (with three's 1/π): Id = Is = colour × intensity / π, three's distance and cone falloff in
+ * place of the attenuation, ambient and hemisphere lights as Ia = irradiance / π (see `ShadeThreeLight`), so
+ * `{ ka: c, kd: c, ks: 0 }` draws `MeshLambertMaterial({ color: c })`'s pixels; compiled only when the scene has one of three's lights (the scene is
  * searched once per frame); with `receiveShadow`, three's shadow factor multiplies each shadow-casting light's
  * term per fragment in every shading. three's surface properties by their names, through three's chunks, each compiled
  * only when set: `map` and `vertexColors` multiply ka and kd (never ks), `emissive` (× `emissiveMap`) is added

@@ -348,7 +348,8 @@ function faceTexture(geometry: BufferGeometry): DataTexture {
  * same options, defaults, validation and equation as `ShadingMaterial` (the CPU `shade()` is the reference of
  * both). A node material: three's lighting model interface evaluates I = Σ ka·Ia + att·(kd·Id·max(l·n, 0) +
  * ks·Is·spec) per light, for {@link PhongLight}s (per-light Ia, Id, Is and 1/max(a + b·t + c·t², 1e-6)) and
- * three's lights (Id = Is = colour × intensity with three's falloff; ambient and hemisphere lights as Ia), in
+ * three's lights (Id = Is = colour × intensity / π with three's falloff; ambient and hemisphere lights as Ia =
+ * irradiance / π: as three's own materials receive them), in
  * view space (the camera's rigid transform keeps every dot product).
  *
  * Shading: `'phong'` per fragment; `'gouraud'` in the vertex stage, colours interpolated; `'flat'` once per face

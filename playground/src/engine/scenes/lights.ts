@@ -57,13 +57,14 @@ export function createLightsScene(): DemoScene {
     );
   }
 
-  const hemisphere = new THREE.HemisphereLight(0x8899ff, 0x332211, 0.15);
-  const ambient = new THREE.AmbientLight(0xffffff, 0.05);
-  const sun = new THREE.DirectionalLight(0xfff2dd, 0.25);
+  // Intensities as three's own materials need them for this look (three's lights carry three's 1/π).
+  const hemisphere = new THREE.HemisphereLight(0x8899ff, 0x332211, 0.15 * Math.PI);
+  const ambient = new THREE.AmbientLight(0xffffff, 0.05 * Math.PI);
+  const sun = new THREE.DirectionalLight(0xfff2dd, 0.25 * Math.PI);
   sun.position.set(3, 5, 4);
-  const point = new THREE.PointLight(0xff44aa, 1.2, 0, 2);
+  const point = new THREE.PointLight(0xff44aa, 1.2 * Math.PI, 0, 2);
   point.position.set(-0.2, 0.6, 1.2);
-  const spot = new THREE.SpotLight(0x33ccff, 10, 0, 0.35, 0.4, 2);
+  const spot = new THREE.SpotLight(0x33ccff, 10 * Math.PI, 0, 0.35, 0.4, 2);
   spot.position.set(1.6, 2.6, 1.6);
   spot.target.position.set(1.15, -0.45, 0.2);
   root.add(hemisphere, ambient, sun, sun.target, point, spot, spot.target);
