@@ -34,5 +34,8 @@ export {
   specularPower,
   threeDistanceFalloff,
 } from './shade.js';
+export { type SwapMaterialsOptions, swapMaterials } from './swapMaterials.js';
+export type { SkippedMaterial, SwappedMaterials } from './swapWith.js';
+export { toShadingMaterial } from './toShadingMaterial.js';
 export type { ColorInput } from './validate.js';
 export type { Vec3, Vec3Like, Vec4Like } from './vec3.js';

@@ -14,3 +14,6 @@ export {
   SphereImpostorNodeMaterial,
   type SphereImpostorNodeMaterialOptions,
 } from './SphereImpostorNodeMaterial.js';
+export { swapNodeMaterials } from './swapNodeMaterials.js';
+export type { SkippedMaterial, SwappedMaterials } from './swapWith.js';
+export { toShadingNodeMaterial } from './toShadingNodeMaterial.js';
