@@ -2,7 +2,8 @@
  * React Three Fiber for shadelab: importing the package registers every shadelab class as a typed JSX element
  * (`<shadingMaterial>`, `<phongLight>`, `<subdivisionSphereGeometry>`, `<outlineMaterial>`,
  * `<sphereImpostorMaterial>`, `<sphereImpostor>`, `<autoDetailSphere>`), and it gives the components
- * `<Trackball>` (with the `useTrackball` hook), `<LectureCamera>` and `<AutoDetailSphere>`.
+ * `<Trackball>` (with the `useTrackball` hook), `<LectureCamera>`, `<AutoDetailSphere>` and `<ShadedModel>`
+ * (with the `useSwapMaterials` hook: a loaded model's materials swapped for ShadingMaterials).
  * @module @shadelab/react
  * @mergeModuleWith <project>
  */
@@ -12,5 +13,7 @@ import './elements.js';
 export { AutoDetailSphere, type AutoDetailSphereProps } from './AutoDetailSphere.js';
 export type { ColorProp, ShadelabElement, ShadelabElements } from './elements.js';
 export { LectureCamera, type LectureCameraProps } from './LectureCamera.js';
+export { ShadedModel, type ShadedModelProps } from './ShadedModel.js';
 export { Trackball, type TrackballEvent, type TrackballProps } from './Trackball.js';
+export { useSwapMaterials } from './useSwapMaterials.js';
 export { type UseTrackballOptions, useTrackball } from './useTrackball.js';
