@@ -1,16 +1,18 @@
-// The code blocks of the Markdown marked ```ts run=SCENE (the README's Quick start and each package README's
-// first example) run as a user would run them: each block, verbatim, is the main.ts of a page (a generated
-// index.html), all bundled by one Vite build that resolves `three` and `@shadelab/*` through the workspace's
-// node_modules (the packages' built dist/, through their `exports`), and opened in Chromium. A page error or
-// console error fails the test (an option that throws shows as one), and the picture must be SCENE's: drawn
-// inside the silhouette computed from the scene's camera and model, the background outside, brighter towards
-// the light when lit (picture-helpers.ts). scripts/snippets.mjs type-checks the same blocks; see DEVELOPERS.md,
-// "Code in docs".
+// The code blocks of the Markdown marked ```ts run=SCENE (the README's Quick start, each package README's
+// first example, a guide's example that loads a model) run as a user would run them: each block, verbatim, is
+// the main.ts of a page (a generated index.html), all bundled by one Vite build that resolves `three` and
+// `@shadelab/*` through the workspace's node_modules (the packages' built dist/, through their `exports`), and
+// opened in Chromium. A page error or console error fails the test (an option that throws shows as one), and the
+// picture must be SCENE's: drawn inside the silhouette computed from the scene's camera and model, the
+// background outside, brighter towards the light when lit (picture-helpers.ts); what a page fetches is served
+// by the test (PAGE_SETUP). scripts/snippets.mjs type-checks the same blocks; see DEVELOPERS.md, "Code in docs".
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { expect, test } from '@playwright/test';
+import { expect, type Page, test } from '@playwright/test';
+import { SphereGeometry } from 'three';
 import { type Block, collectBlocks } from '../scripts/snippets.mjs';
+import { glbOf } from './glb';
 import {
   buildAndServePages,
   collectPageErrors,
@@ -31,6 +33,34 @@ const SCENES: Record<string, SceneView> = {
   'trackball-cube': { shape: { box: [0.5, 0.5, 0.5] }, eye: 4, fovy: 45, normalColours: true },
   // Sphere README: the unit sphere with MeshNormalMaterial, eye (0, 0, 4), fovy 50°.
   'sphere-normals': { shape: { ellipsoid: [1, 1, 1] }, eye: 4, fovy: 50, normalColours: true },
+  // The existing-scene guide: the model it loads is served as the unit sphere (below), eye (0, 0, 4), fovy 50°,
+  // three's DirectionalLight at (−5, 10, 20) and an AmbientLight.
+  'gltf-sphere': { shape: { ellipsoid: [1, 1, 1] }, eye: 4, fovy: 50, light: [-5, 10, 20] },
+};
+
+/**
+ * What a scene's page fetches, served by the test, and what else its page must show; returns the check to run
+ * after the picture's. The existing-scene guide loads `/models/model.glb`, here the unit sphere (three's
+ * SphereGeometry, 64 × 32, inside the true sphere by far less than the samples' 10 %) with a dielectric glTF
+ * material, which GLTFLoader makes a MeshStandardMaterial: the block's log must say swapMaterials converted it.
+ */
+const PAGE_SETUP: Partial<Record<string, (page: Page) => Promise<() => void>>> = {
+  'gltf-sphere': async (page) => {
+    const body = glbOf(new SphereGeometry(1, 64, 32), {
+      baseColorFactor: [0.8, 0.45, 0.2, 1],
+      metallicFactor: 0,
+      roughnessFactor: 0.5,
+    });
+    await page.route('**/models/model.glb', (route) =>
+      route.fulfill({ status: 200, contentType: 'model/gltf-binary', body }),
+    );
+    // The block's log, and swapMaterials' warning of what it skipped (there must be none).
+    const logs: string[] = [];
+    page.on('console', (m) => {
+      if (m.type() === 'log' || m.text().startsWith('swapMaterials')) logs.push(m.text());
+    });
+    return () => expect(logs).toEqual(['1 materials swapped, 0 left in place']);
+  },
 };
 
 /** The examples that must run: the README's Quick start and each package README's first code block. */
@@ -128,8 +158,10 @@ for (const b of runs) {
     const errors = collectPageErrors(page);
     // Larger than any canvas the examples make; a block sized to the window fills it.
     await page.setViewportSize({ width: 900, height: 900 });
+    const check = await PAGE_SETUP[b.run!]?.(page);
     await page.goto(`${origin}/${pageOf(b)}/`);
     await expectScenePicture(page, SCENES[b.run!], errors);
     await expect(page.locator('html')).toHaveAttribute('data-ran', 'true');
+    check?.();
   });
 }
