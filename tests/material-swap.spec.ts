@@ -1,0 +1,137 @@
+import { expect, type Page, test } from '@playwright/test';
+import type { CaseReport, MaterialMode, SwapRun } from './harness/swap';
+
+// Issue 22: swapMaterials on glTF models built in code (three's GLTFExporter, binary GLB) and loaded back with
+// GLTFLoader, nothing downloaded: a textured mesh, a vertex-coloured mesh, a skinned mesh posed by its clip
+// (AnimationMixer at a fixed time), instances (EXT_mesh_gpu_instancing), a multi-material box as glTF gives it (a
+// Group, one Mesh per primitive) and merged back into one mesh with groups and a material array, two meshes
+// sharing one material, and a ShaderMaterial mesh added after loading. One 640 × 320 render shows every model in
+// its own 160 px cell, lit by three's Hemisphere, Ambient, Directional, Point and Spot lights. three's own
+// pictures are the oracle (tests/harness/swap.ts).
+
+/** Opens the page and collects page errors and console errors for the whole test. */
+async function open(page: Page): Promise<string[]> {
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  await page.goto('/harness/swap.html');
+  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  return errors;
+}
+
+const run = (page: Page, mode: MaterialMode): Promise<SwapRun> =>
+  page.evaluate((m) => window.swapHarness.run(m), mode);
+
+/** Attaches both pictures of `mode` to the report (to look at when a case fails), and logs the case numbers. */
+async function attach(page: Page, r: SwapRun): Promise<void> {
+  const shots = await page.evaluate((m) => window.swapHarness.pictures(m), r.mode);
+  for (const [name, url] of Object.entries(shots)) {
+    await test.info().attach(`${r.mode}-${name}.png`, {
+      body: Buffer.from(url.slice(url.indexOf(',') + 1), 'base64'),
+      contentType: 'image/png',
+    });
+  }
+  const rows = r.cases.map(
+    (c) =>
+      `${c.name}: covered ${c.swap.covered}, compared ${c.swap.compared}, mean ${c.swap.mean.toFixed(3)}, max ${c.swap.max}, changed ${c.swap.diffPixels}`,
+  );
+  console.log(`[${r.mode}] ${rows.join('; ')}`);
+}
+
+/** What every swap must do, whatever the originals: the objects, skipped, warnings, coverage and restore(). */
+function expectSwapAndRestore(r: SwapRun): void {
+  const at = `[${r.mode}]`;
+  expect(r.borderCovered, `${at} the models stay inside their cells`).toBe(0);
+  expect.soft(r.failures, `${at} references, sharing, order and disposal`).toEqual([]);
+  expect.soft(r.made, `${at} one ShadingMaterial per distinct original material`).toBe(r.distinctOriginals);
+  expect
+    .soft(r.skipped, `${at} skipped: the ShaderMaterial mesh only, with its reason`)
+    .toEqual([
+      { object: 'shaderMesh', material: 'ShaderMaterial', reason: expect.stringContaining('ShaderMaterial') },
+    ]);
+  expect
+    .soft(r.swapWarnings.length, `${at} one console.warn for the swap: ${r.swapWarnings.join(' | ')}`)
+    .toBe(1);
+  expect
+    .soft(r.swapWarnings.join(''), `${at} the warning names what was skipped`)
+    .toContain('ShaderMaterial');
+  expect.soft(r.restoreWarnings, `${at} restore() warns about nothing`).toEqual([]);
+  for (const c of r.cases) {
+    const info = `${at} ${c.name}: ${JSON.stringify(c)}`;
+    expect.soft(c.swap.covered, `${info}\n(enough pixels drawn)`).toBeGreaterThan(1500);
+    expect
+      .soft(c.swap.coverageMismatches, `${c.name} ${at}: coverage after swap equals three's\n${info}`)
+      .toBe(0);
+    expect
+      .soft(c.restore.diffPixels, `${c.name} ${at}: restore() gives the original picture\n${info}`)
+      .toBe(0);
+  }
+  expect.soft(r.restoreDiffPixels, `${at} the whole picture after restore()`).toBe(0);
+  expect.soft(r.restoreMaxDiff, `${at} the whole picture after restore()`).toBe(0);
+  const shader = r.cases.find((c) => c.name === 'shader') as CaseReport;
+  expect.soft(shader.swap.diffPixels, `${at} the skipped ShaderMaterial mesh is drawn as before`).toBe(0);
+}
+
+test('swapMaterials on the loaded glTF models (MeshStandardMaterial as GLTFLoader makes them): coverage, skipped, restore()', async ({
+  page,
+}) => {
+  const errors = await open(page);
+  const loaded = await page.evaluate(() => window.swapHarness.loaded);
+  // What the round trip gave: the test is about these objects, so check they are what the test says they are.
+  expect(loaded).toEqual({
+    instanced: true,
+    instanceColors: true,
+    skinned: true,
+    animations: 1,
+    multiPrimitivesChildren: 6,
+    sharedLoadedShared: true,
+    extensionsUsed: expect.arrayContaining(['EXT_mesh_gpu_instancing']),
+  });
+  const r = await run(page, 'standard');
+  await attach(page, r);
+  expectSwapAndRestore(r);
+  expect(errors).toEqual([]);
+});
+
+test('swapMaterials on MeshLambert and MeshPhong (specular 0) originals: diffuse pixels within 1/255 mean, 3/255 max away from silhouettes', async ({
+  page,
+}) => {
+  const errors = await open(page);
+  for (const mode of ['lambert', 'phong'] as const) {
+    const r = await run(page, mode);
+    await attach(page, r);
+    expectSwapAndRestore(r);
+    for (const c of r.cases) {
+      if (c.name === 'shader') continue;
+      const info = `${c.name} [${mode}]: ${JSON.stringify(c.swap)}`;
+      expect.soft(c.swap.compared, `${info}\n(enough pixels compared)`).toBeGreaterThan(1000);
+      expect.soft(c.swap.mean, `${c.name} [${mode}]: mean max|Δ| ≤ 1/255\n${info}`).toBeLessThanOrEqual(1);
+      expect.soft(c.swap.max, `${c.name} [${mode}]: max|Δ| ≤ 3/255\n${info}`).toBeLessThanOrEqual(3);
+    }
+  }
+  expect(errors).toEqual([]);
+});
+
+test('1,000 swap/restore cycles on the loaded models end at the renderer.info baseline', async ({ page }) => {
+  test.setTimeout(180_000);
+  const errors = await open(page);
+  const cycles = 1000;
+  const every = 50;
+  const start = Date.now();
+  const r = await page.evaluate(([n, e]) => window.swapHarness.cycles(n, e), [cycles, every] as const);
+  const line = `${cycles} cycles, a render every ${every}: ${r.frames} frames, cycles ${Math.round(r.ms)} ms, evaluate ${Date.now() - start} ms; before ${JSON.stringify(r.before)}, peak ${JSON.stringify(r.peak)}, after ${JSON.stringify(r.after)}`;
+  console.log(line);
+  test.info().annotations.push({ type: 'swap cycles', description: line });
+  expect(r.failures).toEqual([]);
+  expect(r.after, line).toEqual(r.before);
+  // Not vacuous: the swapped scene compiled programs of its own, all released by restore().
+  expect(r.peak.programs, line).toBeGreaterThan(r.before.programs);
+  expect(r.distinctOriginals, 'eleven materials: 1 + 1 + 1 + 1 + 3 + 3 + 1 (shared)').toBe(11);
+  expect(r.made, 'one made material per distinct original, every swap').toBe(r.distinctOriginals * cycles);
+  expect(r.disposedOnce, 'every made material disposed exactly once by its restore()').toBe(r.made);
+  expect(r.userDisposals, 'nothing the user owns disposed').toBe(0);
+  expect(r.warnings, 'one console.warn a swap (the ShaderMaterial mesh), none from restore()').toBe(cycles);
+  expect(errors).toEqual([]);
+});
