@@ -34,6 +34,35 @@ export function specularScale(shininess: number): number {
   return (shininess + 2) / 8;
 }
 
+/** Every option of `ShadingMaterial`'s constructor, in documentation order. */
+export const SHADING_MATERIAL_OPTION_KEYS = [
+  'shading',
+  'lighting',
+  'celBands',
+  'ka',
+  'kd',
+  'ks',
+  'shininess',
+  'lights',
+  'map',
+  'vertexColors',
+  'emissive',
+  'emissiveMap',
+  'opacity',
+  'transparent',
+  'alphaTest',
+  'alphaMap',
+  'normalMap',
+  'normalScale',
+] as const satisfies readonly (keyof ShadingMaterialOptions)[];
+// An option missing from the list is a type error here.
+const _complete: [
+  Exclude<keyof ShadingMaterialOptions, (typeof SHADING_MATERIAL_OPTION_KEYS)[number]>,
+] extends [never]
+  ? true
+  : never = true;
+void _complete;
+
 /** The three.js mesh materials that convert, by three's type flags (node materials carry the same flags). */
 export type ConvertibleKind = 'basic' | 'lambert' | 'phong' | 'standard' | 'physical' | 'toon';
 
@@ -242,8 +271,8 @@ export interface ShadingMaterialKind<M extends Material, O extends object> {
   make(options: O): M;
   /** The constructor options it takes; the carried-over options it does not take are dropped. */
   readonly optionKeys: readonly string[];
-  /** The kinds it cannot draw, with the reason (refused with a TypeError). */
-  readonly refused?: Readonly<Partial<Record<ConvertibleKind, string>>>;
+  /** Why it cannot draw a kind (refused with a TypeError), or undefined when it can. */
+  refused?(kind: ConvertibleKind): string | undefined;
 }
 
 /** Throws a TypeError naming `owner`'s `material` parameter unless it is a three.js Material. */
@@ -270,7 +299,7 @@ export function convertWith<M extends Material, O extends object>(
   if (carried === null) {
     throw new TypeError(`${kind.owner}: cannot convert material ${unsupportedReason(source)}`);
   }
-  const refused = kind.refused?.[carried.kind];
+  const refused = kind.refused?.(carried.kind);
   if (refused !== undefined) {
     throw new TypeError(`${kind.owner}: cannot convert material ${String(source.type)}: ${refused}`);
   }
@@ -279,9 +308,8 @@ export function convertWith<M extends Material, O extends object>(
   for (const key of kind.optionKeys) if (merged[key] !== undefined) options[key] = merged[key];
   const made = kind.make(options as O);
   const target = made as unknown as Record<string, unknown>;
-  for (const key of MATERIAL_OPTIONS) {
-    if (!kind.optionKeys.includes(key)) target[key] = merged[key];
-  }
+  // three's Material has them: set on a class whose constructor does not take them (already checked otherwise).
+  for (const key of MATERIAL_OPTIONS) target[key] = merged[key];
   for (const [key, value] of Object.entries(carried.properties)) target[key] = value;
   return made;
 }

@@ -202,7 +202,7 @@ describe('swapMaterials: restore', () => {
   it('leaves an object alone whose material the user replaced after the swap', () => {
     const original = new MeshPhongMaterial();
     const mine = new MeshLambertMaterial();
-    const mesh = new Mesh(geometry, original);
+    const mesh = new Mesh<BufferGeometry, Material>(geometry, original);
     const swap = swapMaterials(mesh);
     mesh.material = mine;
     swap.restore();

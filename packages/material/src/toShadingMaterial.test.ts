@@ -57,7 +57,7 @@ function decorate<T extends Material>(material: T): T {
   m.transparent = true;
   m.alphaTest = 0.25;
   m.vertexColors = true;
-  if ('fog' in m) m.fog = false;
+  if ('fog' in m) (m as unknown as { fog: boolean }).fog = false;
   return material;
 }
 
