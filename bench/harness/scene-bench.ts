@@ -15,19 +15,14 @@ import * as THREE from 'three';
 import {
   type BufferGeometry,
   Color,
-  DirectionalLight,
   Float32BufferAttribute,
-  Fog,
   GLSL3,
-  InstancedMesh,
   type Material,
-  Matrix4,
   Mesh,
   MeshLambertMaterial,
   MeshPhongMaterial,
   type Object3D,
   PerspectiveCamera,
-  PointLight,
   Scene,
   ShaderMaterial,
   TorusKnotGeometry,
@@ -36,6 +31,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { sphereGeometry } from '../../tests/harness/material-sphere';
+import { buildRealisticScene, realisticGeometries } from './realistic-scene';
 
 /** A variant of the realistic scene. */
 export interface RealisticVariant {
@@ -174,56 +170,16 @@ async function gpuTimes(queries: WebGLQuery[]): Promise<number[]> {
 
 // ── The realistic scene ─────────────────────────────────────────────────────────────────────────────────
 
-/** Instances per side of the 10 × 10 × 10 lattice, and their spacing (world units; sphere radius 1). */
-const side = 10;
-const spacing = 3;
-const realisticGeometries = {
-  indexed: new SubdivisionSphereGeometry({ level: 3, normals: 'smooth', indexed: true }),
-  'non-indexed': new SubdivisionSphereGeometry({ level: 3, normals: 'smooth', indexed: false }),
-  prepared: null as BufferGeometry | null,
-};
-
-/** The 1,000 instance matrices and colours, the same for every variant (no randomness). */
-function fillInstances(mesh: InstancedMesh): void {
-  const m = new Matrix4();
-  const c = new Color();
-  let i = 0;
-  const half = ((side - 1) * spacing) / 2;
-  for (let x = 0; x < side; x++) {
-    for (let y = 0; y < side; y++) {
-      for (let z = 0; z < side; z++) {
-        m.makeTranslation(x * spacing - half, y * spacing - half, z * spacing - half);
-        mesh.setMatrixAt(i, m);
-        mesh.setColorAt(i, c.setHSL(((x * 7 + y * 3 + z * 5) % 20) / 20, 0.6, 0.55));
-        i++;
-      }
-    }
-  }
-}
+/** The prepared geometry of flat shading, built on first use by the module of the first variant that asks. */
+let preparedGeometry: BufferGeometry | null = null;
 
 const realisticScenes = new Map<string, { scene: Scene; camera: PerspectiveCamera }>();
 
+/** The realistic scene (realistic-scene.ts) wearing the variant's material; built once per variant. */
 function realisticScene(variant: RealisticVariant): { scene: Scene; camera: PerspectiveCamera } {
   const key = JSON.stringify(variant);
   let built = realisticScenes.get(key);
   if (built !== undefined) return built;
-  const scene = new Scene();
-  scene.background = new Color(0x1a1d22);
-  scene.fog = new Fog(0x1a1d22, 35, 95);
-  const pointColors = [0xffe0c0, 0xc0d8ff, 0xffffff];
-  const pointPositions: Array<[number, number, number]> = [
-    [-20, 18, 25],
-    [22, -6, 18],
-    [0, 25, -10],
-  ];
-  for (let i = 0; i < 3; i++) {
-    const light = new PointLight(pointColors[i], 400, 0, 2);
-    light.position.set(...pointPositions[i]);
-    scene.add(light);
-  }
-  const sun = new DirectionalLight(0xffffff, 0.8);
-  sun.position.set(5, 10, 7);
-  scene.add(sun);
   let mat: Material;
   let geometry: BufferGeometry = realisticGeometries.indexed;
   if (variant.kind === 'shadelab') {
@@ -239,8 +195,8 @@ function realisticScene(variant: RealisticVariant): { scene: Scene; camera: Pers
     if (shading === 'flat') {
       const kind = variant.geometry ?? 'prepared';
       if (kind === 'prepared') {
-        realisticGeometries.prepared ??= module.flatShadingGeometry(realisticGeometries.indexed);
-        geometry = realisticGeometries.prepared;
+        preparedGeometry ??= module.flatShadingGeometry(realisticGeometries.indexed);
+        geometry = preparedGeometry;
       } else geometry = realisticGeometries[kind];
     }
   } else {
@@ -250,12 +206,7 @@ function realisticScene(variant: RealisticVariant): { scene: Scene; camera: Pers
         ? new MeshPhongMaterial({ color, specular: new Color(0.5, 0.5, 0.5), shininess: 32 })
         : new MeshLambertMaterial({ color });
   }
-  const mesh = new InstancedMesh(geometry, mat, side ** 3);
-  fillInstances(mesh);
-  scene.add(mesh);
-  const camera = new PerspectiveCamera(50, width / height, 0.5, 200);
-  camera.position.set(30, 22, 38);
-  camera.lookAt(0, 0, 0);
+  const { scene, camera } = buildRealisticScene(mat, geometry, width / height);
   built = { scene, camera };
   realisticScenes.set(key, built);
   return built;
