@@ -27,6 +27,19 @@ interface Variant {
   lighting: 'phong' | 'blinn-phong';
   celBands: number;
 }
+/** three's surface properties on both materials (see the harness's SurfaceCase). */
+interface SurfaceCase {
+  map?: boolean;
+  vertexColors?: 'rgb' | 'rgba';
+  instanceColor?: boolean;
+  emissive?: boolean;
+  emissiveMap?: boolean;
+  opacity?: number;
+  transparent?: boolean;
+  alphaTest?: number;
+  alphaMap?: boolean;
+  side?: 'front' | 'back' | 'double';
+}
 interface Harness {
   backendInfo(
     b: Backend,
@@ -35,6 +48,7 @@ interface Harness {
     b: Backend,
     v: Variant,
     scenario?: Scenario,
+    surface?: SurfaceCase,
   ): Promise<{
     covered: number;
     compared: number;
@@ -48,6 +62,7 @@ interface Harness {
     b: Backend,
     v: Variant,
     scenario?: Scenario,
+    surface?: SurfaceCase,
   ): Promise<{ covered: number; maxDelta: number; differing: number; coverageMismatch: number }>;
   errors(): { options: string; webgl: string; node: string }[];
   fogEffect(b: Backend, v: Variant): Promise<number>;
@@ -261,6 +276,83 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
         [backend, variant] as const,
       );
       expect(fogged, `${backend} ${JSON.stringify(variant)}`).toBeGreaterThan(1000);
+    }
+    expect(problems).toEqual([]);
+  });
+}
+
+/** The surface cases: each feature alone, then together. */
+const SURFACES: SurfaceCase[] = [
+  { map: true },
+  { vertexColors: 'rgb' },
+  { map: true, vertexColors: 'rgb', instanceColor: true },
+  { emissive: true },
+  { emissive: true, emissiveMap: true, map: true },
+  { opacity: 0.6, transparent: true },
+  { map: true, vertexColors: 'rgba', alphaMap: true, opacity: 0.9, transparent: true },
+  { map: true, vertexColors: 'rgba', alphaTest: 0.4 },
+];
+const SURFACE_VARIANTS: Variant[] = (['flat', 'gouraud', 'phong'] as const).map((shading) => ({
+  shading,
+  lighting: 'blinn-phong',
+  celBands: 0,
+}));
+
+for (const backend of ['webgpu', 'webgl2'] as const) {
+  test(`${backend} backend: map, vertexColors, instanceColor, emissive, emissiveMap, opacity, transparent, alphaTest and alphaMap in each shading = shade() with the tint (texel × vertex colour × instance colour on ka and kd, never ks; per fragment in every shading), emissive and alpha, within 2/255`, async ({
+    page,
+  }) => {
+    test.setTimeout(180_000);
+    const problems = await open(page);
+    for (const surface of SURFACES) {
+      for (const variant of [
+        ...SURFACE_VARIANTS,
+        { shading: 'phong', lighting: 'phong', celBands: 4 } as const,
+      ]) {
+        const stats = await page.evaluate(
+          ([b, v, sf]) => (window as never as { harness: Harness }).harness.compare(b, v, 'lecture', sf),
+          [backend, variant, surface] as const,
+        );
+        const label = `${backend} ${JSON.stringify(surface)} ${JSON.stringify(variant)} ${JSON.stringify(stats.worst)}`;
+        expect(stats.compared, label).toBeGreaterThan(1500);
+        expect(stats.mismatches, label).toBe(0);
+        expect(stats.maxError, label).toBeLessThanOrEqual(2);
+        // Without a texture or alpha, exact flat shading is one colour per face (the vertex colour of the
+        // triangle's last vertex, ShadingMaterial's, whichever vertex the backend's flat varyings come from).
+        if (variant.shading === 'flat' && !surface.map && !surface.emissiveMap && !surface.transparent) {
+          expect(stats.facesChecked, label).toBeGreaterThan(40);
+          expect(stats.facesMultiColour, label).toBe(0);
+        }
+      }
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend} backend: the surface features = WebGLRenderer + ShadingMaterial within 2/255, same coverage, front, back and both sides`, async ({
+    page,
+  }) => {
+    test.setTimeout(180_000);
+    const problems = await open(page);
+    const cases: SurfaceCase[] = [
+      ...SURFACES,
+      { map: true, vertexColors: 'rgb', emissive: true, side: 'double' },
+      { map: true, alphaTest: 0.6, side: 'double' },
+      { map: true, vertexColors: 'rgb', side: 'back' },
+    ];
+    for (const surface of cases) {
+      // Flat shading of an InstancedMesh: ShadingMaterial lights each face at its centroid, ShadingNodeMaterial
+      // per fragment with the face normal (both against shade() above).
+      for (const variant of SURFACE_VARIANTS.filter((v) => v.shading !== 'flat' || !surface.instanceColor)) {
+        const stats = await page.evaluate(
+          ([b, v, sf]) =>
+            (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'lecture', sf),
+          [backend, variant, surface] as const,
+        );
+        const label = `${backend} ${JSON.stringify(surface)} ${JSON.stringify(variant)} ${JSON.stringify(stats)}`;
+        expect(stats.covered, label).toBeGreaterThan(2000);
+        expect(stats.coverageMismatch, label).toBe(0);
+        expect(stats.maxDelta, label).toBeLessThanOrEqual(2);
+      }
     }
     expect(problems).toEqual([]);
   });

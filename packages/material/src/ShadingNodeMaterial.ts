@@ -4,12 +4,14 @@ import {
   attribute,
   batchColor,
   cameraViewMatrix,
+  diffuseColor,
   float,
   frontFacing,
   instanceColor,
   ivec2,
   lightingContext,
   lightViewPosition,
+  materialReference,
   max,
   min,
   mix,
@@ -24,6 +26,7 @@ import {
   varying,
   vec3,
   vec4,
+  vertexColor,
   vertexIndex,
 } from 'three/tsl';
 import {
@@ -40,7 +43,11 @@ import {
   NearestFilter,
   NodeMaterial,
   NodeUpdateType,
+  type NormalMapTypes,
   RGBAFormat,
+  TangentSpaceNormalMap,
+  type Texture,
+  Vector2,
   Vector3,
 } from 'three/webgpu';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
@@ -52,12 +59,19 @@ import {
   checkShading,
   SHADING_DEFAULTS,
   type Shading,
-  type ShadingOptions,
 } from './options.js';
 import { PhongLight } from './PhongLight.js';
 import { provokingVertexOf } from './provokingVertexOf.js';
+import type { ShadingMaterialOptions } from './ShadingMaterial.js';
 import { type Lighting, MIN_ATTENUATION_DENOMINATOR } from './shade.js';
-import { type ColorInput, checkColorChannels, checkNonNegative, setColor } from './validate.js';
+import {
+  type ColorInput,
+  checkColorChannels,
+  checkNonNegative,
+  checkTexture,
+  checkUnit,
+  setColor,
+} from './validate.js';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
 type N = any;
@@ -67,8 +81,12 @@ const OWNER = 'ShadingNodeMaterial';
 /** 1/π: three's factor of every light's colour (BRDF_Lambert); see `shade()`. */
 const RECIPROCAL_PI = 1 / Math.PI;
 
-/** Options of {@link ShadingNodeMaterial}: the lecture's options, the same as `ShadingMaterial`'s. */
-export type ShadingNodeMaterialOptions = ShadingOptions;
+/**
+ * Options of {@link ShadingNodeMaterial}: `ShadingMaterial`'s, defined once (the lecture's options and three's
+ * surface properties by their names: `map`, `vertexColors`, `emissive`, `emissiveMap`, `opacity`,
+ * `transparent`, `alphaTest`, `alphaMap`, `normalMap`, `normalScale`), with the same defaults and checks.
+ */
+export type ShadingNodeMaterialOptions = ShadingMaterialOptions;
 
 /** A PhongLight's uniforms, refreshed once per frame (its world position is read by three's light nodes). */
 class PhongLightNode extends AnalyticLightNode<Light> {
@@ -146,6 +164,23 @@ export interface Surface {
    * same pass (two lighting passes cannot share three's light nodes in one shader).
    */
   back?: N;
+  /**
+   * With `back`, a vec3 variable that receives the other side's ks part instead of `back` (see
+   * {@link LightingSplit}).
+   */
+  backSpecular?: N;
+}
+
+/**
+ * How a lit colour is split for a texel applied per fragment after vertex lighting (gouraud, exact flat), as
+ * `ShadingMaterial`'s SHADING_SPLIT: the lighting returns the ka/kd part, and `specular` (a vec3 variable,
+ * `toVar()`, starting at 0) receives the ks part.
+ */
+export interface LightingSplit {
+  /** What multiplies ka and kd (not ks): instance colour × batch colour × vertex colour × texel. @default none */
+  tint?: N;
+  /** A vec3 variable receiving the ks part (the lighting then returns the ka/kd part only). */
+  specular?: N;
 }
 
 /** The lecture's equation as three's lighting model: one direct() per light, ambient through indirect(). */
@@ -154,6 +189,7 @@ class LectureLightingModel extends LightingModel {
     private readonly material: ShadingNodeMaterial,
     private readonly surface: Surface,
     private readonly uniforms: { ka: N; kd: N; ks: N; shininess: N },
+    private readonly specular?: N,
   ) {
     super();
   }
@@ -193,7 +229,7 @@ class LectureLightingModel extends LightingModel {
   }
 
   override direct(data: N): void {
-    const { n, v, back } = this.surface;
+    const { n, v, back, backSpecular } = this.surface;
     const { ka, kd, ks, shininess } = this.uniforms;
     let ambient: N = null;
     const { reflectedLight } = data;
@@ -249,15 +285,17 @@ class LectureLightingModel extends LightingModel {
     };
     const [diffuse, spec] = side(1);
     reflectedLight.directDiffuse.addAssign(kd.mul(id).mul(diffuse.mul(att)));
-    reflectedLight.directSpecular.addAssign(ks.mul(is).mul(spec.mul(att)));
+    // The ks part: with the lighting split (a texel per fragment after vertex lighting), into its own variable.
+    (this.specular ?? reflectedLight.directSpecular).addAssign(ks.mul(is).mul(spec.mul(att)));
     if (back !== undefined) {
       const [backDiffuse, backSpec] = side(-1);
-      back.addAssign(
-        kd
-          .mul(id)
-          .mul(backDiffuse.mul(att))
-          .add(ks.mul(is).mul(backSpec.mul(att))),
-      );
+      const backDiffuseTerm = kd.mul(id).mul(backDiffuse.mul(att));
+      const backSpecularTerm = ks.mul(is).mul(backSpec.mul(att));
+      if (backSpecular === undefined) back.addAssign(backDiffuseTerm.add(backSpecularTerm));
+      else {
+        back.addAssign(backDiffuseTerm);
+        backSpecular.addAssign(backSpecularTerm);
+      }
       if (ambient !== null) back.addAssign(ambient);
     }
   }
@@ -267,6 +305,14 @@ class LectureLightingModel extends LightingModel {
     const { irradiance, reflectedLight } = builder.context;
     reflectedLight.indirectDiffuse.addAssign(irradiance.mul(this.uniforms.ka).mul(RECIPROCAL_PI));
   }
+}
+
+/** An InstancedMesh's instance colour or a BatchedMesh's colour, or null. */
+function instanceTint(builder: N): N {
+  const object = builder.object ?? {};
+  if (object.instanceColor != null) return instanceColor;
+  if (object.isBatchedMesh === true && object._colorsTexture != null) return (batchColor as N).rgb;
+  return null;
 }
 
 /** The unit vector from view-space point `p` towards a perspective eye at the origin; +z at the eye. */
@@ -309,26 +355,39 @@ function normalToView(n: N): N {
 /** The geometries already warned about their provoking vertex. */
 const _warnedProvoking = /* @__PURE__ */ new WeakSet<BufferGeometry>();
 
-/** Texels per row of the face texture. */
+/** Texels per row of the face textures. */
 const FACE_TEXTURE_WIDTH = 2048;
 const _faceTextures = /* @__PURE__ */ new WeakMap<
   BufferGeometry,
-  { texture: DataTexture; version: number }
+  Map<string, { texture: DataTexture; version: number }>
 >();
 
-/** Vertex i's object-space position at texel i (RGBA float: WebGPU has no RGB float textures). */
-function faceTexture(geometry: BufferGeometry): DataTexture {
-  const position = geometry.getAttribute('position');
-  const version = 'version' in position ? (position.version as number) : 0;
-  const cached = _faceTextures.get(geometry);
+/**
+ * Vertex i's attribute `name` (`position`: object-space xyz, w = 1; `color`: RGBA, alpha 1 for RGB) at texel i
+ * (RGBA float: WebGPU has no RGB float textures), cached per geometry and attribute version.
+ */
+function faceTexture(geometry: BufferGeometry, name: 'position' | 'color'): DataTexture {
+  const attribute = geometry.getAttribute(name);
+  const version = 'version' in attribute ? (attribute.version as number) : 0;
+  let textures = _faceTextures.get(geometry);
+  if (textures === undefined) {
+    const created = new Map<string, { texture: DataTexture; version: number }>();
+    textures = created;
+    _faceTextures.set(geometry, created);
+    geometry.addEventListener('dispose', () => {
+      for (const { texture } of created.values()) texture.dispose();
+    });
+  }
+  const cached = textures.get(name);
   if (cached !== undefined && cached.version === version) return cached.texture;
-  const height = Math.max(1, Math.ceil(position.count / FACE_TEXTURE_WIDTH));
+  const height = Math.max(1, Math.ceil(attribute.count / FACE_TEXTURE_WIDTH));
   const data = new Float32Array(4 * FACE_TEXTURE_WIDTH * height);
-  for (let i = 0; i < position.count; i++) {
-    data[4 * i] = position.getX(i);
-    data[4 * i + 1] = position.getY(i);
-    data[4 * i + 2] = position.getZ(i);
-    data[4 * i + 3] = 1;
+  const four = attribute.itemSize > 3;
+  for (let i = 0; i < attribute.count; i++) {
+    data[4 * i] = attribute.getX(i);
+    data[4 * i + 1] = attribute.getY(i);
+    data[4 * i + 2] = attribute.getZ(i);
+    data[4 * i + 3] = four ? attribute.getW(i) : 1;
   }
   const texture = cached?.texture ?? new DataTexture(data, FACE_TEXTURE_WIDTH, height, RGBAFormat, FloatType);
   if (cached !== undefined) texture.image = { data, width: FACE_TEXTURE_WIDTH, height } as never;
@@ -337,9 +396,13 @@ function faceTexture(geometry: BufferGeometry): DataTexture {
   texture.generateMipmaps = false;
   texture.flipY = false;
   texture.needsUpdate = true;
-  if (cached === undefined) geometry.addEventListener('dispose', () => texture.dispose());
-  _faceTextures.set(geometry, { texture, version });
+  textures.set(name, { texture, version });
   return texture;
+}
+
+/** Vertex `i`'s texel of a face texture. */
+function faceTexel(texture: DataTexture, i: N): N {
+  return textureLoad(texture, ivec2(i.mod(FACE_TEXTURE_WIDTH), i.div(FACE_TEXTURE_WIDTH))) as N;
 }
 
 /**
@@ -404,6 +467,31 @@ export class ShadingNodeMaterial extends NodeMaterial {
   // The message of the in-place problem last reported (null once the values are valid again).
   #reported: string | null = null;
   readonly #shininessNode = uniform(SHADING_DEFAULTS.shininess);
+  readonly #emissive = new Color(0, 0, 0);
+  // What the GPU adds: emissive as last found valid.
+  readonly #emissiveNode: N = uniform(new Color(0, 0, 0));
+  #opacity = 1;
+
+  /**
+   * three's `map`: a colour texture (its `colorSpace` decoded to linear as three decodes it) whose texel
+   * multiplies ka and kd (not ks); its alpha multiplies the opacity. Sampled per fragment in every shading
+   * (gouraud and flat pass the ka/kd part and the ks part of their colours separately). Adding or removing it
+   * recompiles, swapping it for another texture does not. @default null
+   */
+  map: Texture | null = null;
+  /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
+  alphaMap: Texture | null = null;
+  /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingNodeMaterial.emissive}. @default null */
+  emissiveMap: Texture | null = null;
+  /**
+   * three's `normalMap`: perturbs the normal per fragment, phong shading only (gouraud and flat shading have no
+   * per-fragment normal: it is ignored there, with one console warning). @default null
+   */
+  normalMap: Texture | null = null;
+  /** three's `normalMapType`: `TangentSpaceNormalMap` or `ObjectSpaceNormalMap`. @default TangentSpaceNormalMap */
+  normalMapType: NormalMapTypes = TangentSpaceNormalMap;
+  /** three's `normalScale`: scales the tangent-space normal map's x and y (finite). @default Vector2(1, 1) */
+  readonly normalScale = new Vector2(1, 1);
 
   /**
    * @param options - Shading, lighting, reflectances and lights; each one omitted takes its default (see
@@ -418,10 +506,19 @@ export class ShadingNodeMaterial extends NodeMaterial {
     ks = SHADING_DEFAULTS.ks,
     shininess = SHADING_DEFAULTS.shininess,
     lights = [],
+    map = null,
+    vertexColors = false,
+    emissive = 0,
+    emissiveMap = null,
+    opacity = 1,
+    transparent = false,
+    alphaTest = 0,
+    alphaMap = null,
+    normalMap = null,
+    normalScale = new Vector2(1, 1),
   }: ShadingNodeMaterialOptions = {}) {
     super();
     this.lights = true;
-    this.colorNode = vec3(1) as never;
     this.shading = shading;
     this.lighting = lighting;
     this.celBands = celBands;
@@ -430,6 +527,19 @@ export class ShadingNodeMaterial extends NodeMaterial {
     this.ks = ks;
     this.shininess = shininess;
     this.phongLights = lights;
+    this.map = checkTexture(`${this.#owner}.map`, map);
+    this.vertexColors = vertexColors === true;
+    this.emissive = emissive;
+    this.emissiveMap = checkTexture(`${this.#owner}.emissiveMap`, emissiveMap);
+    this.opacity = opacity;
+    this.transparent = transparent === true;
+    this.alphaTest = alphaTest;
+    this.alphaMap = checkTexture(`${this.#owner}.alphaMap`, alphaMap);
+    this.normalMap = checkTexture(`${this.#owner}.normalMap`, normalMap);
+    if (!(normalScale instanceof Vector2)) {
+      throw new TypeError(`${this.#owner}.normalScale must be a THREE.Vector2, got ${String(normalScale)}`);
+    }
+    this.normalScale.copy(normalScale);
     this.#uniforms.ka.onRenderUpdate(() => {
       this.#refresh();
     });
@@ -446,6 +556,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
       checkColorChannels(`${this.#owner}.ka`, this.#ka);
       checkColorChannels(`${this.#owner}.kd`, this.#kd);
       checkColorChannels(`${this.#owner}.ks`, this.#ks);
+      checkColorChannels(`${this.#owner}.emissive`, this.#emissive);
     } catch (error) {
       if (!(error instanceof RangeError)) throw error;
       if (error.message !== this.#reported) {
@@ -458,6 +569,37 @@ export class ShadingNodeMaterial extends NodeMaterial {
     (this.#uniforms.ka.value as Color).copy(this.#ka);
     (this.#uniforms.kd.value as Color).copy(this.#kd);
     (this.#uniforms.ks.value as Color).copy(this.#ks);
+    (this.#emissiveNode.value as Color).copy(this.#emissive);
+  }
+
+  /**
+   * three's `emissive`: linear RGB added to the lit colour outside the lighting, before fog and tone mapping
+   * (channels finite ≥ 0; set it with a {@link ColorInput}, a number being a grey level). A uniform: changing
+   * it never recompiles. @default Color(0, 0, 0)
+   */
+  get emissive(): Color {
+    return this.#emissive;
+  }
+  set emissive(value: ColorInput) {
+    setColor(`${this.#owner}.emissive`, this.#emissive, value);
+  }
+
+  /** three's `opacity`, in 0 … 1 (a RangeError otherwise): the alpha, blended when `transparent`. @default 1 */
+  override get opacity(): number {
+    return #opacity in this ? this.#opacity : 1;
+  }
+  override set opacity(value: number) {
+    // three's Material constructor assigns the default before this class's fields exist.
+    if (!(#opacity in this)) return;
+    this.#opacity = checkUnit(`${this.#owner}.opacity`, value);
+  }
+
+  /** three's `alphaTest`, in 0 … 1 (a RangeError otherwise): alpha below it is discarded; 0 = off. @default 0 */
+  override get alphaTest(): number {
+    return super.alphaTest;
+  }
+  override set alphaTest(value: number) {
+    super.alphaTest = checkUnit(`${this.#owner}.alphaTest`, value);
   }
 
   /** Where the lighting is evaluated: `'flat'`, `'gouraud'` or `'phong'`. @default 'phong' */
@@ -544,35 +686,67 @@ export class ShadingNodeMaterial extends NodeMaterial {
    * light another surface (the impostor's ray-cast hit).
    * @param surface - Unit normal `n` and unit vector towards the viewer `v`, view space, nodes.
    * @param positionView - The lit point in view space, when it is not three's `positionView`.
+   * @param split - What multiplies ka and kd (default: an InstancedMesh's instance colour or a BatchedMesh's
+   *   colour), and a variable for the ks part when it is kept apart (see {@link LightingSplit}).
    */
-  protected lightSurface(builder: N, surface: Surface, positionView?: N): N {
+  protected lightSurface(builder: N, surface: Surface, positionView?: N, split: LightingSplit = {}): N {
     // An InstancedMesh's instanceColor and a BatchedMesh's colours multiply ka and kd (not ks), as on
     // ShadingMaterial; three puts them in diffuseColor, which this lighting model does not read.
-    const object = builder.object ?? {};
-    const tint: N =
-      object.instanceColor != null
-        ? instanceColor
-        : object.isBatchedMesh === true && object._colorsTexture != null
-          ? (batchColor as N).rgb
-          : null;
+    const tint: N = split.tint !== undefined ? split.tint : instanceTint(builder);
     const { ka, kd, ks } = this.#uniforms;
-    const model = new LectureLightingModel(this, surface, {
-      ka: tint === null ? ka : (ka as N).mul(tint),
-      kd: tint === null ? kd : (kd as N).mul(tint),
-      ks,
-      shininess: this.#shininessNode,
-    });
+    const model = new LectureLightingModel(
+      this,
+      surface,
+      {
+        ka: tint === null ? ka : (ka as N).mul(tint),
+        kd: tint === null ? kd : (kd as N).mul(tint),
+        ks,
+        shininess: this.#shininessNode,
+      },
+      split.specular,
+    );
     // The scene's PhongLights come with three's lights (their registered light node); the listed ones, which
     // need not be in the scene, as the material's own lightings (the model keeps only them then).
     const node = lightingContext(builder.lightsNode, model, this.#lights.map(phongLightNode) as never) as N;
     return positionView === undefined ? node : node.context({ positionView });
   }
 
-  /** Builds the lighting of the variant (three calls it when it compiles the material). */
+  /**
+   * three's `diffuseColor` as three's NodeMaterial builds it (vertex colours, instance and batch colours,
+   * opacity, alpha test, opaque alpha), from this material's surface: rgb = the texel of `map` (or `colorNode`)
+   * × vertex colour × instance colour, a = `opacity` × texel alpha × vertex alpha × `alphaMap` green (three's
+   * WebGL channel, as `ShadingMaterial` reads it).
+   */
+  override setupDiffuseColor(builder: N): void {
+    const { colorNode, opacityNode } = this;
+    if (colorNode === null) {
+      this.colorNode = (this.map !== null ? materialReference('map', 'texture') : vec4(1)) as never;
+    }
+    if (opacityNode === null && this.alphaMap !== null) {
+      this.opacityNode = (materialReference('opacity', 'float') as N).mul(
+        (materialReference('alphaMap', 'texture') as N).g,
+      );
+    }
+    try {
+      super.setupDiffuseColor(builder);
+    } finally {
+      this.colorNode = colorNode;
+      this.opacityNode = opacityNode;
+    }
+  }
+
+  /** Builds the lighting of the variant (three calls it when it compiles the material), plus the emissive. */
   override setupLighting(builder: N): N {
+    const emissive: N =
+      this.emissiveMap !== null
+        ? this.#emissiveNode.mul((materialReference('emissiveMap', 'texture') as N).rgb)
+        : this.#emissiveNode;
+    return this.#lit(builder).add(emissive);
+  }
+
+  /** The lit colour of the variant: phong or flat by derivatives per fragment, gouraud and flat per vertex. */
+  #lit(builder: N): N {
     const geometry: BufferGeometry = builder.geometry;
-    const light = (surface: Surface, positionView?: N): N =>
-      this.lightSurface(builder, surface, positionView);
     const orthographic = builder.camera?.isOrthographicCamera === true;
     const towardsViewer = (p: N): N => (orthographic ? vec3(0, 0, 1) : towardsEye(p));
     const hasNormal = geometry.getAttribute('normal') !== undefined;
@@ -582,28 +756,53 @@ export class ShadingNodeMaterial extends NodeMaterial {
         `${this.#owner}: ${this.#shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
       );
     }
+    // Per fragment, diffuseColor.rgb (texel × vertex colour × instance colour) multiplies ka and kd.
+    const fragmentTint = { tint: (diffuseColor as N).rgb };
     const localNormal: N = hasNormal ? normalLocal : positionLocal;
     if (this.#shading === 'phong') {
       const v = onStack(towardsViewer(positionView));
       // Unit vertex normals interpolated (zero where the matrix flattens the surface away); a back face
       // (DoubleSide, BackSide) is lit with its normal turned round, as three's normalView does.
       const n = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
-      return light({ n, v });
+      return this.lightSurface(builder, { n, v }, undefined, fragmentTint);
     }
+    // Per vertex: the instance and vertex colours multiply ka and kd there; a texel (of `map`, or `colorNode`)
+    // multiplies the interpolated ka/kd part per fragment, the ks part passed apart (ShadingMaterial's split).
+    // (Not diffuseColor.rgb, which holds the interpolated vertex and instance colours too.)
+    const texel: N =
+      this.colorNode !== null
+        ? vec4(this.colorNode as never).rgb
+        : this.map !== null
+          ? (materialReference('map', 'texture') as N).rgb
+          : null;
+    const face = this.#shading === 'flat' ? this.#flatFace(builder, geometry) : null;
+    const vertexTint = this.#vertexTint(builder, face !== null && geometry.index === null);
     // The vertex stage cannot tell a front face from a back one: it lights the side(s) the material draws, the
     // back with the normal turned round, and the fragment takes the colour of the side it is on.
-    // Both sides (DoubleSide) are lit in one pass, the back into a variable of its own.
-    const sided = (lit: (sign: number, back?: N) => N, interpolate: (node: N) => N): N => {
-      if (this.side !== DoubleSide) return interpolate(lit(this.side === BackSide ? -1 : 1));
-      const back = vec3(0).toVar();
-      return select(frontFacing, interpolate(lit(1, back)), interpolate(back));
+    // Both sides (DoubleSide) are lit in one pass, the back into variables of its own.
+    const sided = (surface: (sign: number) => Surface, view: N, interpolate: (node: N) => N): N => {
+      const double = this.side === DoubleSide;
+      const front = surface(double || this.side !== BackSide ? 1 : -1);
+      const specular = texel !== null ? vec3(0).toVar() : undefined;
+      if (double) {
+        front.back = vec3(0).toVar();
+        if (texel !== null) front.backSpecular = vec3(0).toVar();
+      }
+      const lit = interpolate(this.lightSurface(builder, front, view, { tint: vertexTint, specular }));
+      const colour = (part: N, ks: N | undefined): N => (ks === undefined ? part : part.mul(texel).add(ks));
+      const frontColour = colour(lit, specular === undefined ? undefined : interpolate(specular));
+      if (!double) return frontColour;
+      const backColour = colour(
+        interpolate(front.back),
+        front.backSpecular === undefined ? undefined : interpolate(front.backSpecular),
+      );
+      return select(frontFacing, frontColour, backColour);
     };
     if (this.#shading === 'gouraud') {
       const v = towardsViewer(positionView);
       const n = unitOr(normalToView(localNormal), v);
-      return sided((sign, back) => light({ n: n.mul(sign), v, back }), varying);
+      return sided((sign) => ({ n: n.mul(sign), v }), undefined, varying);
     }
-    const face = this.#flatFace(builder, geometry);
     if (face !== null) {
       // The vertex stage lights the face's centroid with its normal; every vertex that can provoke computes it.
       const [a, b, c] = face;
@@ -611,14 +810,36 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const v = towardsViewer(view);
       const n = unitOr(normalToView(b.sub(a).cross(c.sub(a))), v);
       return sided(
-        (sign, back) => light({ n: n.mul(sign), v, back }, view),
+        (sign) => ({ n: n.mul(sign), v }),
+        view,
         (node) => varying(node).setInterpolation('flat'),
       );
     }
     // The derivatives' normal faces the viewer: the visible side's, whichever it is.
     const v = onStack(towardsViewer(positionView));
     const n = unitOr((positionView as N).dFdx().cross((positionView as N).dFdy()), v);
-    return light({ n, v });
+    return this.lightSurface(builder, { n, v }, undefined, fragmentTint);
+  }
+
+  /**
+   * What multiplies ka and kd in the vertex stage (gouraud, exact flat): instance colour × batch colour × the
+   * vertex colour (with `vertexColors` and a `color` attribute); null when none.
+   */
+  #vertexTint(builder: N, soup: boolean): N {
+    const tints: N[] = [];
+    const instance = instanceTint(builder);
+    if (instance !== null) tints.push(instance);
+    const geometry: BufferGeometry = builder.geometry;
+    if (this.vertexColors && geometry.hasAttribute('color')) {
+      // Exact flat shading of a triangle soup: the colour of the triangle's last vertex (WebGL's provoking
+      // vertex, ShadingMaterial's colour) on either backend, read from a face texture as the corners are.
+      tints.push(
+        soup
+          ? faceTexel(faceTexture(geometry, 'color'), (vertexIndex as N).div(3).mul(3).add(2)).rgb
+          : (vertexColor() as N).rgb,
+      );
+    }
+    return tints.length === 0 ? null : tints.reduce((a, b) => a.mul(b));
   }
 
   /**
@@ -640,12 +861,9 @@ export class ShadingNodeMaterial extends NodeMaterial {
     if (geometry.index === null) {
       // A triangle soup: every vertex of a triangle reads the triangle's three corners from the face texture,
       // so whichever vertex provokes gives the same colour.
-      const texture = faceTexture(geometry);
+      const texture = faceTexture(geometry, 'position');
       const first = (vertexIndex as N).div(3).mul(3);
-      const corner = (k: number): N => {
-        const i = first.add(k);
-        return (textureLoad(texture, ivec2(i.mod(FACE_TEXTURE_WIDTH), i.div(FACE_TEXTURE_WIDTH))) as N).xyz;
-      };
+      const corner = (k: number): N => faceTexel(texture, first.add(k)).xyz;
       return [corner(0), corner(1), corner(2)];
     }
     if (geometry.getAttribute(FLAT_CORNERS[0]) === undefined) return null;
@@ -674,6 +892,14 @@ export class ShadingNodeMaterial extends NodeMaterial {
     this.#ka.copy(source.ka);
     this.#kd.copy(source.kd);
     this.#ks.copy(source.ks);
+    this.#emissive.copy(source.emissive);
+    this.#opacity = source.opacity;
+    this.map = source.map;
+    this.alphaMap = source.alphaMap;
+    this.emissiveMap = source.emissiveMap;
+    this.normalMap = source.normalMap;
+    this.normalMapType = source.normalMapType;
+    this.normalScale.copy(source.normalScale);
     this.#refresh();
     this.#shininessNode.value = source.shininess;
     return this;
