@@ -1,35 +1,11 @@
 import type { ThreeElements } from '@react-three/fiber';
-import type { ShadingMaterialOptions } from '@shadelab/material';
+import { SHADING_MATERIAL_OPTION_KEYS, type ShadingMaterialOptions } from '@shadelab/material';
 import type { ReactNode, Ref } from 'react';
 import type { Object3D } from 'three';
 import { useSwapMaterials } from './useSwapMaterials.js';
 
-/** Every ShadingMaterial option, to tell them from the object's props (checked complete at compile time). */
-const OPTION_KEYS = [
-  'shading',
-  'lighting',
-  'celBands',
-  'ka',
-  'kd',
-  'ks',
-  'shininess',
-  'lights',
-  'map',
-  'vertexColors',
-  'emissive',
-  'emissiveMap',
-  'opacity',
-  'transparent',
-  'alphaTest',
-  'alphaMap',
-  'normalMap',
-  'normalScale',
-] as const satisfies readonly (keyof ShadingMaterialOptions)[];
-// A ShadingMaterial option missing from OPTION_KEYS would be passed to the object as a prop: a type error here.
-const _complete: [Exclude<keyof ShadingMaterialOptions, (typeof OPTION_KEYS)[number]>] extends [never]
-  ? true
-  : never = true;
-void _complete;
+/** Every ShadingMaterial option, to tell them from the object's props (`@shadelab/material`'s complete list). */
+const OPTION_KEYS = SHADING_MATERIAL_OPTION_KEYS;
 
 /** Props of {@link ShadedModel}: the object, the ShadingMaterial options, and R3F's props of the object. */
 export interface ShadedModelProps
