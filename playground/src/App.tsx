@@ -16,9 +16,11 @@ import {
   validateState,
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
+import { ModelPicker, modelDropProps, modelNote } from './ui/ModelPicker';
 import { SidePanel } from './ui/SidePanel';
 import { Stats, StatsFeed } from './ui/Stats';
 import type { Update } from './ui/useFolder';
+import { useModel } from './ui/useModel';
 
 type Variant = ShaderSource & { key: string; defines: Record<string, unknown> };
 
@@ -171,6 +173,9 @@ export function App() {
     [update],
   );
 
+  // The user's model (after the effects above: a new viewer and the state are in place when it looks).
+  const model = useModel(viewerRef, state, update);
+
   const tryShader = useCallback(
     (source: ShaderSource) => viewerRef.current?.tryShader(source) ?? { ok: true as const },
     [],
@@ -200,6 +205,7 @@ export function App() {
           role="img"
           aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
           onPointerDown={(e) => e.currentTarget.focus()}
+          {...modelDropProps(model.open)}
         />
         {state.view === 'compare' && !webgpuMode && (
           <ol
@@ -234,6 +240,14 @@ export function App() {
               </button>
             </p>
           ))}
+          {model.message && (
+            <p className={`message ${model.message.kind}`} role="alert" data-testid="model-message">
+              {model.message.text}{' '}
+              <button type="button" onClick={model.dismiss}>
+                dismiss
+              </button>
+            </p>
+          )}
           {errors.map((e) => (
             <p key={e} className="message error" role="alert" data-testid="input-error">
               {e}
@@ -245,7 +259,8 @@ export function App() {
           Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
-          </a>
+          </a>{' '}
+          · <ModelPicker model={model} />
         </p>
       </main>
       <SidePanel
@@ -255,6 +270,7 @@ export function App() {
         clearShader={clearShader}
         webgpu={webgpu}
         gpuShader={gpuShader}
+        modelNote={state.scene === 'model' && model.shown ? modelNote(model.shown) : null}
       />
       <SceneControls state={state} update={update} actions={actions} />
       {state.lights.map((_, i) => (

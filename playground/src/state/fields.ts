@@ -95,8 +95,11 @@ export const DEPTH_MODES = [
   'reversed',
   'reversed-or-logarithmic',
 ] as const satisfies readonly DepthModeRequest[];
-/** Every scene, in the order the picker lists them. */
-export const SCENES = ['sphere', 'instanced', 'skinned', 'textured', 'lights'] as const;
+/**
+ * Every scene, in the order the picker lists them. `'model'` is the user's own glTF: the URL says only that it
+ * is shown; the file's bytes are this browser's (IndexedDB, `engine/modelStore.ts`).
+ */
+export const SCENES = ['sphere', 'instanced', 'skinned', 'textured', 'lights', 'model'] as const;
 /** The renderers the playground switches between (WebGPURenderer runs its WebGL2 backend without WebGPU). */
 export const RENDERERS = ['webgl', 'webgpu'] as const;
 const PROJECTIONS = ['perspective', 'orthographic'] as const satisfies readonly ProjectionType[];

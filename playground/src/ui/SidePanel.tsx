@@ -24,6 +24,8 @@ interface Props {
   /** WebGPU mode: the running backend (null while it starts) and the node material's generated code. */
   webgpu: WebGPUStatus | null;
   gpuShader: GeneratedShader | null;
+  /** What the shown model is and what was swapped (scene `model`), or null. */
+  modelNote?: string | null;
 }
 
 /**
@@ -31,7 +33,7 @@ interface Props {
  * shader view (it collapses to its title), with a splitter between the panel and the shader view; the page
  * remembers all three (`panelLayout.ts`).
  */
-export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuShader }: Props) {
+export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuShader, modelNote }: Props) {
   const panelRef = useRef<HTMLDivElement>(null);
   useRememberFolders(panelRef);
   useVectorLabels(panelRef);
@@ -51,6 +53,12 @@ export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuS
       </div>
       <p className="scene-note" data-testid="scene-note">
         {sceneNote(state.scene)}
+        {modelNote && (
+          <>
+            {' '}
+            <span data-testid="model-note">{modelNote}</span>
+          </>
+        )}
       </p>
       {webgpuMode && (
         <div className="renderer-note" data-testid="renderer-note">

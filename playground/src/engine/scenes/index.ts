@@ -24,10 +24,11 @@ export const SCENE_LABELS: Readonly<Record<SceneName, string>> = {
   skinned: 'skinned + morphing mesh',
   textured: 'textured, normal map',
   lights: "three's lights, fog, clipping",
+  model: 'your model (.glb / .gltf)',
 };
 
 /** Builds one of the scenes that replace the lecture's sphere. */
-export function createScene(name: Exclude<SceneName, 'sphere'>): DemoScene {
+export function createScene(name: Exclude<SceneName, 'sphere' | 'model'>): DemoScene {
   switch (name) {
     case 'instanced':
       return createInstancedScene();
@@ -66,5 +67,7 @@ export function sceneNote(name: SceneName): string {
       return `A torus knot with a checker map (tints ka and kd) and a bump normal map (Phong shading only: gouraud and flat have no per-fragment normal), made in code. ${others}`;
     case 'lights':
       return `Lit by three's hemisphere, ambient, directional, point and spot lights (next to the panel's lights), with fog and a clipping plane. ${others}`;
+    case 'model':
+      return 'Your glTF model, its materials swapped for ShadingMaterials (they keep its colours and maps), lit by a rig of three’s lights: shading, lighting, cel bands, the outline, the camera, the trackball and the compare view apply; ka/kd/ks, shininess and the panel’s lights are the other scenes’; the Sphere folder and the GLSL editor are for the lecture’s sphere only (greyed out).';
   }
 }

@@ -5,7 +5,7 @@
  */
 import { flatShadingGeometry, type ShadingMaterial } from '@shadelab/material';
 import type * as THREE from 'three';
-import type { Shading } from '../../state/schema';
+import type { PlaygroundState, Shading } from '../../state/schema';
 import { createOutlineMesh, type Outline } from '../meshes';
 
 /** One mesh drawn with a ShadingMaterial, its geometry for each shading, and its cel outline. */
@@ -32,6 +32,17 @@ export interface DemoScene {
   leave?(scene: THREE.Scene, renderer: THREE.WebGLRenderer): void;
   /** Frees the geometries, materials and textures. */
   dispose(): void;
+  /**
+   * Sets the panel's material options on the scene, instead of the default (every option and the panel's lights
+   * on each part's material): a loaded model keeps its own colours and lights.
+   */
+  applyMaterial?(options: PlaygroundState['material']): void;
+  /** Sets one shading and cel bands on every material of the scene, instead of on each part's material. */
+  setShading?(shading: Shading, celBands: number): void;
+  /** Advances the scene's animation by `seconds` (each frame's time, from R3F's clock). */
+  step?(seconds: number): void;
+  /** Whether the scene is animating: the viewer asks for the next frame after each frame it draws. */
+  readonly animating?: boolean;
 }
 
 /**

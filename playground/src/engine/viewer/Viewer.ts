@@ -14,6 +14,7 @@ import type { Trackball } from '@shadelab/trackball';
 import type * as THREE from 'three';
 import type { DepthMode, PlaygroundState } from '../../state/schema';
 import type { ShaderCheck, ShaderSource } from '../ShaderProbe';
+import type { DemoScene } from '../scenes';
 import { WebGPUSwitch } from '../webgpu/switch';
 import { applyMovement, applyProjection, applyTrackball } from './applyState';
 import { GpuTimer } from './gpuTimer';
@@ -91,11 +92,8 @@ export class Viewer implements ViewerHost {
     this.input = new ViewInput(this, events);
     this.gpuTimer = new GpuTimer(this.renderer.getContext() as WebGL2RenderingContext, this.onGpuTime);
     this.shader = new ShaderEditing(this);
-    this.picked = new PickedScene(
-      (picked) => this.root.setLectureSphere({ picked }),
-      this.scene,
-      this.renderer,
-    );
+    const mount = (picked: DemoScene | null) => this.root.setLectureSphere({ picked });
+    this.picked = new PickedScene(mount, this.scene, this.renderer, () => this.requestRender());
     this.frames = new FrameCounter(canvas, (ms) => this.events.onFirstFrame?.(ms));
     canvas.addEventListener('webglcontextlost', this.onContextLost);
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
@@ -148,25 +146,24 @@ export class Viewer implements ViewerHost {
     return errors;
   }
 
+  /** The user's model (`scene: 'model'`), built by the app from the file; null frees it (pickedScene.ts). */
+  setModel = (model: DemoScene | null): void => this.picked.setModel(model);
+
+  /** The model shown or waiting to be shown; null when there is none (freed when another scene is picked). */
+  model = (): DemoScene | null => this.picked.modelScene;
+
   /** Puts the move gizmo on light `index` (0-based), or removes it (null). */
-  selectLight(index: number | null) {
-    this.lightRig.select(index);
-  }
+  selectLight = (index: number | null) => this.lightRig.select(index);
 
   /** The current variant's key and its generated GLSL (before any edit). */
-  getShaderSource(): ShaderSource & { key: string; defines: Record<string, unknown> } {
-    return this.shader.source();
-  }
+  getShaderSource = (): ShaderSource & { key: string; defines: Record<string, unknown> } =>
+    this.shader.source();
 
   /** Compiles an edited program off-screen first; only one that compiles and links replaces the rendered one. */
-  tryShader(edited: ShaderSource): ShaderCheck {
-    return this.shader.tryEdit(edited);
-  }
+  tryShader = (edited: ShaderSource): ShaderCheck => this.shader.tryEdit(edited);
 
   /** Drops the edit and goes back to the generated program. */
-  clearShaderOverride() {
-    this.shader.clear();
-  }
+  clearShaderOverride = () => this.shader.clear();
 
   /** Renders at the next animation frame (coalesces many requests into one frame). */
   requestRender() {
@@ -271,9 +268,7 @@ export class Viewer implements ViewerHost {
     });
   }
 
-  private readonly onGpuTime = () => {
-    if (this.applied) this.events.onStats?.(this.stats(Number.NaN));
-  };
+  private readonly onGpuTime = () => this.applied && this.events.onStats?.(this.stats(Number.NaN));
   private readonly onContextLost = () => {
     this.contextLost = true;
     this.gpuTimer.contextLost();

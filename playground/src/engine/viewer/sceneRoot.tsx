@@ -79,6 +79,8 @@ function PickedSceneObjects({ picked }: { picked: DemoScene }) {
     picked.enter?.(scene, gl);
     return () => picked.leave?.(scene, gl);
   }, [picked, scene, gl]);
+  // An animated scene (a model's clip) steps by each frame's time, before the frame is drawn (priority 1).
+  useFrame((_, delta) => picked.step?.(delta));
   return <primitive object={picked.root} />;
 }
 
