@@ -764,6 +764,159 @@ async function fogEffect(backend: Backend, v: Variant): Promise<number> {
   return changed;
 }
 
+/** The fog of {@link fogParity}: half-way (fog factor 0.5) at the front of the sphere, view depth 2. */
+export type FogKind = 'none' | 'range' | 'exp2';
+const FOG_COLOUR = new Color(0.2, 0.4, 0.6);
+function fogOf(kind: FogKind): Fog | FogExp2 | null {
+  if (kind === 'range') return new Fog(FOG_COLOUR, 1.2, 2.8);
+  if (kind === 'exp2') return new FogExp2(FOG_COLOUR, Math.sqrt(Math.LN2) / 2);
+  return null;
+}
+let glCanvas: WebGLRenderer | null = null;
+
+/**
+ * A sphere under three's ambient and directional lights in `fog`, drawn through the output colour space (sRGB),
+ * rows bottom-up: `which` is ShadingNodeMaterial({ ka: c, kd: c, ks: 0 }) or three's MeshPhongNodeMaterial /
+ * MeshLambertNodeMaterial on WebGPURenderer, or ShadingMaterial / MeshPhongMaterial on WebGLRenderer.
+ */
+async function drawFogged(
+  api: Backend | 'webgl',
+  which: 'shading' | 'phong' | 'lambert',
+  fog: FogKind,
+  shading: Shading = 'phong',
+): Promise<Uint8Array> {
+  const c: [number, number, number] = [0.6, 0.35, 0.2];
+  const material =
+    api === 'webgl'
+      ? which === 'shading'
+        ? new ShadingMaterial({ shading, ka: c, kd: c, ks: 0 })
+        : new MeshPhongMaterial({ color: new Color(...c), specular: 0 })
+      : which === 'shading'
+        ? new ShadingNodeMaterial({ shading, ka: c, kd: c, ks: 0 })
+        : which === 'lambert'
+          ? new MeshLambertNodeMaterial({ color: new Color(...c) })
+          : new MeshPhongNodeMaterial({ color: new Color(...c), specular: 0 });
+  const s = new Scene();
+  const mesh = new Mesh(geometry, material);
+  mesh.scale.set(1.2, 1, 1.2);
+  mesh.rotation.set(0.3, 0.5, 0);
+  const sun = new DirectionalLight(new Color(1, 0.95, 0.9), 2.5);
+  sun.position.set(-1, 2, 3);
+  s.add(mesh, sun, new AmbientLight(new Color(0.3, 0.3, 0.35), 1.5));
+  s.fog = fogOf(fog);
+  const camera = new PerspectiveCamera(60, 1, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  camera.lookAt(0, 0, 0);
+  s.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  try {
+    if (api === 'webgl') {
+      // The canvas: three's output conversion in the shader, then fog_fragment in that space (an sRGB render
+      // target would be encoded by the hardware after the shader instead).
+      if (glCanvas === null) {
+        glCanvas = new WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
+        glCanvas.setPixelRatio(1);
+        glCanvas.setSize(SIZE, SIZE, false);
+      }
+      glCanvas.setClearColor(0x0000ff, 1);
+      glCanvas.render(s, camera);
+      const context = glCanvas.getContext();
+      const pixels = new Uint8Array(4 * SIZE * SIZE);
+      context.readPixels(0, 0, SIZE, SIZE, context.RGBA, context.UNSIGNED_BYTE, pixels);
+      return pixels;
+    }
+    const renderer = await gpuRenderer(api);
+    const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+    // The output render target: WebGPURenderer's output pass (colour space) runs as it does for the canvas.
+    renderer.outputColorSpace = SRGBColorSpace;
+    renderer.setOutputRenderTarget(target);
+    renderer.setRenderTarget(null);
+    renderer.setClearColor(0x0000ff, 1);
+    renderer.render(s, camera);
+    const pixels = await readTarget(renderer, target, SIZE);
+    renderer.setOutputRenderTarget(null);
+    target.dispose();
+    return pixels;
+  } finally {
+    material.dispose();
+  }
+}
+
+/** Max |Δ| (1/255) and mean over pixels both pictures cover, away from the silhouette (3 × 3 covered in both). */
+function pictureDelta(a: Uint8Array, b: Uint8Array) {
+  const inside = (p: Uint8Array, x: number, y: number) => {
+    for (let dy = -1; dy <= 1; dy++)
+      for (let dx = -1; dx <= 1; dx++) {
+        const i = 4 * ((y + dy) * SIZE + x + dx);
+        if (hasRgb(p, i, CLEAR)) return false;
+      }
+    return true;
+  };
+  let max = 0;
+  let sum = 0;
+  let n = 0;
+  for (let y = 1; y < SIZE - 1; y++)
+    for (let x = 1; x < SIZE - 1; x++) {
+      if (!inside(a, x, y) || !inside(b, x, y)) continue;
+      const d = maxRgbDelta(a, b, 4 * (y * SIZE + x));
+      max = Math.max(max, d);
+      sum += d;
+      n++;
+    }
+  return { compared: n, max, mean: n > 0 ? sum / n : 0 };
+}
+
+/**
+ * How far the fog moves each covered pixel at the sphere's centre (the 16 × 16 pixels around the middle, where
+ * the fog factor is ≈ 0.5) towards the fog colour, in the 8-bit sRGB output: (fogged − clear) / (fog − clear),
+ * channel-wise (channels where the two differ by ≥ 40/255), averaged.
+ */
+function fogFraction(clear: Uint8Array, fogged: Uint8Array): number {
+  const f = FOG_COLOUR.clone().convertLinearToSRGB();
+  const fog = [f.r, f.g, f.b].map((c) => c * 255);
+  let sum = 0;
+  let n = 0;
+  for (let y = SIZE / 2 - 8; y < SIZE / 2 + 8; y++)
+    for (let x = SIZE / 2 - 8; x < SIZE / 2 + 8; x++) {
+      const i = 4 * (y * SIZE + x);
+      for (let k = 0; k < 3; k++) {
+        if (Math.abs(fog[k] - clear[i + k]) < 40) continue;
+        sum += (fogged[i + k] - clear[i + k]) / (fog[k] - clear[i + k]);
+        n++;
+      }
+    }
+  return n > 0 ? sum / n : Number.NaN;
+}
+
+/**
+ * ShadingNodeMaterial({ ka: c, kd: c, ks: 0 }) against three's MeshPhongNodeMaterial and MeshLambertNodeMaterial on
+ * WebGPURenderer, without and in fog (sRGB output); and how far half-way fog moves a pixel there and on
+ * WebGLRenderer (ShadingMaterial and MeshPhongMaterial blend the fog in the output colour space, three's node
+ * materials in linear before the output conversion).
+ */
+async function fogParity(backend: Backend, fog: FogKind, shading: Shading = 'phong') {
+  const node = await drawFogged(backend, 'shading', fog, shading);
+  const phong = await drawFogged(backend, 'phong', fog);
+  const lambert = await drawFogged(backend, 'lambert', fog);
+  const nodeClear = await drawFogged(backend, 'shading', 'none', shading);
+  const phongClear = await drawFogged(backend, 'phong', 'none');
+  const webgl = await drawFogged('webgl', 'shading', fog, shading);
+  const webglClear = await drawFogged('webgl', 'shading', 'none', shading);
+  const webglPhong = await drawFogged('webgl', 'phong', fog);
+  const webglPhongClear = await drawFogged('webgl', 'phong', 'none');
+  return {
+    againstPhong: pictureDelta(node, phong),
+    againstLambert: pictureDelta(node, lambert),
+    againstWebGL: pictureDelta(node, webgl),
+    fraction: {
+      node: fogFraction(nodeClear, node),
+      phongNode: fogFraction(phongClear, phong),
+      webgl: fogFraction(webglClear, webgl),
+      webglPhong: fogFraction(webglPhongClear, webglPhong),
+    },
+  };
+}
+
 /** The message each material throws for the same bad input (ShadingMaterial's, ShadingNodeMaterial's). */
 function errors() {
   const cases: Record<string, unknown>[] = [
@@ -779,6 +932,17 @@ function errors() {
     { shininess: -1 },
     { lights: [{}] },
     { lights: 'none' },
+    { map: 'texture.png' },
+    { emissiveMap: {} },
+    { alphaMap: 1 },
+    { normalMap: [0, 0, 1] },
+    { normalScale: [1, 1] },
+    { emissive: -1 },
+    { emissive: 'not a colour' },
+    { opacity: 1.5 },
+    { opacity: '1' },
+    { alphaTest: -0.1 },
+    { alphaTest: Number.NaN },
   ];
   return cases.map((options) => ({
     options: JSON.stringify(options),
@@ -884,6 +1048,6 @@ async function sceneLights(backend: Backend) {
   };
 }
 
-const api = { backendInfo, compare, crossRenderer, errors, fogEffect, inPlaceEdits, sceneLights };
+const api = { backendInfo, compare, crossRenderer, errors, fogEffect, fogParity, inPlaceEdits, sceneLights };
 (window as unknown as { harness: typeof api }).harness = api;
 document.body.dataset.ready = '1';
