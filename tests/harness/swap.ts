@@ -9,7 +9,12 @@
 // The loaded MeshStandardMaterials are the 'standard' mode; 'lambert' and 'phong' (specular 0) re-make them as an
 // app tuned for those materials has them, keeping which meshes share a material. three's own pictures are the
 // oracle: coverage, the pixels of diffuse-only materials, the picture after restore().
-import { type ShadingMaterial, type SwappedMaterials, swapMaterials } from '@shadelab/material';
+import {
+  type ShadingMaterial,
+  type SwapMaterialsOptions,
+  type SwappedMaterials,
+  swapMaterials,
+} from '@shadelab/material';
 import {
   AmbientLight,
   AnimationClip,
@@ -108,6 +113,8 @@ export interface CaseReport {
 
 export interface SwapRun {
   mode: MaterialMode;
+  /** The options the swap was given. */
+  options: SwapMaterialsOptions;
   cases: CaseReport[];
   /** The whole canvas after restore() against before the swap. */
   restoreDiffPixels: number;
@@ -152,7 +159,7 @@ export interface CycleRun {
   /** console.warn calls during the cycles (one per swap: the ShaderMaterial mesh). */
   warnings: number;
   failures: string[];
-  /** Wall time of the cycles, ms (reported, not asserted). */
+  /** Time of the loop's JavaScript, ms (reported, not asserted; the GPU work finishes at the read-back after it). */
   ms: number;
 }
 
@@ -168,10 +175,10 @@ export interface SwapHarness {
     sharedLoadedShared: boolean;
     extensionsUsed: string[];
   };
-  run(mode: MaterialMode): SwapRun;
+  run(mode: MaterialMode, options?: SwapMaterialsOptions): SwapRun;
   /** The original and the swapped picture of `mode` as PNG data URLs (to look at; restores after). */
   pictures(mode: MaterialMode): { original: string; swapped: string };
-  cycles(cycles: number, every: number): CycleRun;
+  cycles(cycles: number, every: number, options?: SwapMaterialsOptions): CycleRun;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -651,12 +658,12 @@ function disposalFailures(disposals: Map<Material, number>, failures: string[], 
   if (wrong) failures.push(`${when}: ${wrong} of ${disposals.size} made materials not disposed exactly once`);
 }
 
-function run(mode: MaterialMode): SwapRun {
+function run(mode: MaterialMode, options: SwapMaterialsOptions = {}): SwapRun {
   const slots = setMode(mode);
   const failures: string[] = [];
   const disposalsBefore = userDisposals;
   const original = picture();
-  const [swap, swapWarnings] = capture(() => swapMaterials(root));
+  const [swap, swapWarnings] = capture(() => swapMaterials(root, options));
   const disposals = checkSwapped(slots, swap, failures);
   const swapped = picture();
   for (const m of swap.materials)
@@ -680,6 +687,7 @@ function run(mode: MaterialMode): SwapRun {
   }
   return {
     mode,
+    options,
     cases: CASES.map((name) => ({
       name,
       swap: compareCell(original, swapped, name),
@@ -720,7 +728,7 @@ function counts(): InfoCounts {
   };
 }
 
-function cycles(n: number, every: number): CycleRun {
+function cycles(n: number, every: number, options: SwapMaterialsOptions = {}): CycleRun {
   const slots = setMode('standard');
   const failures: string[] = [];
   picture();
@@ -734,7 +742,7 @@ function cycles(n: number, every: number): CycleRun {
   const start = performance.now();
   for (let i = 0; i < n; i++) {
     const draw = i % every === 0;
-    const [swap, w] = capture(() => swapMaterials(root), true);
+    const [swap, w] = capture(() => swapMaterials(root, options), true);
     warned += w.length;
     const disposals = new Map<Material, number>();
     for (const m of swap.materials) {
