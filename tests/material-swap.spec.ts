@@ -6,9 +6,10 @@ import type { CaseReport, MaterialMode, SwapRun } from './harness/swap';
 // GLTFLoader, nothing downloaded: a textured mesh, a vertex-coloured mesh, a skinned mesh posed by its clip
 // (AnimationMixer at a fixed time), instances (EXT_mesh_gpu_instancing), a multi-material box as glTF gives it (a
 // Group, one Mesh per primitive) and merged back into one mesh with groups and a material array, two meshes
-// sharing one material, and a ShaderMaterial mesh added after loading. One 640 × 320 render shows every model in
-// its own 160 px cell, lit by three's Hemisphere, Ambient, Directional, Point and Spot lights. three's own
-// pictures are the oracle (tests/harness/swap.ts).
+// sharing one material, a ShaderMaterial mesh added after loading, an unlit mesh (KHR_materials_unlit) and a
+// clearcoat one (KHR_materials_clearcoat). One 800 × 320 render shows every model in its own 160 px cell, lit by
+// three's Hemisphere, Ambient, Directional, Point and Spot lights. three's own pictures are the oracle
+// (tests/harness/swap.ts).
 
 /** Opens the page and collects page errors and console errors for the whole test. */
 async function open(page: Page): Promise<string[]> {
@@ -79,6 +80,11 @@ function expectSwapAndRestore(r: SwapRun): void {
   }
   expect.soft(r.restoreDiffPixels, `${at} the whole picture after restore()`).toBe(0);
   expect.soft(r.restoreMaxDiff, `${at} the whole picture after restore()`).toBe(0);
+  // Unlit: the ShadingMaterial draws colour × texel through its emissive, as three's MeshBasicMaterial does.
+  const unlit = r.cases.find((c) => c.name === 'unlit') as CaseReport;
+  const unlitInfo = `unlit ${at}: ${JSON.stringify(unlit.swap)}`;
+  expect.soft(unlit.swap.mean, `unlit ${at}: mean max|Δ| ≤ 1/255\n${unlitInfo}`).toBeLessThanOrEqual(1);
+  expect.soft(unlit.swap.max, `unlit ${at}: max|Δ| ≤ 3/255\n${unlitInfo}`).toBeLessThanOrEqual(3);
   const shader = r.cases.find((c) => c.name === 'shader') as CaseReport;
   expect.soft(shader.swap.diffPixels, `${at} the skipped ShaderMaterial mesh is drawn as before`).toBe(0);
 }
@@ -96,7 +102,13 @@ test('swapMaterials on the loaded glTF models (MeshStandardMaterial as GLTFLoade
     animations: 1,
     multiPrimitivesChildren: 6,
     sharedLoadedShared: true,
-    extensionsUsed: expect.arrayContaining(['EXT_mesh_gpu_instancing']),
+    unlitType: 'MeshBasicMaterial',
+    physicalType: 'MeshPhysicalMaterial',
+    extensionsUsed: expect.arrayContaining([
+      'EXT_mesh_gpu_instancing',
+      'KHR_materials_unlit',
+      'KHR_materials_clearcoat',
+    ]),
   });
   const r = await run(page, 'standard');
   await attach(page, r);
@@ -129,9 +141,9 @@ test('swapMaterials on MeshLambert and MeshPhong (specular 0) originals: diffuse
   expect(errors).toEqual([]);
 });
 
-// A rendered cycle compiles the swapped scene's five programs again (restore() disposed the materials, so three
-// released them): about 0.7 s under SwiftShader on a busy 2-core machine, so rendering every cycle would take
-// about 12 minutes. A render every 50 cycles (20 compile and release rounds, 41 frames) keeps a run near 15 s;
+// A rendered cycle compiles the swapped scene's six programs again (restore() disposed the materials, so three
+// released them): 0.45 … 0.75 s under SwiftShader on this shared 2-core machine, so rendering every cycle would
+// take 8 … 12 minutes. A render every 50 cycles (20 compile and release rounds, 41 frames) keeps a run at 10 … 25 s;
 // every cycle checks that what it made was disposed once and nothing else was.
 const CYCLES = 1000;
 const EVERY = 50;
@@ -174,7 +186,7 @@ for (const [label, options] of [
     // Not vacuous: the swapped scene compiled programs of its own, all released by restore().
     expect(r.peak.programs, line).toBeGreaterThan(r.before.programs);
     expect(r.frames, line).toBeGreaterThan((2 * CYCLES) / EVERY);
-    expect(r.distinctOriginals, 'eleven materials: 1 + 1 + 1 + 1 + 3 + 3 + 1 (shared)').toBe(11);
+    expect(r.distinctOriginals, '13 materials: 1 a model, 3 a box, 1 for the shared pair').toBe(13);
     expect(r.made, 'one made material per distinct original, every swap').toBe(r.distinctOriginals * CYCLES);
     expect(r.disposedOnce, 'every made material disposed exactly once by its restore()').toBe(r.made);
     expect(r.userDisposals, 'nothing the user owns disposed').toBe(0);

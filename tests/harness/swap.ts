@@ -3,7 +3,8 @@
 // gets them: a textured mesh, a vertex-coloured mesh, a skinned mesh posed by its animation clip, instances
 // (EXT_mesh_gpu_instancing), a multi-material box as glTF gives it (one mesh per primitive) and as one mesh with
 // groups and a material array, two meshes sharing one material, and a mesh with a ShaderMaterial (added after
-// loading: glTF cannot hold one). Each model sits in its own cell of a 4 × 2 grid, so one render gives every
+// loading: glTF cannot hold one), and two more material kinds glTF carries: an unlit mesh (KHR_materials_unlit →
+// MeshBasicMaterial) and a clearcoat one (KHR_materials_clearcoat → MeshPhysicalMaterial). Each model sits in its own cell of a 5 × 2 grid, so one render gives every
 // model's picture, lit by three's five light kinds as three's examples light a scene.
 //
 // The loaded MeshStandardMaterials are the 'standard' mode; 'lambert' and 'phong' (specular 0) re-make them as an
@@ -34,8 +35,10 @@ import {
   type Material,
   Matrix4,
   Mesh,
+  MeshBasicMaterial,
   MeshLambertMaterial,
   MeshPhongMaterial,
+  MeshPhysicalMaterial,
   MeshStandardMaterial,
   type Object3D,
   PerspectiveCamera,
@@ -77,10 +80,12 @@ export const CASES = [
   'vertexColours',
   'skinned',
   'instanced',
+  'unlit',
   'multiPrimitives',
   'multiArray',
   'shared',
   'shader',
+  'physical',
 ] as const;
 export type CaseName = (typeof CASES)[number];
 
@@ -173,6 +178,9 @@ export interface SwapHarness {
     animations: number;
     multiPrimitivesChildren: number;
     sharedLoadedShared: boolean;
+    /** The material types GLTFLoader made for the unlit and the clearcoat model. */
+    unlitType: string;
+    physicalType: string;
     extensionsUsed: string[];
   };
   run(mode: MaterialMode, options?: SwapMaterialsOptions): SwapRun;
@@ -182,10 +190,11 @@ export interface SwapHarness {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// The renderer, the camera (the z = 0 plane from x −8 … 8, y −4 … 4 fills the canvas: 40 px a unit, 160 px a
+// The renderer, the camera (the z = 0 plane from x −10 … 10, y −4 … 4 fills the canvas: 40 px a unit, 160 px a
 // cell) and the lights, as three's examples use them.
 
-const WIDTH = 640;
+const COLUMNS = 5;
+const WIDTH = 800;
 const HEIGHT = 320;
 const CELL = 160;
 const canvas = document.getElementById('viewport') as HTMLCanvasElement;
@@ -217,18 +226,18 @@ scene.add(spot, spot.target);
 /** The centre of a case's cell on the z = 0 plane. */
 function cellCentre(name: CaseName): Vector3 {
   const i = CASES.indexOf(name);
-  return new Vector3(-6 + 4 * (i % 4), 2 - 4 * Math.floor(i / 4), 0);
+  return new Vector3(-8 + 4 * (i % COLUMNS), 2 - 4 * Math.floor(i / COLUMNS), 0);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
 // The models, built in code.
 
-function checkerTexture(): DataTexture {
-  const n = 16;
+function checkerTexture(n = 16): DataTexture {
+  const step = Math.floor(200 / n);
   const data = new Uint8Array(4 * n * n);
   for (let y = 0; y < n; y++)
     for (let x = 0; x < n; x++)
-      data.set([40 + 13 * x, 40 + 13 * y, (x + y) % 2 ? 210 : 70, 255], 4 * (y * n + x));
+      data.set([40 + step * x, 40 + step * y, (x + y) % 2 ? 210 : 70, 255], 4 * (y * n + x));
   const texture = new DataTexture(data, n, n, RGBAFormat);
   texture.colorSpace = SRGBColorSpace;
   texture.needsUpdate = true;
@@ -311,6 +320,28 @@ function buildSource(): { source: Scene; clip: AnimationClip } {
     instanced.setColorAt(i, new Color(tints[i]));
   });
   source.add(place(instanced, 'instanced'));
+
+  // Unlit: glTF's KHR_materials_unlit, which GLTFLoader gives as a MeshBasicMaterial (colour × map).
+  const unlit = new Mesh(
+    new TorusGeometry(0.9, 0.4, 24, 64),
+    new MeshBasicMaterial({ name: 'unlit', color: 0xffd0a0, map: checkerTexture(8) }),
+  );
+  unlit.rotation.set(0.9, 0.2, 0);
+  source.add(place(unlit, 'unlit'));
+
+  // Clearcoat: KHR_materials_clearcoat, which GLTFLoader gives as a MeshPhysicalMaterial.
+  const physical = new Mesh(
+    new SphereGeometry(1.2, 48, 24),
+    new MeshPhysicalMaterial({
+      name: 'clearcoat',
+      color: 0xc05090,
+      roughness: 0.45,
+      metalness: 0,
+      clearcoat: 0.7,
+      clearcoatRoughness: 0.15,
+    }),
+  );
+  source.add(place(physical, 'physical'));
 
   // A box whose six faces (groups) wear three materials, each twice; the faces in view (+x, +y, +z) wear all three.
   for (const name of ['multiPrimitives', 'multiArray'] as const) {
@@ -518,7 +549,7 @@ function picture(): Uint8Array {
 /** The pixel rectangle of a case's cell (GL rows, bottom-up). */
 function cellRect(name: CaseName): { x0: number; y0: number } {
   const i = CASES.indexOf(name);
-  return { x0: CELL * (i % 4), y0: CELL * (1 - Math.floor(i / 4)) };
+  return { x0: CELL * (i % COLUMNS), y0: CELL * (1 - Math.floor(i / COLUMNS)) };
 }
 
 const drawn = (p: Uint8Array, x: number, y: number): boolean => !hasRgb(p, 4 * (y * WIDTH + x), CLEAR);
@@ -795,6 +826,8 @@ window.swapHarness = {
     animations: gltf.animations.length,
     multiPrimitivesChildren: multiPrimitives.children.filter((c) => (c as Mesh).isMesh).length,
     sharedLoadedShared: (byName('sharedA') as Mesh).material === (byName('sharedB') as Mesh).material,
+    unlitType: ((byName('unlit') as Mesh).material as Material).type,
+    physicalType: ((byName('physical') as Mesh).material as Material).type,
     extensionsUsed: json.extensionsUsed ?? [],
   },
   run,
