@@ -429,9 +429,17 @@ function faceTexel(texture: DataTexture, i: N): N {
  * Lights: the PhongLights of `lights`, else every PhongLight in the rendered scene (three lists them with its
  * own lights, through the light node this entry registers, so adding or removing one rebuilds the material as
  * adding a three.js light does), and three's lights. The variant (shading, lighting, cel bands, the lights) is
- * compiled in; changing it through the setters recompiles. ka, kd, ks and the PhongLights' colours edited in
- * place (bypassing the setters) to a non-finite or negative value are reported once with console.error, as
- * `ShadingMaterial` reports them, and drawn with their last valid values.
+ * compiled in; changing it through the setters recompiles. ka, kd, ks, emissive and the PhongLights' colours
+ * edited in place (bypassing the setters) to a non-finite or negative value are reported once with
+ * console.error, as `ShadingMaterial` reports them, and drawn with their last valid values.
+ *
+ * Surface, with three's property names and `ShadingMaterial`'s options and checks, through three's
+ * `setupDiffuseColor`: `map` and `vertexColors` (with an instance's or batch's colour) multiply ka and kd, never
+ * ks, the texel per fragment in every shading (gouraud and exact flat shading pass the ka/kd part and the ks
+ * part apart); `emissive` (× `emissiveMap`) is added outside the lighting; alpha is `opacity` × texel alpha ×
+ * vertex alpha × `alphaMap` green (blended when `transparent`, discarded by `alphaTest`). `scene.fog` is three's
+ * node fog (blended in linear before the output conversion, as three's node materials blend it).
+ * `normalMap` is not drawn yet (one console warning).
  *
  * @example
  * const light = new PhongLight();
@@ -471,6 +479,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
   // What the GPU adds: emissive as last found valid.
   readonly #emissiveNode: N = uniform(new Color(0, 0, 0));
   #opacity = 1;
+  // The warning that normalMap is not drawn was given.
+  #warnedNormalMap = false;
 
   /**
    * three's `map`: a colour texture (its `colorSpace` decoded to linear as three decodes it) whose texel
@@ -484,8 +494,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
   /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingNodeMaterial.emissive}. @default null */
   emissiveMap: Texture | null = null;
   /**
-   * three's `normalMap`: perturbs the normal per fragment, phong shading only (gouraud and flat shading have no
-   * per-fragment normal: it is ignored there, with one console warning). @default null
+   * three's `normalMap`: kept (validated, copied) for `ShadingMaterial`'s option, but not drawn on
+   * WebGPURenderer yet: the surface is lit with its vertex normals, with one console warning. @default null
    */
   normalMap: Texture | null = null;
   /** three's `normalMapType`: `TangentSpaceNormalMap` or `ObjectSpaceNormalMap`. @default TangentSpaceNormalMap */
@@ -737,6 +747,12 @@ export class ShadingNodeMaterial extends NodeMaterial {
 
   /** Builds the lighting of the variant (three calls it when it compiles the material), plus the emissive. */
   override setupLighting(builder: N): N {
+    if (this.normalMap !== null && !this.#warnedNormalMap) {
+      this.#warnedNormalMap = true;
+      console.warn(
+        `${this.#owner}: normalMap is not drawn on WebGPURenderer yet (ShadingMaterial draws it in phong shading); the surface is lit with its vertex normals`,
+      );
+    }
     const emissive: N =
       this.emissiveMap !== null
         ? this.#emissiveNode.mul((materialReference('emissiveMap', 'texture') as N).rgb)
