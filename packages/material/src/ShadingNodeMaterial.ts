@@ -898,6 +898,26 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return [attribute(FLAT_CORNERS[0], 'vec3'), attribute(FLAT_CORNERS[1], 'vec3'), positionLocal];
   }
 
+  /**
+   * three's program cache key, made this material's own: its uniforms (ka, kd, ks, emissive, the listed lights'
+   * nodes) are its own nodes, so two materials never share a node build (their pipelines are still shared when
+   * the generated code is the same).
+   */
+  override customProgramCacheKey(): string {
+    return `${super.customProgramCacheKey()},${this.id}`;
+  }
+
+  /**
+   * three's observer of this material, told that the material holds nodes: its uniforms (ka, kd, ks,
+   * emissive, shininess) are nodes of its own, not material properties three compares, so three refreshes
+   * its bindings on every frame as it does for a material with node properties.
+   */
+  override setupObserver(builder: N): N {
+    const observer = super.setupObserver(builder) as N;
+    observer.hasNode = true;
+    return observer;
+  }
+
   /** Copy every option of `source` (lights are shared, not cloned). @returns `this`. */
   override copy(source: ShadingNodeMaterial): this {
     super.copy(source);
