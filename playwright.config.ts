@@ -1,5 +1,5 @@
 import { defineConfig } from '@playwright/test';
-import { shadelabPreset } from '@shadelab/playwright';
+import { shadelabPreset, shadelabUse, XVFB_GLOBAL_SETUP } from '@shadelab/playwright';
 
 const port = Number(process.env.SHADELAB_E2E_PORT ?? 4173);
 
@@ -18,6 +18,17 @@ export default defineConfig(shadelabPreset(), {
     baseURL: `http://127.0.0.1:${port}`,
     viewport: { width: 800, height: 600 },
   },
+  // The second rasteriser: the kit's llvmpipe mode (headed Chromium on an Xvfb that XVFB_GLOBAL_SETUP starts for
+  // the run, WebGL drawn by Mesa's llvmpipe) runs the kit's cross-rasteriser spec against SwiftShader's baselines.
+  globalSetup: XVFB_GLOBAL_SETUP,
+  projects: [
+    { name: 'swiftshader' },
+    {
+      name: 'llvmpipe',
+      testMatch: 'playwright-kit-rasterisers.spec.ts',
+      use: shadelabUse({ rasteriser: 'llvmpipe' }),
+    },
+  ],
   webServer: {
     // Each port builds into its own folder, so parallel runs (and `npm start`) never share an output: the
     // playground, then the tests' harness pages (tests/harness/, at /harness/<name>.html) beside it, one server.

@@ -3,11 +3,12 @@
 // on the lecture scene, passing and failing (with its attachments); toMatchScreenshotAcrossGpus against a
 // committed baseline. The scene comes from tests/harness/kitScene.ts, which the harness page draws and this
 // spec reads with referenceSceneOf, as a user's test reads the scene their app builds.
+// expectBackend and toMatchAcrossRenderers in this browser, launched without the WebGPU flag, fail on the fallback.
 
 import type { Page } from '@playwright/test';
 import { test as plainTest } from '@playwright/test';
 import { expect, referenceSceneOf, test } from '@shadelab/playwright/reference';
-import { waitForFirstFrame } from '@shadelab/playwright/test';
+import { expectBackend, waitForFirstFrame } from '@shadelab/playwright/test';
 import { buildKitScene, type KitSceneOptions } from './harness/kitScene';
 
 /** Open the harness drawing `options`; resolves when it has drawn. */
@@ -260,5 +261,31 @@ test.describe('toMatchScreenshotAcrossGpus', () => {
     expect(
       await failure(expect(canvas).toMatchScreenshotAcrossGpus('kit-lecture.png', { radiusPx: 0.5 })),
     ).toContain('toMatchScreenshotAcrossGpus: radiusPx must be an integer 0 … 8, got 0.5');
+  });
+});
+
+test.describe('expectBackend and toMatchAcrossRenderers without the WebGPU flag', () => {
+  // This spec's browser is the preset's default: no --enable-unsafe-webgpu, so WebGPURenderer falls back to WebGL2.
+  test('expectBackend(page, "webgpu") fails saying which flag is missing; the matcher fails on the fallback', async ({
+    page,
+  }) => {
+    await page.goto('/harness/kit-renderers.html');
+    expect(await failure(expectBackend(page, 'webgpu'))).toMatch(
+      /^expectBackend\(page, 'webgpu'\): the browser cannot give webgpu: (navigator\.gpu is undefined|navigator\.gpu\.requestAdapter\(\) returned null).*--enable-unsafe-webgpu/,
+    );
+    expect((await expectBackend(page, 'webgl2', { rasteriser: 'swiftshader' })).description).toContain(
+      'SwiftShader',
+    );
+    const message = await failure(
+      expect(page).toMatchAcrossRenderers('lecture', {
+        renderers: ['webgl', 'webgpu'],
+        width: 32,
+        height: 24,
+      }),
+    );
+    expect(message).toMatch(
+      /webgpu: WebGPU was asked for, but WebGPURenderer fell back to its WebGL2 backend: /,
+    );
+    expect(message).toMatch(/webgpu +WebGPURenderer, WebGL2 backend: ANGLE/);
   });
 });

@@ -26,3 +26,17 @@ export const GPU_TOLERANCE: GpuTolerance = { maxChannelDiff: 4, radiusPx: 1, max
  * appear or vanish when the picture moves by a fraction of a pixel.
  */
 export const GPU_TOLERANCE_HARD_EDGES: GpuTolerance = { maxChannelDiff: 18, radiusPx: 1, maxDiffPixels: 0 };
+
+/**
+ * The default tolerance of `toMatchAcrossRenderers`: the largest variation measured between three's renderers
+ * drawing one scene with three's own material (`MeshPhongMaterial` on `WebGLRenderer`, converted to its node
+ * material on `WebGPURenderer`'s WebGPU and WebGL2 backends), in one browser, on SwiftShader and on llvmpipe
+ * (where WebGL is llvmpipe and WebGPU SwiftShader's adapter): `bench/rasterisers.bench.mjs` →
+ * `tolerance.renderers`; BENCHMARKS.md, "Rasteriser variation". On one rasteriser the pictures differ by
+ * 1 code on 620 of 76,800 pixels; across rasterisers edges also move by a pixel. So: each pixel within 1 code
+ * of its 3 × 3 neighbourhood's range. A material that draws the same picture on every renderer stays within it; one whose colour differs by
+ * 2 codes or more does not. When the pictures come from different rasterisers (llvmpipe's WebGL beside
+ * SwiftShader's WebGPU adapter) or from a GPU, whose WebGL and WebGPU drivers differ, the matcher takes
+ * {@link GPU_TOLERANCE} instead.
+ */
+export const RENDERER_TOLERANCE: GpuTolerance = { maxChannelDiff: 1, radiusPx: 1, maxDiffPixels: 0 };

@@ -7,6 +7,7 @@
 import type { Expect } from '@playwright/test';
 import { expect as testExpect } from './test.js';
 import type { toHaveRendered } from './toHaveRendered.js';
+import type { toMatchAcrossRenderers } from './toMatchAcrossRenderers.js';
 import { toMatchReference } from './toMatchReference.js';
 import type { toMatchScreenshotAcrossGpus } from './toMatchScreenshotAcrossGpus.js';
 
@@ -20,12 +21,14 @@ export { test } from './test.js';
 export type { ReferenceBudget, ReferenceOptions } from './toMatchReference.js';
 
 /**
- * The `expect` of `@shadelab/playwright/test` (`toHaveRendered`, `toMatchScreenshotAcrossGpus`) with
+ * The `expect` of `@shadelab/playwright/test` (`toHaveRendered`, `toMatchScreenshotAcrossGpus`,
+ * `toMatchAcrossRenderers`) with
  * `await expect(canvas).toMatchReference(scene, budget)`: the canvas against `renderReference` of the same
  * scene, within a budget of RMSE, max (8-bit sRGB codes) and silhouette error (px).
  */
 export const expect: Expect<{
   toHaveRendered: typeof toHaveRendered;
   toMatchScreenshotAcrossGpus: typeof toMatchScreenshotAcrossGpus;
+  toMatchAcrossRenderers: typeof toMatchAcrossRenderers;
   toMatchReference: typeof toMatchReference;
 }> = testExpect.extend({ toMatchReference });
