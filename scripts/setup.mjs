@@ -57,21 +57,62 @@ export function buildPackages() {
 /**
  * Make sure a Chromium exists for Playwright: the one named by SHADELAB_CHROMIUM, Debian's
  * /usr/bin/chromium, or Playwright's own download. When none is found and apt-get is usable (as root),
- * install Debian's chromium. Exits with a message saying what was searched otherwise.
+ * install Debian's chromium. Exits with a message saying what was searched otherwise. Then the same for Xvfb,
+ * the virtual X server of the second rasteriser (@shadelab/playwright's llvmpipe mode: the `llvmpipe` project
+ * of playwright.config.ts and bench/rasterisers.bench.mjs): Debian's `xvfb`.
  */
 export async function ensureBrowser() {
   const { lookupChromium, describeBrowserSearch } = await import('./browser.mjs');
-  const failure = browserSetup({
-    lookup: lookupChromium,
-    describe: describeBrowserSearch,
-    hasAptGet: existsSync('/usr/bin/apt-get'),
-    isRoot: typeof process.getuid === 'function' && process.getuid() === 0,
-    runCommand: run,
-  });
+  const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
+  const hasAptGet = existsSync('/usr/bin/apt-get');
+  const failure =
+    browserSetup({
+      lookup: lookupChromium,
+      describe: describeBrowserSearch,
+      hasAptGet,
+      isRoot,
+      runCommand: run,
+    }) ?? xvfbSetup({ hasXvfb: () => findOnPath('Xvfb') !== null, hasAptGet, isRoot, runCommand: run });
   if (failure !== undefined) {
     console.error(`shadelab: ${failure}`);
     process.exit(1);
   }
+}
+
+/** The first `name` on PATH, or null. @param {string} name */
+function findOnPath(name) {
+  for (const dir of (process.env.PATH ?? '').split(':')) {
+    if (dir !== '' && existsSync(join(dir, name))) return join(dir, name);
+  }
+  return null;
+}
+
+/**
+ * The decisions of {@link ensureBrowser} for Xvfb, as {@link browserSetup}'s for Chromium: with no `Xvfb` on
+ * PATH, apt-get installs Debian's xvfb when run as root; without root, or without apt-get, or when apt-get
+ * fails, the message says so.
+ * @param {{ hasXvfb: () => boolean, hasAptGet: boolean, isRoot: boolean,
+ *   runCommand: (cmd: string, args: string[]) => number, log?: (message: string) => void }} checks
+ * @returns {string | undefined} the error message, or undefined when Xvfb is there.
+ */
+export function xvfbSetup({ hasXvfb, hasAptGet, isRoot, runCommand, log = console.log }) {
+  if (hasXvfb()) return undefined;
+  const why =
+    "no Xvfb (the virtual X server of the llvmpipe rasteriser, which the tests' llvmpipe project and the rasterisers bench use)";
+  if (!hasAptGet) return `${why}. Install xvfb with your package manager.`;
+  if (!isRoot) {
+    return `${why}, and installing Debian's xvfb with apt-get needs root: run \`sudo apt-get install xvfb\` (or npm test as root).`;
+  }
+  log('shadelab: no Xvfb found; installing Debian xvfb (apt-get)…');
+  for (const args of [
+    ['update', '-qq'],
+    ['install', '-y', '-qq', 'xvfb'],
+  ]) {
+    const code = runCommand('apt-get', args);
+    if (code !== 0) return `\`apt-get ${args.join(' ')}\` failed with exit code ${code}, so there is ${why}.`;
+  }
+  if (hasXvfb()) return undefined;
+  return `apt-get installed xvfb, but there is still ${why} on PATH.`;
 }
 
 /**

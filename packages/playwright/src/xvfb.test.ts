@@ -1,0 +1,48 @@
+import { spawnSync } from 'node:child_process';
+import { describe, expect, it } from 'vitest';
+import { findXvfb, startXvfb } from './xvfb.js';
+import xvfbGlobalSetup, { XVFB_DISPLAY_ENV } from './xvfbGlobalSetup.js';
+
+/** Whether `display` has its X socket (Xvfb makes it when it starts and removes it when it stops). */
+function serves(display: string): boolean {
+  const n = display.slice(1);
+  return spawnSync('test', ['-S', `/tmp/.X11-unix/X${n}`]).status === 0;
+}
+
+describe('startXvfb', () => {
+  it('starts an X server on a display it picks, which stop() ends', async () => {
+    // `npm test` installs Debian's xvfb as it installs chromium (scripts/setup.mjs).
+    expect(findXvfb()).not.toBeNull();
+    const server = await startXvfb();
+    expect(server.display).toMatch(/^:\d+$/);
+    expect(serves(server.display)).toBe(true);
+    await server.stop();
+    await server.stop(); // idempotent
+    expect(serves(server.display)).toBe(false);
+  });
+
+  it('finds none on a PATH without it, says when the binary cannot start, and refuses a bad screen', async () => {
+    expect(findXvfb({ PATH: '/nonexistent' })).toBeNull();
+    await expect(startXvfb({ screen: 'big' })).rejects.toThrow(
+      new RangeError("startXvfb: screen must be WIDTHxHEIGHTxDEPTH such as '1280x1024x24', got big"),
+    );
+    await expect(startXvfb({ executable: '/nonexistent/Xvfb' })).rejects.toThrow(
+      'startXvfb: /nonexistent/Xvfb could not be started',
+    );
+  });
+});
+
+describe('the global setup', () => {
+  it('starts Xvfb only for a config with an llvmpipe project, hands its display to the workers and stops it', async () => {
+    const llvmpipe = { use: { launchOptions: { env: { SHADELAB_RASTERISER: 'llvmpipe' } } } };
+    expect(await xvfbGlobalSetup({ projects: [{ use: {} }] } as never)).toBeUndefined();
+    expect(process.env[XVFB_DISPLAY_ENV]).toBeUndefined();
+    const teardown = await xvfbGlobalSetup({ projects: [{ use: {} }, llvmpipe] } as never);
+    const display = process.env[XVFB_DISPLAY_ENV] as string;
+    expect(display).toMatch(/^:\d+$/);
+    expect(serves(display)).toBe(true);
+    await teardown?.();
+    expect(process.env[XVFB_DISPLAY_ENV]).toBeUndefined();
+    expect(serves(display)).toBe(false);
+  });
+});
