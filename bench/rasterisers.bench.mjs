@@ -5,18 +5,25 @@
 // - the same with the camera shifted by 1/16 and 1/2 pixel: where another GPU's sub-pixel grid would put the
 //   vertices (OpenGL ES asks for at least 4 bits, 1/16 px) and, at 1/2 px, farther than any would;
 // - three's own MeshPhongNodeMaterial through WebGPURenderer on its WebGPU backend (Dawn on SwiftShader's
-//   Vulkan) and on its WebGL2 backend (ANGLE on SwiftShader's GL ES): two APIs, two shader compilers.
+//   Vulkan) and on its WebGL2 backend (ANGLE on SwiftShader's GL ES): two APIs, two shader compilers;
+// - a second rasteriser: Chromium headed on Xvfb without the SwiftShader flags (@shadelab/playwright's
+//   rasteriser: 'llvmpipe'), where WebGL is Mesa's llvmpipe: each scene against SwiftShader's picture, and against
+//   itself in a second browser (run-to-run determinism);
+// - three's renderers, as toMatchAcrossRenderers draws them (@shadelab/playwright/page): MeshPhongMaterial on
+//   WebGLRenderer against WebGPURenderer's WebGPU and WebGL2 backends, in both browsers (in the llvmpipe one
+//   WebGL is llvmpipe and WebGPU SwiftShader's adapter, so that pair crosses rasterisers too).
 // Each pair is scored by compareNeighbourhood: exact (radius 0: the largest channel difference and the pixels
 // that differ) and within a neighbourhood (radius 1, 3 × 3, and radius 2, 5 × 5: how far a pixel lies outside
 // the range its neighbourhood spans in the other picture). The tolerances are the largest 3 × 3 excess over the
 // pairs that stand for another rasteriser with the app's settings (the 1/16 px shift and the two backends):
 // one for smooth shading (Gouraud, Phong, the impostor, three's node material) and one for pictures with hard
-// edges inside them (flat facets, cel bands). MSAA on against off and the 1/2 px shift are recorded to show
-// what the tolerance does not cover.
+// edges inside them (flat facets, cel bands), and one for toMatchAcrossRenderers (the renderer pairs). MSAA on
+// against off and the 1/2 px shift are recorded to show what the tolerance does not cover.
 // Deterministic (no timing).
 //
 // node bench/rasterisers.bench.mjs [--json PATH]
 import { chromium } from '@playwright/test';
+import { shadelabUse, startXvfb } from '@shadelab/playwright';
 import { compareNeighbourhood, flipRows } from '@shadelab/playwright/test';
 import { chromiumArgs, chromiumExecutable, webgpuArgs } from '../scripts/browser.mjs';
 import { writeResults } from './lib/bench.mjs';
@@ -56,7 +63,7 @@ const scenes = [
 ];
 
 const playground = await openPlayground();
-/** @typedef {{ scene: string, edges: 'smooth' | 'hard', pair: string, sameSettings: boolean, maxChannelDiff: number, differingPixels: number, maxExcess3x3: number, pixelsBeyond3x3: number, maxExcess5x5: number }} Pair */
+/** @typedef {{ scene: string, edges: 'smooth' | 'hard', pair: string, sameSettings: boolean, renderers?: boolean, maxChannelDiff: number, differingPixels: number, maxExcess3x3: number, pixelsBeyond3x3: number, maxExcess5x5: number }} Pair */
 /** @type {Pair[]} */
 const pairs = [];
 /** @type {Record<string, unknown>} */
@@ -65,11 +72,14 @@ try {
   const page = await playground.browser.newPage();
   await page.goto(playground.url('harness/rasterisers.html'));
   await page.waitForFunction(() => document.body.dataset.ready === '1');
+  /** @type {Map<string, import('@shadelab/playwright/test').RgbaImage>} SwiftShader's picture of each scene */
+  const swiftshader = new Map();
   for (const { name, edges, options } of scenes) {
     /** @param {import('../tests/harness/kitScene').KitSceneOptions} extra */
     const draw = async (extra) =>
       image(await page.evaluate((o) => window.rasterisers.renderShading(o), { ...options, ...extra }));
     const base = await draw({});
+    swiftshader.set(name, base);
     /** @type {[string, boolean, import('../tests/harness/kitScene').KitSceneOptions][]} */
     const variants = [
       ['picture shifted 1/16 px (x and y)', true, { shiftPx: [1 / 16, 1 / 16] }],
@@ -116,11 +126,109 @@ try {
       sameSettings: true,
       ...lined,
     });
+    pairs.push(...(await rendererPairs(gpuPage, 'SwiftShader')));
   } finally {
     await gpuBrowser.close();
   }
+
+  // llvmpipe: headed Chromium on the kit's Xvfb, launched as shadelabPreset({ rasteriser: 'llvmpipe' }) does.
+  const xvfb = await startXvfb();
+  try {
+    const { launchOptions } = shadelabUse({
+      rasteriser: 'llvmpipe',
+      webgpu: true,
+      checks: { env: { ...process.env, SHADELAB_XVFB_DISPLAY: xvfb.display } },
+    });
+    /** Each scene drawn in a new llvmpipe browser, and what draws WebGL and WebGPU there. */
+    const llvmpipeRun = async (/** @type {boolean} */ withRenderers) => {
+      const browser = await chromium.launch(launchOptions);
+      try {
+        const p = await browser.newPage();
+        await p.goto(playground.url('harness/rasterisers.html'));
+        await p.waitForFunction(() => document.body.dataset.ready === '1');
+        const backends = await p.evaluate(async () => {
+          const gl = /** @type {WebGL2RenderingContext} */ (
+            document.createElement('canvas').getContext('webgl2')
+          );
+          const info = gl.getExtension('WEBGL_debug_renderer_info');
+          const gpu = /** @type {any} */ (navigator).gpu;
+          const adapter = gpu ? await gpu.requestAdapter() : null;
+          return {
+            webgl: String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)),
+            webgpu: adapter ? `${adapter.info.vendor} ${adapter.info.architecture}`.trim() : 'none',
+          };
+        });
+        /** @type {Map<string, import('@shadelab/playwright/test').RgbaImage>} */
+        const pictures = new Map();
+        for (const { name, options } of scenes) {
+          pictures.set(name, image(await p.evaluate((o) => window.rasterisers.renderShading(o), options)));
+        }
+        return { backends, pictures, renderers: withRenderers ? await rendererPairs(p, 'llvmpipe') : [] };
+      } finally {
+        await browser.close();
+      }
+    };
+    const first = await llvmpipeRun(true);
+    const second = await llvmpipeRun(false);
+    if (!first.backends.webgl.includes('llvmpipe')) {
+      throw new Error(`expected WebGL on llvmpipe in the headed browser, got ${first.backends.webgl}`);
+    }
+    notes.llvmpipe = first.backends;
+    notes.llvmpipeRunToRun = scenes.map(({ name }) => ({
+      scene: name,
+      differingPixels: score(
+        /** @type {any} */ (first.pictures.get(name)),
+        /** @type {any} */ (second.pictures.get(name)),
+      ).differingPixels,
+    }));
+    for (const { name, edges } of scenes) {
+      pairs.push({
+        scene: name,
+        edges,
+        pair: 'llvmpipe / SwiftShader (WebGLRenderer)',
+        sameSettings: true,
+        ...score(/** @type {any} */ (first.pictures.get(name)), /** @type {any} */ (swiftshader.get(name))),
+      });
+    }
+    pairs.push(...first.renderers);
+    console.log('llvmpipe: done');
+  } finally {
+    await xvfb.stop();
+  }
 } finally {
   await playground.close();
+}
+
+/**
+ * three's MeshPhongMaterial drawn by the kit's renderers (the 'three-phong' scene of the harness page): WebGLRenderer
+ * against WebGPURenderer's WebGPU and WebGL2 backends, each backend proven.
+ * @param {import('@playwright/test').Page} p @param {string} rasteriser what draws WebGL in this browser
+ * @returns {Promise<Pair[]>}
+ */
+async function rendererPairs(p, rasteriser) {
+  const pictures = await p.evaluate(
+    ([w, h]) =>
+      /** @type {any} */ (globalThis)[Symbol.for('shadelab.renderers')].render('three-phong', {
+        renderers: ['webgl', 'webgpu', 'webgpu-webgl2'],
+        width: w,
+        height: h,
+      }),
+    [width, height],
+  );
+  for (const picture of pictures) {
+    if (!picture.ok) throw new Error(`${picture.renderer} could not draw: ${picture.error}`);
+  }
+  if (pictures[1].proof.api !== 'webgpu') throw new Error('the WebGPU backend did not run');
+  const [gl, ...gpu] = pictures.map((/** @type {{ pixels: string }} */ x) => image(x.pixels));
+  const names = ['WebGPU backend', 'WebGL2 backend'];
+  return gpu.map((picture, i) => ({
+    scene: "three's MeshPhongMaterial (icosahedron 6)",
+    edges: /** @type {const} */ ('smooth'),
+    pair: `WebGLRenderer / WebGPURenderer ${names[i]} (${rasteriser}${rasteriser === 'llvmpipe' && i === 0 ? '; WebGPU on SwiftShader' : ''})`,
+    sameSettings: true,
+    renderers: true,
+    ...score(picture, gl),
+  }));
 }
 
 for (const p of pairs) {
@@ -138,10 +246,18 @@ const tolerance = (edges) => ({
   radiusPx: 1,
   maxDiffPixels: 0,
 });
-const derived = { smooth: tolerance('smooth'), hardEdges: tolerance('hard') };
+const derived = {
+  smooth: tolerance('smooth'),
+  hardEdges: tolerance('hard'),
+  renderers: {
+    maxChannelDiff: Math.max(...pairs.filter((p) => p.renderers).map((p) => p.maxExcess3x3)),
+    radiusPx: 1,
+    maxDiffPixels: 0,
+  },
+};
 console.log(`derived tolerances: ${JSON.stringify(derived)}`);
 writeResults({
-  note: 'Headless Chromium, SwiftShader (WebGL2 through ANGLE; WebGPU through Dawn on its Vulkan). 320 × 240, the lecture scene of tests/harness/kitScene.ts. A real GPU is not measured: the pairs are the variation that can be produced here.',
+  note: "Headless Chromium, SwiftShader (WebGL2 through ANGLE; WebGPU through Dawn on its Vulkan), and headed Chromium on Xvfb with @shadelab/playwright's llvmpipe mode (WebGL2 through ANGLE on Mesa's llvmpipe; WebGPU still SwiftShader's adapter). 320 × 240, the lecture scene of tests/harness/kitScene.ts. A real GPU is not measured: the pairs are the variation that can be produced here.",
   size: { width, height },
   ...notes,
   pairs,

@@ -1105,7 +1105,7 @@ function rasterisers(r) {
     '',
     fromLine('rasterisers', r),
     '',
-    `How far pictures of one scene differ between rasterisers: the measurement behind \`@shadelab/playwright\`'s \`toMatchScreenshotAcrossGpus\` tolerance (a real GPU is not measured: these are the variations that can be produced here). The kit's lecture scene at ${r.size.width} × ${r.size.height}, each pair scored exactly (the largest channel difference, in 8-bit codes, and the pixels that differ) and within a neighbourhood (how far a pixel lies outside the range its 3 × 3 or 5 × 5 neighbourhood spans in the other picture). "Same settings" pairs stand for another GPU drawing the app as it is; the others show what the tolerance does not cover. WebGPURenderer's backends: ${(r.backends ?? []).join(' and ')}, rows ${r.webgpuRows ?? 'not recorded'}. The bench's note: ${r.note}`,
+    `How far pictures of one scene differ between rasterisers and between three's renderers: the measurement behind \`@shadelab/playwright\`'s \`toMatchScreenshotAcrossGpus\` and \`toMatchAcrossRenderers\` tolerances (a real GPU is not measured: these are the variations that can be produced here). The kit's lecture scene at ${r.size.width} × ${r.size.height}, each pair scored exactly (the largest channel difference, in 8-bit codes, and the pixels that differ) and within a neighbourhood (how far a pixel lies outside the range its 3 × 3 or 5 × 5 neighbourhood spans in the other picture). "Same settings" pairs stand for another GPU drawing the app as it is; the others show what the tolerance does not cover. WebGPURenderer's backends: ${(r.backends ?? []).join(' and ')}, rows ${r.webgpuRows ?? 'not recorded'}. The bench's note: ${r.note}`,
     '',
     ...table(
       [
@@ -1129,7 +1129,13 @@ function rasterisers(r) {
       ]),
     ),
     '',
-    `**Tolerances** (the largest 3 × 3 excess of the same-settings pairs): smooth shading (\`GPU_TOLERANCE\`): ${tol(r.tolerance.smooth)}; pictures with hard edges inside them, flat facets and cel bands (\`GPU_TOLERANCE_HARD_EDGES\`): ${tol(r.tolerance.hardEdges)}.`,
+    `**Tolerances** (the largest 3 × 3 excess of the same-settings pairs): smooth shading (\`GPU_TOLERANCE\`): ${tol(r.tolerance.smooth)}; pictures with hard edges inside them, flat facets and cel bands (\`GPU_TOLERANCE_HARD_EDGES\`): ${tol(r.tolerance.hardEdges)}${r.tolerance.renderers ? `; three's renderers, the pairs of WebGLRenderer against WebGPURenderer (\`RENDERER_TOLERANCE\`, \`toMatchAcrossRenderers\`): ${tol(r.tolerance.renderers)}` : ''}.`,
+    ...(r.llvmpipe
+      ? [
+          '',
+          `**The second rasteriser** (\`shadelabPreset({ rasteriser: 'llvmpipe' })\`: headed Chromium on Xvfb without the SwiftShader flags): WebGL is drawn by ${r.llvmpipe.webgl}, WebGPU by the ${r.llvmpipe.webgpu} adapter. Run to run (each scene drawn again in a second browser): ${(r.llvmpipeRunToRun ?? []).map((/** @type {any} */ x) => `${x.scene} ${int(x.differingPixels)}`).join(', ')} pixels differ.`,
+        ]
+      : []),
   ];
 }
 

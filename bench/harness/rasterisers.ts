@@ -2,7 +2,10 @@
 // as RGBA (base64) for the bench to measure how far they differ: ShadingMaterial through WebGLRenderer with and
 // without MSAA and with the camera shifted by a fraction of a pixel (as another GPU's sub-pixel snapping would
 // place the vertices), and three's own MeshPhongNodeMaterial through WebGPURenderer on its WebGPU backend and
-// on its WebGL2 backend (forceWebGL).
+// on its WebGL2 backend (forceWebGL); and, through @shadelab/playwright's page side (what toMatchAcrossRenderers
+// draws with), three's MeshPhongMaterial on WebGLRenderer and on both WebGPURenderer backends. The bench opens
+// this page in headless Chromium (SwiftShader) and in headed Chromium on Xvfb (Mesa's llvmpipe).
+import { exposeRenderers, registerScene } from '@shadelab/playwright/page';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import { WebGLRenderer } from 'three';
 import {
@@ -86,6 +89,29 @@ async function renderNode(
   renderer.dispose();
   return { backend, pixels: base64(new Uint8Array(pixels.buffer, pixels.byteOffset, pixels.byteLength)) };
 }
+
+/**
+ * The ellipsoid of renderNode with three's MeshPhongMaterial (converted to its node material on WebGPURenderer), for
+ * the kit's renderers: the variation between three's renderers with three's own material.
+ */
+registerScene('three-phong', ({ THREE, width, height }) => {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0, 0, 1);
+  const material = new THREE.MeshPhongMaterial({ color: new THREE.Color(0.6, 0.35, 0.2), shininess: 32 });
+  material.specular = new THREE.Color(0.5, 0.5, 0.5);
+  const mesh = new THREE.Mesh(
+    new SubdivisionSphereGeometry({ base: 'icosahedron', level: 6, normals: 'smooth' }),
+    material,
+  );
+  mesh.scale.set(2, 1, 2);
+  const light = new THREE.PointLight(0xffffff, Math.PI, 0, 0);
+  light.position.set(-5, 10, 20);
+  scene.add(mesh, light, new THREE.AmbientLight(0xffffff, 0.2 * Math.PI));
+  const camera = new THREE.PerspectiveCamera(90, width / height, 0.1, 10);
+  camera.position.set(0, 0, 3);
+  return { scene, camera };
+});
+exposeRenderers();
 
 declare global {
   interface Window {
