@@ -30,7 +30,6 @@ import {
   InstancedMesh,
   type Light,
   LinearFilter,
-  LinearSRGBColorSpace,
   type Material,
   Matrix3,
   Matrix4,
