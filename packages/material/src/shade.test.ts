@@ -360,6 +360,25 @@ describe("shade() with three's lights (Id = Is = colour × intensity / π, three
 });
 
 describe('shade() under three’s lights is three’s Lambert (the drop-in mapping)', () => {
+  it('a PhongLight with Id = Is = 1 lights like a PointLight of intensity π with decay 0 (the documented equivalence)', () => {
+    const m: ShadeMaterial = { ka: [0.3, 0.3, 0.3], kd: [0.6, 0.4, 0.2], ks: [0.5, 0.5, 0.5], shininess: 12 };
+    const position = [1, 2, 3] as const;
+    for (const normal of [
+      [0, 0, 1],
+      [0.6, 0, 0.8],
+      [0, -1, 0],
+    ]) {
+      const sample = { position: [0, 0, 0], normal, eye: [0, 1, 5] };
+      const phong = shade(sample, m, [
+        { position, ambient: [0, 0, 0], diffuse: [1, 1, 1], specular: [1, 1, 1] },
+      ]);
+      const point = shade(sample, m, [
+        { type: 'point', color: [Math.PI, Math.PI, Math.PI], position, decay: 0 },
+      ]);
+      expectClose(point, phong, 12);
+    }
+  });
+
   // three's MeshLambertMaterial / MeshPhongMaterial({ specular: 0 }) at a point, written from three's chunks:
   // outgoing = BRDF_Lambert(c) · (ambient + hemisphere irradiance + Σ colour·falloff·max(n·l, 0)), BRDF_Lambert =
   // c / π (lights_lambert_pars_fragment, bsdfs, lights_pars_begin).
