@@ -219,6 +219,7 @@ async function rendererPairs(p, rasteriser) {
     if (!picture.ok) throw new Error(`${picture.renderer} could not draw: ${picture.error}`);
   }
   if (pictures[1].proof.api !== 'webgpu') throw new Error('the WebGPU backend did not run');
+  /** @type {import('@shadelab/playwright/test').RgbaImage[]} */
   const [gl, ...gpu] = pictures.map((/** @type {{ pixels: string }} */ x) => image(x.pixels));
   const names = ['WebGPU backend', 'WebGL2 backend'];
   return gpu.map((picture, i) => ({

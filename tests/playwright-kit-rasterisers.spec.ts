@@ -18,7 +18,7 @@ import {
 import type { KitSceneOptions } from './harness/kitScene';
 
 /** The project's rasteriser, read from its launch environment (the preset marks the llvmpipe mode). */
-const rasteriserOf = (use: unknown): Rasteriser =>
+const rasteriserOf = (use: unknown): Exclude<Rasteriser, 'gpu'> =>
   (use as Partial<ShadelabUse>).launchOptions?.env?.SHADELAB_RASTERISER === 'llvmpipe'
     ? 'llvmpipe'
     : 'swiftshader';
