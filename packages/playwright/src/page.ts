@@ -34,8 +34,9 @@ export interface SceneContext {
   readonly modules: Readonly<Record<string, unknown>>;
   /** The test's argument (`arg` of the matcher's options; JSON-serialisable), or undefined. */
   readonly arg: unknown;
-  /** The picture's width and height in pixels (for the camera's aspect). */
+  /** The picture's width in pixels (with `height`, the camera's aspect). */
   readonly width: number;
+  /** The picture's height in pixels. */
   readonly height: number;
 }
 
@@ -87,9 +88,13 @@ export type RenderedPicture =
 
 /** What the test asks the page for. */
 export interface RenderRequest {
+  /** The renderers, in order. */
   readonly renderers: readonly RendererName[];
+  /** Picture width in pixels. */
   readonly width: number;
+  /** Picture height in pixels. */
   readonly height: number;
+  /** The factory's `context.arg`. */
   readonly arg?: unknown;
 }
 

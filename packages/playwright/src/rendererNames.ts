@@ -21,10 +21,13 @@ export interface BackendProof {
   readonly isWebGLBackend: boolean;
   /** Whether the WebGPU backend's device is a `GPUDevice` (the browser's own class). */
   readonly gpuDevice: boolean;
-  /** The WebGPU adapter (`adapter.info`), for the WebGPU backend; null otherwise. */
+  /** The WebGPU adapter (the device's `adapterInfo`), for the WebGPU backend; null otherwise. */
   readonly adapter: {
+    /** `GPUAdapterInfo.vendor`, such as `'google'`. */
     readonly vendor: string;
+    /** `GPUAdapterInfo.architecture`, such as `'swiftshader'`. */
     readonly architecture: string;
+    /** `GPUAdapterInfo.description` (often empty). */
     readonly description: string;
   } | null;
   /** The WebGL renderer string (`UNMASKED_RENDERER_WEBGL`), for WebGL contexts; null otherwise. */
