@@ -86,6 +86,11 @@ export async function startXvfb({
       reject(new Error(`startXvfb: Xvfb exited (code ${code}) before reporting a display. ${stderr.trim()}`));
     });
   });
+  // A runner that exits without calling stop() (an uncaught error, a signal it handles) still ends its Xvfb.
+  const onExit = () => {
+    if (child.exitCode === null && child.signalCode === null) child.kill('SIGTERM');
+  };
+  process.once('exit', onExit);
   child.unref();
   (child.stdio[3] as NodeJS.ReadableStream & { unref?: () => void }).unref?.();
   (child.stderr as (NodeJS.ReadableStream & { unref?: () => void }) | null)?.unref?.();
@@ -94,6 +99,7 @@ export async function startXvfb({
     display,
     stop() {
       stopped ??= (async () => {
+        process.removeListener('exit', onExit);
         if (child.exitCode === null && child.signalCode === null) child.kill('SIGTERM');
         await exited;
       })();
