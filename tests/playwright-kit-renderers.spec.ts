@@ -9,7 +9,6 @@ import { shadelabUse } from '@shadelab/playwright';
 import { expect, expectBackend, type SceneFactory, test } from '@shadelab/playwright/test';
 
 test.use(shadelabUse({ webgpu: true }));
-test.describe.configure({ mode: 'serial' });
 
 /** The message of a failing assertion. */
 async function failure(assertion: Promise<unknown>): Promise<string> {
