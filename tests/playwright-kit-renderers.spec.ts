@@ -170,7 +170,7 @@ test('WebGPU stubbed away: expectBackend fails, and the matcher fails on the fal
   }
 });
 
-test('says what is missing: a page without exposeRenderers, a blank scene, an unknown name, bad options', async ({
+test('says what is missing: a page without exposeRenderers, a blank scene, a factory that throws, an unknown name, bad options', async ({
   browser,
   baseURL,
 }) => {
@@ -182,6 +182,12 @@ test('says what is missing: a page without exposeRenderers, a blank scene, an un
   expect(await failure(expect(page).toMatchAcrossRenderers(blank, { width: 16, height: 16 }))).toContain(
     "Nothing to compare: webgl's picture is blank (all 16×16 pixels are rgb(0, 0, 0))",
   );
+  const throwing: SceneFactory = ({ renderer }) => {
+    throw new RangeError(`no scene for ${renderer}`);
+  };
+  const thrown = await failure(expect(page).toMatchAcrossRenderers(throwing, { width: 16, height: 16 }));
+  expect(thrown).toContain('Renderers could not draw the scene:\n  webgl: RangeError: no scene for webgl\n');
+  expect(thrown).toContain('  webgpu-webgl2: RangeError: no scene for webgpu-webgl2');
   expect(await failure(expect(page).toMatchAcrossRenderers('nope'))).toContain(
     'no scene registered as "nope" (registered: "lecture")',
   );
