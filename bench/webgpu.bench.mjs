@@ -9,23 +9,33 @@
 // rounds; ratios are the median of the ratios of frames from the same cycle (and of the medians).
 // Target: phong shading ≤ 1.0× MeshPhongNodeMaterial on the same backend.
 //
+// Issue 23: the realistic scene (bench/harness/realistic-scene.ts: 1,000 instanced level-3 spheres with instance
+// colours, three PointLights and a DirectionalLight, Fog) on WebGPURenderer's backends: ShadingNodeMaterial in
+// each shading against MeshPhongNodeMaterial (and MeshLambertNodeMaterial), interleaved the same way in
+// `--realistic-frames` frames per variant in `--realistic-rounds` rounds (a frame takes hundreds of ms here).
+// Targets: phong ≤ 1.0× MeshPhongNodeMaterial, gouraud and flat cheaper (< 1.0×).
+//
 //   node bench/webgpu.bench.mjs [--json PATH] [--frames 80] [--rounds 8] [--width 1280 --height 720]
+//                               [--realistic-frames 30] [--realistic-rounds 6] [--only lecture,realistic]
 //                               [--quick] [--experiments NAME,...] [--ab] [--backends webgpu,webgl2,webgl]
 //
-// --quick: 6 frames in 2 rounds (a smoke check, not a measurement). --experiments: also time the named
-// A/B variants of the lighting (the page's experimentalMaterial) on both backends; --ab: only phong × phong and
-// three's phong material (with the experiments), for a quicker A/B run.
-import { chromium } from '@playwright/test';
-import { chromiumArgs, chromiumExecutable, webgpuArgs } from '../scripts/browser.mjs';
-import { arg, summarize, writeResults } from './lib/bench.mjs';
-import { openPlayground } from './lib/browser.mjs';
+// --quick: 6 frames in 2 rounds, the realistic scene 2 in 1 (a smoke check, not a measurement). --only: the
+// scenes to time (the results file then holds only those). --experiments: also time the named A/B variants of
+// the lighting (the page's experimentalMaterial) on both backends; --ab: only phong × phong and three's phong
+// material (with the experiments), for a quicker A/B run. --backends also limits the realistic scene (drawn on
+// WebGPURenderer's backends only).
+import { arg, writeResults } from './lib/bench.mjs';
+import { openWebgpuBench, Timings } from './lib/webgpuPage.mjs';
 
 const quick = process.argv.includes('--quick');
 const frames = Number(arg('--frames', quick ? '6' : '80'));
 const rounds = Number(arg('--rounds', quick ? '2' : '8'));
+const realisticFrames = Number(arg('--realistic-frames', quick ? '2' : '30'));
+const realisticRounds = Number(arg('--realistic-rounds', quick ? '1' : '6'));
 const width = Number(arg('--width', '1280'));
 const height = Number(arg('--height', '720'));
 const onlyBackends = arg('--backends', 'webgpu,webgl2,webgl').split(',');
+const only = arg('--only', 'lecture,realistic').split(',');
 const experiments = /** @type {import('./harness/webgpu-bench').Experiment[]} */ (
   arg('--experiments', '')
     .split(',')
@@ -34,7 +44,6 @@ const experiments = /** @type {import('./harness/webgpu-bench').Experiment[]} */
 
 /** @typedef {import('./harness/webgpu-bench').BenchSpec} BenchSpec */
 /** @typedef {import('./harness/webgpu-bench').Backend} Backend */
-/** @typedef {{ frameMs: ReturnType<typeof summarize>, gpuMs: ReturnType<typeof summarize> | null } | { error: string }} Row */
 
 /** @type {Array<[Backend, string]>} */
 const BACKENDS = [
@@ -77,76 +86,21 @@ if (process.argv.includes('--ab')) {
   VARIANTS.splice(0, VARIANTS.length, ...VARIANTS.filter(([n]) => keep(n)));
 }
 
-/** Every timed frame of each row, in the order of the cycles (for the paired ratios). */
-/** @type {Map<string, number[]>} */
-const framesOf = new Map();
-
-/**
- * Time `specs` interleaved frame by frame in `rounds` rounds and summarise each: frame time (and GPU time)
- * median, min, max. Frame k of every spec comes from the same cycle.
- * @param {import('@playwright/test').Page} page
- * @param {Array<[string, BenchSpec]>} specs
- * @returns {Promise<Record<string, Row>>}
- */
-async function roundRobin(page, specs) {
-  /** @type {Record<string, { frames: number[], gpu: number[], error?: string }>} */
-  const pooled = Object.fromEntries(specs.map(([name]) => [name, { frames: [], gpu: [] }]));
-  for (let round = 0; round < rounds; round++) {
-    const live = specs.filter(([name]) => !pooled[name].error);
-    const t0 = Date.now();
-    const results = await page.evaluate((a) => window.webgpuBench.cycle(a.specs, a.frames, a.warmup), {
-      specs: live.map(([, spec]) => spec),
-      frames: Math.ceil(frames / rounds),
-      warmup: round === 0 ? 3 : 1,
-    });
-    live.forEach(([name], k) => {
-      const r = results[k];
-      if (r.error) pooled[name].error = r.error;
-      pooled[name].frames.push(...r.frames);
-      pooled[name].gpu.push(...r.gpu);
-    });
-    console.log(`round ${round + 1}/${rounds}: ${((Date.now() - t0) / 1000).toFixed(1)} s`);
-  }
-  /** @type {Record<string, Row>} */
-  const rows = {};
-  for (const [name, p] of Object.entries(pooled)) {
-    framesOf.set(name, p.frames);
-    rows[name] = p.error
-      ? { error: p.error }
-      : { frameMs: summarize(p.frames), gpuMs: p.gpu.length ? summarize(p.gpu) : null };
-  }
-  return rows;
-}
-
-/**
- * Row `a` against row `b`: `paired`, the median of the ratios of frames timed in the same cycle (what a change
- * of load during the run moves least); `median` and `min`, the ratios of the medians and of the minima; `gpu`,
- * the ratio of the GPU-time medians when both have them. Null when either did not render.
- * @param {Record<string, Row>} rows @param {string} a @param {string} b
- */
-function ratio(rows, a, b) {
-  const ra = rows[a];
-  const rb = rows[b];
-  if (!ra || !rb || 'error' in ra || 'error' in rb) return null;
-  const fa = framesOf.get(a) ?? [];
-  const fb = framesOf.get(b) ?? [];
-  const pairs = fa.slice(0, Math.min(fa.length, fb.length)).map((t, i) => t / fb[i]);
-  return {
-    paired: summarize(pairs).median,
-    median: ra.frameMs.median / rb.frameMs.median,
-    min: ra.frameMs.min / rb.frameMs.min,
-    gpu: ra.gpuMs && rb.gpuMs ? ra.gpuMs.median / rb.gpuMs.median : null,
-  };
-}
+/** The realistic scene's variants: [name, spec without its backend]. */
+/** @type {Array<[string, Omit<BenchSpec, 'backend'>]>} */
+const REALISTIC = [
+  ['ShadingNodeMaterial phong', { scene: 'realistic', material: 'shadelab', shading: 'phong' }],
+  ['ShadingNodeMaterial gouraud', { scene: 'realistic', material: 'shadelab', shading: 'gouraud' }],
+  ['ShadingNodeMaterial flat', { scene: 'realistic', material: 'shadelab', shading: 'flat' }],
+  ['MeshPhongNodeMaterial', { scene: 'realistic', material: 'three-phong' }],
+  ['MeshLambertNodeMaterial', { scene: 'realistic', material: 'three-lambert' }],
+];
 
 /** The row name of variant `name` on `backend`. @param {Backend} backend @param {string} name */
 const rowName = (backend, name) => `${backend}: ${name}`;
 
-const playground = await openPlayground();
-const browser = await chromium.launch({
-  executablePath: chromiumExecutable() ?? undefined,
-  args: [...chromiumArgs, ...webgpuArgs],
-});
+const { page, info, close } = await openWebgpuBench({ width, height });
+const timings = new Timings();
 /** @type {Record<string, unknown>} */
 const results = {
   note: 'The machine was shared with other work during the run (2 cores; load average in Runs): the same-cycle ratios are the result, the absolute milliseconds are not.',
@@ -155,14 +109,6 @@ const results = {
   quick,
 };
 try {
-  const page = await browser.newPage();
-  page.on('console', (m) => {
-    if ((m.type() === 'error' || m.type() === 'warning') && !m.text().includes('404'))
-      console.log(`page ${m.type()}: ${m.text()}`);
-  });
-  await page.goto(playground.url(`harness/webgpu-bench.html?width=${width}&height=${height}`));
-  await page.waitForFunction(() => document.body.dataset.ready === '1', undefined, { timeout: 120_000 });
-  const info = await page.evaluate(() => window.webgpuBench.info());
   console.log(JSON.stringify(info));
   results.width = info.width;
   results.height = info.height;
@@ -190,6 +136,15 @@ try {
     },
   };
 
+  if (only.includes('lecture')) await lecture();
+  if (only.includes('realistic')) await realistic();
+} finally {
+  await close();
+}
+writeResults(results);
+
+/** Issue 15's lecture scene: every variant on every backend; results.perBackend and results.targets. */
+async function lecture() {
   /** @type {Array<[string, BenchSpec]>} */
   const specs = [];
   for (const [backend] of BACKENDS) {
@@ -199,7 +154,8 @@ try {
       specs.push([rowName(backend, name), { ...spec, backend }]);
     }
   }
-  const rows = await roundRobin(page, specs);
+  await timings.time(page, specs, { frames, rounds, label: 'lecture ' });
+  const rows = timings.rows;
 
   /** @type {Record<string, unknown>} */
   const perBackend = {};
@@ -214,15 +170,15 @@ try {
       variants[name] = {
         ...row,
         vsThreePhong:
-          spec.material === 'shadelab' ? ratio(rows, rowName(backend, name), reference(name)) : null,
+          spec.material === 'shadelab' ? timings.ratio(rowName(backend, name), reference(name)) : null,
         vsBaseline:
           spec.experiment === undefined
             ? undefined
-            : ratio(rows, rowName(backend, name), rowName(backend, name.replace(/, experiment .*$/, ''))),
+            : timings.ratio(rowName(backend, name), rowName(backend, name.replace(/, experiment .*$/, ''))),
         vsWebGLRenderer:
           backend === 'webgl' || spec.experiment !== undefined
             ? null
-            : ratio(rows, rowName(backend, name), rowName('webgl', name)),
+            : timings.ratio(rowName(backend, name), rowName('webgl', name)),
       };
     }
     const node = backend !== 'webgl';
@@ -239,7 +195,7 @@ try {
   for (const backend of /** @type {const} */ (['webgpu', 'webgl2'])) {
     for (const name of ['phong × phong', 'phong × blinn-phong', "phong × phong, three's lights"]) {
       const reference = name.includes("three's lights") ? THREE_PHONG_LIGHTS : THREE_PHONG;
-      const r = ratio(rows, rowName(backend, name), rowName(backend, reference));
+      const r = timings.ratio(rowName(backend, name), rowName(backend, reference));
       targets[`${backend}: ${name}`] = { ratio: r, target: '≤ 1.0', met: r === null ? null : r.paired <= 1 };
     }
   }
@@ -268,8 +224,85 @@ try {
     const r = /** @type {any} */ (t).ratio;
     console.log(`${name} / three phong: ${r ? r.paired.toFixed(3) : 'n/a'} (target ≤ 1.0)`);
   }
-} finally {
-  await browser.close();
-  await playground.close();
 }
-writeResults(results);
+
+/**
+ * Issue 23's realistic scene on WebGPURenderer's backends: ShadingNodeMaterial in each shading against
+ * MeshPhongNodeMaterial, all variants of both backends interleaved; results.realistic.
+ */
+async function realistic() {
+  const backends = /** @type {const} */ (['webgpu', 'webgl2']).filter((b) => onlyBackends.includes(b));
+  const row = (/** @type {Backend} */ backend, /** @type {string} */ name) => `realistic/${backend}: ${name}`;
+  /** @type {Array<[string, BenchSpec]>} */
+  const specs = backends.flatMap((backend) =>
+    REALISTIC.map(
+      ([name, spec]) => /** @type {[string, BenchSpec]} */ ([row(backend, name), { ...spec, backend }]),
+    ),
+  );
+  await timings.time(page, specs, { frames: realisticFrames, rounds: realisticRounds, label: 'realistic ' });
+  /** @type {Record<string, unknown>} */
+  const perBackend = {};
+  /** @type {Record<string, unknown>} */
+  const targets = {};
+  for (const backend of backends) {
+    const label = BACKENDS.find(([b]) => b === backend)?.[1] ?? backend;
+    /** @type {Record<string, unknown>} */
+    const variants = {};
+    for (const [name] of REALISTIC) {
+      variants[name] = {
+        ...timings.rows[row(backend, name)],
+        vsMeshPhong:
+          name === 'MeshPhongNodeMaterial'
+            ? null
+            : timings.ratio(row(backend, name), row(backend, 'MeshPhongNodeMaterial')),
+      };
+    }
+    perBackend[backend] = { label, variants };
+    for (const [shading, target] of [
+      ['phong', '≤ 1.0'],
+      ['gouraud', '< 1.0 (cheaper)'],
+      ['flat', '< 1.0 (cheaper)'],
+    ]) {
+      const r = timings.ratio(
+        row(backend, `ShadingNodeMaterial ${shading}`),
+        row(backend, 'MeshPhongNodeMaterial'),
+      );
+      targets[`${backend}: ${shading}`] = {
+        ratio: r,
+        target,
+        met: r === null ? null : target.startsWith('≤') ? r.paired <= 1 : r.paired < 1,
+      };
+    }
+  }
+  results.realistic = {
+    scene:
+      "bench/harness/realistic-scene.ts: 1,000 instances (10 × 10 × 10, spacing 3) of the level-3 tetrahedron sphere (256 triangles, indexed, smooth normals) with instance colours, three PointLights (decay 2) and a DirectionalLight, linear Fog, perspective camera 50°; ShadingNodeMaterial ka = kd = 0.6 grey, ks = 0.5, α = 32, phong lighting, three's lights (its flat shading of an instanced mesh: per fragment with the face normal from screen-space derivatives); MeshPhongNodeMaterial colour 0.6 grey, specular 0.5, shininess 32; MeshLambertNodeMaterial colour 0.6 grey. Each frame drawn offscreen into a linear RGBA8 render target, then a 1×1 read-back",
+    frames: realisticFrames,
+    rounds: realisticRounds,
+    perBackend,
+    targets,
+  };
+  for (const backend of backends) {
+    console.log(
+      `\nrealistic scene, ${BACKENDS.find(([b]) => b === backend)?.[1]}, ${info.width}×${info.height}`,
+    );
+    console.log('| variant | frame ms | min | GPU ms | / MeshPhongNodeMaterial (GPU) |');
+    for (const [name] of REALISTIC) {
+      const v = /** @type {any} */ (/** @type {any} */ (perBackend[backend]).variants[name]);
+      if (v.error) {
+        console.log(`| ${name} | does not render: ${v.error} |`);
+        continue;
+      }
+      const r = v.vsMeshPhong;
+      console.log(
+        `| ${name} | ${v.frameMs.median.toFixed(1)} | ${v.frameMs.min.toFixed(1)} | ${v.gpuMs ? v.gpuMs.median.toFixed(1) : 'n/a'} | ${r ? `${r.paired.toFixed(3)} (${r.median.toFixed(3)}) GPU ${r.gpu?.toFixed(3) ?? 'n/a'}` : '—'} |`,
+      );
+    }
+  }
+  for (const [name, t] of Object.entries(targets)) {
+    const x = /** @type {any} */ (t);
+    console.log(
+      `realistic ${name} / MeshPhongNodeMaterial: ${x.ratio ? x.ratio.paired.toFixed(3) : 'n/a'} (target ${x.target}: ${x.met ? 'met' : 'not met'})`,
+    );
+  }
+}

@@ -1,7 +1,11 @@
-// Benchmark page for bench/webgpu.bench.mjs (issue 15's measurements): the lecture's scene (the material bench's
-// level-6 sphere and one PhongLight) drawn by ShadingNodeMaterial on both backends of three's WebGPURenderer
-// (WebGPU; WebGL2 with forceWebGL) against three's MeshPhongNodeMaterial on the same backend, and by
-// ShadingMaterial and MeshPhongMaterial under WebGLRenderer, all in one page so that one cycle times them all.
+// Benchmark page for bench/webgpu.bench.mjs (issue 15's measurements, and issue 23's realistic scene) and
+// bench/lecture-refactor.bench.mjs (issue 23's lecture scene before and after its refactor): the lecture's scene
+// (the material bench's level-6 sphere and one PhongLight) or the realistic scene (realistic-scene.ts: 1,000
+// instanced spheres, three's lights, fog) drawn by ShadingNodeMaterial on both backends of three's
+// WebGPURenderer (WebGPU; WebGL2 with forceWebGL) against three's MeshPhongNodeMaterial on the same backend, and
+// by ShadingMaterial and MeshPhongMaterial under WebGLRenderer, all in one page so that one cycle times them all.
+// Another build of @shadelab/material (an older commit's, bundled by bench/lib/materialAt.mjs) can be loaded
+// beside this checkout's (loadModule) and drawn in the lecture's scene through the same three.js.
 //
 // Every renderer draws offscreen into a linear RGBA8 render target of the same size (a WebGPU canvas loses its
 // device when presented headless), each frame followed by a 1×1 read-back so that the GPU work is waited for:
@@ -12,6 +16,7 @@
 import { flatShadingGeometry, PhongLight, ShadingMaterial } from '@shadelab/material';
 import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
+import * as THREE from 'three';
 import {
   AmbientLight,
   type BufferGeometry,
@@ -19,15 +24,26 @@ import {
   DirectionalLight,
   type Material,
   Mesh,
+  MeshLambertMaterial,
   MeshPhongMaterial,
+  type Object3D,
   PerspectiveCamera,
   PointLight,
   Scene,
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import * as TSL from 'three/tsl';
 import { normalView, positionLocal, positionView, property, transformNormalToView } from 'three/tsl';
-import { ConditionalNode, MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+import * as THREE_WEBGPU from 'three/webgpu';
+import {
+  ConditionalNode,
+  MeshLambertNodeMaterial,
+  MeshPhongNodeMaterial,
+  RenderTarget,
+  WebGPURenderer,
+} from 'three/webgpu';
+import { buildRealisticScene, realisticGeometries } from './realistic-scene';
 
 /** Where a spec is drawn: WebGPURenderer's WebGPU or WebGL2 backend, or three's WebGLRenderer. */
 export type Backend = 'webgpu' | 'webgl2' | 'webgl';
@@ -38,10 +54,23 @@ type Lighting = 'phong' | 'blinn-phong';
 export interface BenchSpec {
   backend: Backend;
   /**
-   * 'shadelab': ShadingNodeMaterial (WebGPURenderer) or ShadingMaterial (WebGLRenderer); 'three-phong':
-   * MeshPhongNodeMaterial (WebGPURenderer) or MeshPhongMaterial (WebGLRenderer), shininess 32.
+   * 'lecture' (default): the material bench's level-6 sphere and the lights of `lights`; 'realistic': the
+   * realistic scene (realistic-scene.ts: 1,000 instances of the level-3 sphere with instance colours, three
+   * PointLights and a DirectionalLight, Fog), ka = kd = 0.6 grey (three's: colour), ks = 0.5, α = 32; `lights`,
+   * `build` and `experiment` do not apply to it.
    */
-  material: 'shadelab' | 'three-phong';
+  scene?: 'lecture' | 'realistic';
+  /**
+   * 'shadelab': ShadingNodeMaterial (WebGPURenderer) or ShadingMaterial (WebGLRenderer); 'three-phong':
+   * MeshPhongNodeMaterial (WebGPURenderer) or MeshPhongMaterial (WebGLRenderer), shininess 32; 'three-lambert'
+   * (realistic scene only): MeshLambertNodeMaterial or MeshLambertMaterial.
+   */
+  material: 'shadelab' | 'three-phong' | 'three-lambert';
+  /**
+   * 'shadelab' in the lecture's scene: the name of a build of @shadelab/material given to loadModule (an older
+   * commit's) whose ShadingMaterial / ShadingNodeMaterial and PhongLight draw it; default: this checkout's.
+   */
+  build?: string;
   shading?: Shading;
   lighting?: Lighting;
   celBands?: number;
@@ -275,7 +304,8 @@ function sphere(normals: boolean, indexed: boolean): BufferGeometry {
   }
   return g;
 }
-let flatPrepared: BufferGeometry | null = null;
+/** flatShadingGeometry of the lecture's sphere, per build of @shadelab/material ('' = this checkout's). */
+const flatPrepared = new Map<string, BufferGeometry>();
 
 /**
  * The geometry each material draws: ours read positions only (the analytic sphere normal); three's need
@@ -286,17 +316,23 @@ function geometryOf(spec: BenchSpec): BufferGeometry {
   if (spec.material !== 'shadelab') return sphere(true, true);
   if ((spec.shading ?? 'phong') !== 'flat') return sphere(false, true);
   if (spec.backend !== 'webgl') return sphere(false, false);
-  flatPrepared ??= flatShadingGeometry(sphere(false, true));
-  return flatPrepared;
+  const key = spec.build ?? '';
+  let prepared = flatPrepared.get(key);
+  if (prepared === undefined) {
+    prepared = buildOf(spec.build).flatShadingGeometry(sphere(false, true));
+    flatPrepared.set(key, prepared);
+  }
+  return prepared;
 }
 
 const LIGHT_POSITION = [-5, 10, 20] as const;
 
 function materialOf(spec: BenchSpec, scene: Scene): Material {
   const lights = spec.lights ?? 'phong';
-  const phongLights: PhongLight[] = [];
+  const build = buildOf(spec.build);
+  const phongLights: Object3D[] = [];
   if (lights === 'phong' && spec.material === 'shadelab') {
-    const light = new PhongLight();
+    const light = new build.PhongLight();
     light.position.set(...LIGHT_POSITION);
     scene.add(light);
     phongLights.push(light);
@@ -328,12 +364,91 @@ function materialOf(spec: BenchSpec, scene: Scene): Material {
     celBands: spec.celBands ?? 0,
     lights: phongLights,
   };
-  if (spec.backend === 'webgl') return new ShadingMaterial(options);
-  // tsconfig.test.json maps @shadelab/material to its sources but not @shadelab/material/webgpu (its dist):
-  // two PhongLight types for the checker, one class at run time (Vite resolves both to the sources).
-  const nodeOptions = { ...options, lights: phongLights as never };
-  if (spec.experiment !== undefined) return experimentalMaterial(spec.experiment, nodeOptions);
-  return new ShadingNodeMaterial(nodeOptions);
+  if (spec.backend === 'webgl') return new build.ShadingMaterial(options);
+  if (spec.experiment !== undefined) return experimentalMaterial(spec.experiment, options);
+  return new build.ShadingNodeMaterial(options);
+}
+
+// ── Builds of @shadelab/material ────────────────────────────────────────────────────────────────────────────
+
+/** What the lecture's scene takes from a build of @shadelab/material (this checkout's, or an older commit's). */
+interface MaterialBuild {
+  ShadingMaterial: new (options: object) => Material;
+  ShadingNodeMaterial: new (options: object) => Material;
+  PhongLight: new () => Object3D;
+  flatShadingGeometry: (geometry: BufferGeometry) => BufferGeometry;
+}
+
+// tsconfig.test.json maps @shadelab/material to its sources but not @shadelab/material/webgpu (its dist): two
+// PhongLight types for the checker, one class at run time (Vite resolves both to the sources).
+const checkout = {
+  ShadingMaterial,
+  ShadingNodeMaterial,
+  PhongLight,
+  flatShadingGeometry,
+} as unknown as MaterialBuild;
+const builds = new Map<string, MaterialBuild>();
+
+/**
+ * Load another build of @shadelab/material under `name`: `code` is one ES module (bench/lib/materialAt.mjs)
+ * exporting its main and webgpu entries, whose imports of `three`, `three/webgpu` and `three/tsl` read this
+ * page's (globalThis.__shadelabThree, __shadelabThreeWebGPU, __shadelabTSL), so that both builds draw through
+ * one three.js. Returns the module's export names.
+ */
+async function loadModule(name: string, code: string): Promise<string[]> {
+  Object.assign(globalThis, {
+    __shadelabThree: THREE,
+    __shadelabThreeWebGPU: THREE_WEBGPU,
+    __shadelabTSL: TSL,
+  });
+  const url = URL.createObjectURL(new Blob([code], { type: 'text/javascript' }));
+  const module = (await import(/* @vite-ignore */ url)) as MaterialBuild;
+  URL.revokeObjectURL(url);
+  for (const key of [
+    'ShadingMaterial',
+    'ShadingNodeMaterial',
+    'PhongLight',
+    'flatShadingGeometry',
+  ] as const) {
+    if (typeof module[key] !== 'function') throw new Error(`loadModule('${name}'): no ${key} in the build`);
+  }
+  builds.set(name, module);
+  return Object.keys(module);
+}
+
+/** The build loaded under `name`, or this checkout's. */
+function buildOf(name: string | undefined): MaterialBuild {
+  if (name === undefined) return checkout;
+  const build = builds.get(name);
+  if (build === undefined) throw new Error(`loadModule('${name}', …) first`);
+  return build;
+}
+
+// ── The realistic scene ─────────────────────────────────────────────────────────────────────────────────────
+
+/** The realistic scene wearing `spec`'s material (indexed sphere; flat shading of an instanced mesh lights per fragment with the derivatives' face normal whatever the geometry). */
+function realisticOf(spec: BenchSpec): Built {
+  const grey = new Color(0.6, 0.6, 0.6);
+  const node = spec.backend !== 'webgl';
+  let material: Material;
+  if (spec.material === 'shadelab') {
+    const options = {
+      shading: spec.shading ?? 'phong',
+      lighting: spec.lighting ?? 'phong',
+      ka: [0.6, 0.6, 0.6],
+      kd: [0.6, 0.6, 0.6],
+      ks: 0.5,
+      shininess: 32,
+    };
+    material = node ? new ShadingNodeMaterial(options as never) : new ShadingMaterial(options as never);
+  } else if (spec.material === 'three-phong') {
+    const options = { color: grey, specular: new Color(0.5, 0.5, 0.5), shininess: 32 };
+    material = node ? new MeshPhongNodeMaterial(options) : new MeshPhongMaterial(options);
+  } else {
+    material = node ? new MeshLambertNodeMaterial({ color: grey }) : new MeshLambertMaterial({ color: grey });
+  }
+  const { scene, camera, mesh } = buildRealisticScene(material, realisticGeometries.indexed, width / height);
+  return { scene, camera, mesh };
 }
 
 interface Built {
@@ -348,6 +463,11 @@ function sceneOf(spec: BenchSpec): Built {
   const key = JSON.stringify(spec);
   let built = scenes.get(key);
   if (built !== undefined) return built;
+  if (spec.scene === 'realistic') {
+    built = realisticOf(spec);
+    scenes.set(key, built);
+    return built;
+  }
   const scene = new Scene();
   scene.background = new Color(0, 0, 0);
   const mesh = new Mesh(geometryOf(spec), materialOf(spec, scene));
@@ -420,11 +540,22 @@ async function cycle(specs: BenchSpec[], frames: number, warmup: number): Promis
   for (let k = 0; k < specs.length; k++) {
     const b = built[k];
     if (b === null) continue;
+    // three reports a node material it cannot build with console.error and draws on without it: such a spec
+    // is left out with that error, as one that throws.
+    const logged: string[] = [];
+    const consoleError = console.error;
+    console.error = (...args: unknown[]) => {
+      logged.push(args.map(String).join(' '));
+      consoleError.apply(console, args);
+    };
     try {
       for (let i = 0; i < warmup; i++) await frame(specs[k], b);
     } catch (error) {
       results[k].error = error instanceof Error ? error.message : String(error);
+    } finally {
+      console.error = consoleError;
     }
+    if (results[k].error === undefined && logged.length > 0) results[k].error = logged[0].slice(0, 300);
   }
   for (let i = 0; i < frames; i++) {
     for (let k = 0; k < specs.length; k++) {
@@ -464,7 +595,7 @@ async function centre(spec: BenchSpec): Promise<number[]> {
   return [...(data as Uint8Array)];
 }
 
-const api = { info, cycle, shader, centre };
+const api = { info, cycle, shader, centre, loadModule };
 declare global {
   interface Window {
     webgpuBench: typeof api;
