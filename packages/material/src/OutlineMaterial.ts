@@ -13,22 +13,17 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
-import { SPHERE_FLAG } from './geometryFlags.js';
 import { fragmentShader, vertexShader } from './OutlineMaterial.glsl.js';
-import { type ColorInput, checkNonNegative, setColor } from './validate.js';
+import {
+  checkThickness,
+  OUTLINE_DEFAULTS,
+  type OutlineMaterialOptions,
+  outlineSphereNormals,
+  setOutlineColor,
+} from './outlineOptions.js';
+import type { ColorInput } from './validate.js';
 
-/** Options of {@link OutlineMaterial}. */
-export interface OutlineMaterialOptions {
-  /** Outline width in world units, measured along the surface normal. Finite, ≥ 0. @default 0.03 */
-  thickness?: number;
-  /**
-   * Outline colour, read like every colour of this package (see {@link ColorInput}): a CSS string is sRGB
-   * (`'#f2f2f2'`), a `THREE.Color` or `[r, g, b]` is linear, and a number is a grey level in 0 … 1 (so a
-   * three-style hex number such as `0xff8000` is refused with its `'#ff8000'` spelling, never misread).
-   * @default 0 (black)
-   */
-  color?: ColorInput;
-}
+export type { OutlineMaterialOptions } from './outlineOptions.js';
 
 /**
  * The inverted-hull outline for cel shading: draws the back faces of a mesh pushed out by `thickness`
@@ -56,13 +51,16 @@ export class OutlineMaterial extends ShaderMaterial {
   readonly #color = new Color(0, 0, 0);
 
   /** @param options - The thickness and the colour (see {@link OutlineMaterialOptions}). */
-  constructor({ thickness = 0.03, color = 0 }: OutlineMaterialOptions = {}) {
+  constructor({
+    thickness = OUTLINE_DEFAULTS.thickness,
+    color = OUTLINE_DEFAULTS.color,
+  }: OutlineMaterialOptions = {}) {
     super({
       vertexShader,
       fragmentShader,
       uniforms: {
         shadingNormalMatrix: { value: new Matrix3() },
-        thickness: { value: 0.03 },
+        thickness: { value: OUTLINE_DEFAULTS.thickness },
         outlineColor: { value: new Color() },
         ...UniformsUtils.clone(UniformsLib.fog),
       },
@@ -77,7 +75,7 @@ export class OutlineMaterial extends ShaderMaterial {
     return this.uniforms.thickness.value;
   }
   set thickness(value: number) {
-    this.uniforms.thickness.value = checkNonNegative('OutlineMaterial.thickness', value);
+    this.uniforms.thickness.value = checkThickness('OutlineMaterial', value);
   }
 
   /** Outline colour (linear RGB; set it with a {@link ColorInput}, a number being a grey level in 0 … 1). @default Color(0, 0, 0) */
@@ -85,7 +83,7 @@ export class OutlineMaterial extends ShaderMaterial {
     return this.#color;
   }
   set color(value: ColorInput) {
-    setColor('OutlineMaterial.color', this.#color, value, 1);
+    setOutlineColor('OutlineMaterial', this.#color, value);
     this.uniforms.outlineColor.value.copy(this.#color);
   }
 
@@ -98,9 +96,7 @@ export class OutlineMaterial extends ShaderMaterial {
     object: Object3D,
     _group: Group,
   ): void {
-    const sphere =
-      geometry.getAttribute('normal') === undefined &&
-      (geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true);
+    const sphere = outlineSphereNormals(geometry);
     if (sphere !== (this.defines.SPHERE_NORMALS !== undefined)) {
       this.defines = sphere ? { SPHERE_NORMALS: '' } : {};
       this.needsUpdate = true;

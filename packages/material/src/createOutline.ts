@@ -33,6 +33,9 @@ const SHARED = {
  * `dispose()` on an instanced or skinned outline: it would free the mesh's shared resources; dispose of its
  * material.
  *
+ * For three's `WebGPURenderer` (which draws node materials only), `createOutlineNode` of
+ * `@shadelab/material/webgpu` makes the same outline with an `OutlineNodeMaterial`.
+ *
  * @example
  * const outline = createOutline(mesh, { thickness: 0.05, color: '#000000' });
  * @throws TypeError for a `BatchedMesh` (its draws are not shared with a second object): outline each geometry
@@ -43,18 +46,33 @@ export function createOutline(
   mesh: Mesh<BufferGeometry, Material | Material[]>,
   options: OutlineMaterialOptions = {},
 ): Mesh<BufferGeometry, OutlineMaterial> {
+  checkOutlined('createOutline', mesh);
+  return attachOutline(mesh, new OutlineMaterial(options));
+}
+
+/** Throws the TypeError of `createOutline` and `createOutlineNode` (named by `caller`) for a BatchedMesh. */
+export function checkOutlined(caller: string, mesh: Mesh<BufferGeometry, Material | Material[]>): void {
   if ((mesh as { isBatchedMesh?: boolean }).isBatchedMesh === true) {
     throw new TypeError(
-      'createOutline(mesh): mesh must be a Mesh, SkinnedMesh or InstancedMesh, got a BatchedMesh (not supported: outline each geometry with its own mesh)',
+      `${caller}(mesh): mesh must be a Mesh, SkinnedMesh or InstancedMesh, got a BatchedMesh (not supported: outline each geometry with its own mesh)`,
     );
   }
-  const material = new OutlineMaterial(options);
+}
+
+/**
+ * The outline object of `createOutline` and `createOutlineNode`: a child of `mesh` of the same kind, sharing its
+ * geometry, drawn with `material` (see {@link createOutline}).
+ */
+export function attachOutline<M extends Material>(
+  mesh: Mesh<BufferGeometry, Material | Material[]>,
+  material: M,
+): Mesh<BufferGeometry, M> {
   const skinned = (mesh as SkinnedMesh).isSkinnedMesh === true;
   const instanced = (mesh as InstancedMesh).isInstancedMesh === true;
-  const outline: Mesh<BufferGeometry, OutlineMaterial> = skinned
-    ? new SkinnedMeshClass(mesh.geometry, material)
+  const outline: Mesh<BufferGeometry, M> = skinned
+    ? (new SkinnedMeshClass(mesh.geometry, material) as unknown as Mesh<BufferGeometry, M>)
     : instanced
-      ? new InstancedMeshClass(mesh.geometry, material, 0)
+      ? (new InstancedMeshClass(mesh.geometry, material, 0) as unknown as Mesh<BufferGeometry, M>)
       : new Mesh(mesh.geometry, material);
   const keys = new Set<string>(SHARED.morph);
   if (instanced) {

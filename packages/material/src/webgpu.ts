@@ -1,9 +1,11 @@
 /**
  * `ShadingMaterial`'s shading for three's `WebGPURenderer` (`three/webgpu`): a node material, on the WebGPU and
- * the WebGL2 backend, and `SphereImpostorMaterial`'s ray-cast sphere as a node material. A separate entry
- * point, so that apps on `WebGLRenderer` never load `three/webgpu`.
+ * the WebGL2 backend, `SphereImpostorMaterial`'s ray-cast sphere and `OutlineMaterial`'s cel outline as node
+ * materials. A separate entry point, so that apps on `WebGLRenderer` never load `three/webgpu`.
  * @module @shadelab/material/webgpu
  */
+export { createOutlineNode } from './createOutlineNode.js';
+export { OutlineNodeMaterial, type OutlineNodeMaterialOptions } from './OutlineNodeMaterial.js';
 export { provokingVertexOf } from './provokingVertexOf.js';
 export {
   ShadingNodeMaterial,
