@@ -22,7 +22,8 @@
 // --quick: 6 frames in 2 rounds, the realistic scene 2 in 1 (a smoke check, not a measurement). --only: the
 // scenes to time (the results file then holds only those). --experiments: also time the named A/B variants of
 // the lighting (the page's experimentalMaterial) on both backends; --ab: only phong × phong and three's phong
-// material (with the experiments), for a quicker A/B run. --backends also limits the realistic scene (drawn on
+// material (with the experiments), in the realistic scene only phong, MeshPhongNodeMaterial and the experiments,
+// for a quicker A/B run. --backends also limits the realistic scene (drawn on
 // WebGPURenderer's backends only).
 import { arg, writeResults } from './lib/bench.mjs';
 import { openWebgpuBench, Timings } from './lib/webgpuPage.mjs';
@@ -80,7 +81,8 @@ for (const name of experiments) {
   }
 }
 // --ab: only phong shading (phong lighting) and three's phong material, with the experiments, for A/B runs.
-if (process.argv.includes('--ab')) {
+const ab = process.argv.includes('--ab');
+if (ab) {
   const keep = (/** @type {string} */ n) =>
     n.startsWith('three phong') || n === 'phong × phong' || n.startsWith('phong × phong, ');
   VARIANTS.splice(0, VARIANTS.length, ...VARIANTS.filter(([n]) => keep(n)));
@@ -233,9 +235,19 @@ async function lecture() {
 async function realistic() {
   const backends = /** @type {const} */ (['webgpu', 'webgl2']).filter((b) => onlyBackends.includes(b));
   const row = (/** @type {Backend} */ backend, /** @type {string} */ name) => `realistic/${backend}: ${name}`;
-  /** @type {Array<[string, BenchSpec]>} */
+  /** @type {Array<[string, Omit<BenchSpec, 'backend'>]>} */
+  const timed = [
+    ...REALISTIC.filter(([name]) => !ab || name.endsWith('phong') || name === 'MeshPhongNodeMaterial'),
+    ...experiments.map(
+      (name) =>
+        /** @type {[string, Omit<BenchSpec, 'backend'>]} */ ([
+          `ShadingNodeMaterial phong, experiment ${name}`,
+          { scene: 'realistic', material: 'shadelab', shading: 'phong', experiment: name },
+        ]),
+    ),
+  ];
   const specs = backends.flatMap((backend) =>
-    REALISTIC.map(
+    timed.map(
       ([name, spec]) => /** @type {[string, BenchSpec]} */ ([row(backend, name), { ...spec, backend }]),
     ),
   );
@@ -248,16 +260,21 @@ async function realistic() {
     const label = BACKENDS.find(([b]) => b === backend)?.[1] ?? backend;
     /** @type {Record<string, unknown>} */
     const variants = {};
-    for (const [name] of REALISTIC) {
+    for (const [name, spec] of timed) {
       variants[name] = {
         ...timings.rows[row(backend, name)],
         vsMeshPhong:
           name === 'MeshPhongNodeMaterial'
             ? null
             : timings.ratio(row(backend, name), row(backend, 'MeshPhongNodeMaterial')),
+        vsBaseline:
+          spec.experiment === undefined
+            ? undefined
+            : timings.ratio(row(backend, name), row(backend, 'ShadingNodeMaterial phong')),
       };
     }
     perBackend[backend] = { label, variants };
+    if (ab) continue;
     for (const [shading, target] of [
       ['phong', '≤ 1.0'],
       ['gouraud', '< 1.0 (cheaper)'],
@@ -287,7 +304,7 @@ async function realistic() {
       `\nrealistic scene, ${BACKENDS.find(([b]) => b === backend)?.[1]}, ${info.width}×${info.height}`,
     );
     console.log('| variant | frame ms | min | GPU ms | / MeshPhongNodeMaterial (GPU) |');
-    for (const [name] of REALISTIC) {
+    for (const [name] of timed) {
       const v = /** @type {any} */ (/** @type {any} */ (perBackend[backend]).variants[name]);
       if (v.error) {
         console.log(`| ${name} | does not render: ${v.error} |`);
@@ -295,7 +312,7 @@ async function realistic() {
       }
       const r = v.vsMeshPhong;
       console.log(
-        `| ${name} | ${v.frameMs.median.toFixed(1)} | ${v.frameMs.min.toFixed(1)} | ${v.gpuMs ? v.gpuMs.median.toFixed(1) : 'n/a'} | ${r ? `${r.paired.toFixed(3)} (${r.median.toFixed(3)}) GPU ${r.gpu?.toFixed(3) ?? 'n/a'}` : '—'} |`,
+        `| ${name} | ${v.frameMs.median.toFixed(1)} | ${v.frameMs.min.toFixed(1)} | ${v.gpuMs ? v.gpuMs.median.toFixed(1) : 'n/a'} | ${r ? `${r.paired.toFixed(3)} (${r.median.toFixed(3)}) GPU ${r.gpu?.toFixed(3) ?? 'n/a'}` : '—'} |${v.vsBaseline ? ` / without: ${v.vsBaseline.paired.toFixed(3)} (GPU ${v.vsBaseline.gpu?.toFixed(3)})` : ''}`,
       );
     }
   }

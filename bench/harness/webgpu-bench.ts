@@ -56,8 +56,8 @@ export interface BenchSpec {
   /**
    * 'lecture' (default): the material bench's level-6 sphere and the lights of `lights`; 'realistic': the
    * realistic scene (realistic-scene.ts: 1,000 instances of the level-3 sphere with instance colours, three
-   * PointLights and a DirectionalLight, Fog), ka = kd = 0.6 grey (three's: colour), ks = 0.5, α = 32; `lights`,
-   * `build` and `experiment` do not apply to it.
+   * PointLights and a DirectionalLight, Fog), ka = kd = 0.6 grey (three's: colour), ks = 0.5, α = 32; `lights`
+   * and `build` do not apply to it.
    */
   scene?: 'lecture' | 'realistic';
   /**
@@ -440,7 +440,11 @@ function realisticOf(spec: BenchSpec): Built {
       ks: 0.5,
       shininess: 32,
     };
-    material = node ? new ShadingNodeMaterial(options as never) : new ShadingMaterial(options as never);
+    material = !node
+      ? new ShadingMaterial(options as never)
+      : spec.experiment !== undefined
+        ? experimentalMaterial(spec.experiment, options)
+        : new ShadingNodeMaterial(options as never);
   } else if (spec.material === 'three-phong') {
     const options = { color: grey, specular: new Color(0.5, 0.5, 0.5), shininess: 32 };
     material = node ? new MeshPhongNodeMaterial(options) : new MeshPhongMaterial(options);
