@@ -38,8 +38,13 @@ const budgetOf = (/** @type {string} */ pkg) => ({ material: 19968, playwright: 
  * @shadelab/material/webgpu, the two node materials for WebGPURenderer (the shading: TSL lighting model,
  * PhongLight light node, face texture for exact flat shading, both sides in one pass; the ray-cast impostor:
  * bounds in the vertex stage, exact depth; three/webgpu excluded): 6 kB (4 kB held the shading alone).
+ * @shadelab/material/adaptive, AdaptiveShading with its CPU error model (a rasteriser and shade() over sampled
+ * directions), the measured cost table, the allocation and the instance groups (@shadelab/sphere external): 6 kB.
  */
-const subpathBudgets = /** @type {Record<string, number>} */ ({ '@shadelab/material/webgpu': 6144 });
+const subpathBudgets = /** @type {Record<string, number>} */ ({
+  '@shadelab/material/webgpu': 6144,
+  '@shadelab/material/adaptive': 6144,
+});
 
 const tmp = join(root, 'node_modules', '.shadelab-size');
 mkdirSync(tmp, { recursive: true });

@@ -3,7 +3,8 @@
  * (`<shadingMaterial>`, `<phongLight>`, `<subdivisionSphereGeometry>`, `<outlineMaterial>`,
  * `<sphereImpostorMaterial>`, `<sphereImpostor>`, `<autoDetailSphere>`), and it gives the components
  * `<Trackball>` (with the `useTrackball` hook), `<LectureCamera>`, `<AutoDetailSphere>` and `<ShadedModel>`
- * (with the `useSwapMaterials` hook: a loaded model's materials swapped for ShadingMaterials).
+ * (with the `useSwapMaterials` hook: a loaded model's materials swapped for ShadingMaterials), and
+ * `useAdaptiveShading` (the cheapest shading and detail under an error budget, every frame).
  * @module @shadelab/react
  * @mergeModuleWith <project>
  */
@@ -15,5 +16,6 @@ export type { ColorProp, ShadelabElement, ShadelabElements } from './elements.js
 export { LectureCamera, type LectureCameraProps } from './LectureCamera.js';
 export { ShadedModel, type ShadedModelProps } from './ShadedModel.js';
 export { Trackball, type TrackballEvent, type TrackballProps } from './Trackball.js';
+export { useAdaptiveShading } from './useAdaptiveShading.js';
 export { useSwapMaterials } from './useSwapMaterials.js';
 export { type UseTrackballOptions, useTrackball } from './useTrackball.js';
