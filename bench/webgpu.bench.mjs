@@ -98,6 +98,31 @@ const REALISTIC = [
   ['MeshLambertNodeMaterial', { scene: 'realistic', material: 'three-lambert' }],
 ];
 
+/** The operations countOps counts: name → pattern (WGSL and GLSL spellings). */
+const OPS = {
+  statements: /;\s*$/gm,
+  branches: /\bif\s*\(/g,
+  normalize: /\bnormalize\s*\(/g,
+  length: /\blength\s*\(/g,
+  dot: /\bdot\s*\(/g,
+  pow: /\bpow\s*\(/g,
+  exp2: /\bexp2\s*\(/g,
+  divisions: /\s\/\s/g,
+  derivatives: /\b(dpdx|dpdy|dFdx|dFdy)\s*\(/g,
+  inverse: /inverse/g,
+};
+
+/**
+ * Counts of OPS in the main function of a generated shader stage (from `start`, the entry point, to the end).
+ * @param {string | null} code @param {RegExp} start @returns {Record<string, number> | null}
+ */
+function countOps(code, start) {
+  if (code === null) return null;
+  const at = code.search(start);
+  const main = at < 0 ? code : code.slice(at);
+  return Object.fromEntries(Object.entries(OPS).map(([name, re]) => [name, (main.match(re) ?? []).length]));
+}
+
 /** The row name of variant `name` on `backend`. @param {Backend} backend @param {string} name */
 const rowName = (backend, name) => `${backend}: ${name}`;
 
@@ -291,6 +316,21 @@ async function realistic() {
       };
     }
   }
+  // What each variant's generated shaders do per vertex and per fragment (the WGSL of the WebGPU backend, the
+  // GLSL of the WebGL2 one): calls and statements in the stage's main function.
+  /** @type {Record<string, Record<string, unknown>>} */
+  const shaderOps = {};
+  for (const backend of backends) {
+    shaderOps[backend] = {};
+    for (const [name, spec] of timed) {
+      if ('error' in (timings.rows[row(backend, name)] ?? {})) continue;
+      const code = await page.evaluate((sp) => window.webgpuBench.shader(sp), { ...spec, backend });
+      shaderOps[backend][name] = {
+        vertex: countOps(code.vertexShader, /@vertex|void main\s*\(/),
+        fragment: countOps(code.fragmentShader, /@fragment|void main\s*\(/),
+      };
+    }
+  }
   results.realistic = {
     scene:
       "bench/harness/realistic-scene.ts: 1,000 instances (10 × 10 × 10, spacing 3) of the level-3 tetrahedron sphere (256 triangles, indexed, smooth normals) with instance colours, three PointLights (decay 2) and a DirectionalLight, linear Fog, perspective camera 50°; ShadingNodeMaterial ka = kd = 0.6 grey, ks = 0.5, α = 32, phong lighting, three's lights (its flat shading of an instanced mesh: per fragment with the face normal from screen-space derivatives); MeshPhongNodeMaterial colour 0.6 grey, specular 0.5, shininess 32; MeshLambertNodeMaterial colour 0.6 grey. Each frame drawn offscreen into a linear RGBA8 render target, then a 1×1 read-back",
@@ -298,6 +338,7 @@ async function realistic() {
     rounds: realisticRounds,
     perBackend,
     targets,
+    shaderOps,
   };
   for (const backend of backends) {
     console.log(

@@ -40,6 +40,7 @@ import {
   ConditionalNode,
   MeshLambertNodeMaterial,
   MeshPhongNodeMaterial,
+  NodeMaterial,
   RenderTarget,
   WebGPURenderer,
 } from 'three/webgpu';
@@ -220,9 +221,17 @@ async function info() {
  *   (three's ConditionalNode patched for this material only; three's own `uniformFlow` context does the same
  *   but drops the parentheses and leaves reused selects unassigned in three 0.187);
  * - 'branch-free-mix': the same with `mix(b, a, float(cond))`, what plain TSL can write (exact when both
- *   operands are finite: weight 0 or 1).
+ *   operands are finite: weight 0 or 1);
+ * - 'static-bindings': three's own observer (NodeMaterial.setupObserver), without the material's `hasNode`, so
+ *   that three does not refresh the material's bindings on every frame (a bound on what that refresh costs;
+ *   not a proposal as it stands: ka/kd edited in place would no longer be uploaded).
  */
-export type Experiment = 'hoist-v' | 'plain-normalize' | 'branch-free' | 'branch-free-mix';
+export type Experiment =
+  | 'hoist-v'
+  | 'plain-normalize'
+  | 'branch-free'
+  | 'branch-free-mix'
+  | 'static-bindings';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes and three's node builder are dynamically typed.
 type N = any;
@@ -257,6 +266,11 @@ conditional.generate = function (this: N, builder: N, output: string): string {
 
 function experimentalMaterial(name: Experiment, options: object): Material {
   class Experimental extends ShadingNodeMaterial {
+    override setupObserver(builder: N): N {
+      return name === 'static-bindings'
+        ? (NodeMaterial.prototype as N).setupObserver.call(this, builder)
+        : super.setupObserver(builder);
+    }
     override setupLighting(builder: N): N {
       if (name !== 'plain-normalize' || this.shading !== 'phong' || builder.camera?.isOrthographicCamera) {
         return super.setupLighting(builder);
