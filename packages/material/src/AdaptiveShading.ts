@@ -141,6 +141,8 @@ export class AdaptiveShading {
   readonly parameters: Readonly<Required<AdaptiveShadingOptions>>;
   readonly #entries = new Map<Mesh, Entry>();
   readonly #derived = new WeakMap<BufferGeometry, Derived>();
+  /** Tables measured so far, per geometry, by the surface's options. */
+  readonly #tables = new WeakMap<BufferGeometry, Map<string, ShadingErrorTable>>();
   readonly #made = new Set<BufferGeometry>();
   #size: { width: number; height: number } | null = null;
 
@@ -186,7 +188,8 @@ export class AdaptiveShading {
   /**
    * Manage `object`: a `Mesh` or `InstancedMesh` whose material is a `ShadingMaterial` (the surface; its
    * `shading` is what this chooses) and whose geometry has normals (or is a sphere). Adding it again re-measures
-   * its table (after changing the material's options, say).
+   * its table when the material's options changed (tables are kept per geometry and options: objects sharing
+   * both measure once).
    * @throws TypeError for anything else (named), once: nothing is managed then.
    */
   add(object: Mesh, options: AdaptiveAddOptions = {}): this {
@@ -216,13 +219,7 @@ export class AdaptiveShading {
     if (shadings.length === 0)
       throw new RangeError('AdaptiveShading.add: shadings must name at least one shading');
     const levels = this.#levels(geometry);
-    const table =
-      options.table ??
-      measureShadingError(geometry, {
-        ...this.parameters.model,
-        surface: surfaceOf(source),
-        levels,
-      });
+    const table = options.table ?? this.#measure(geometry, source, levels);
     const variants = new Map<Shading, ShadingMaterial>();
     for (const s of shadings) {
       const v = source.clone();
@@ -358,6 +355,27 @@ export class AdaptiveShading {
     for (const o of [...this.#entries.keys()]) this.remove(o);
     for (const g of this.#made) g.dispose();
     this.#made.clear();
+  }
+
+  /** The table of `geometry` drawn with `source`'s options: measured once per geometry and options. */
+  #measure(
+    geometry: BufferGeometry,
+    source: ShadingMaterial,
+    levels: ShadingErrorLevel[],
+  ): ShadingErrorTable {
+    const surface = surfaceOf(source);
+    const key = JSON.stringify(surface);
+    let known = this.#tables.get(geometry);
+    if (!known) {
+      known = new Map();
+      this.#tables.set(geometry, known);
+    }
+    let table = known.get(key);
+    if (!table) {
+      table = measureShadingError(geometry, { ...this.parameters.model, surface, levels });
+      known.set(key, table);
+    }
+    return table;
   }
 
   /** A subdivision sphere's coarser levels (none for any other geometry). */

@@ -1,0 +1,41 @@
+// AdaptiveShading (issue 25) in Chromium: the adaptive picture against the full-detail Phong picture of the same
+// scene (honesty: at most the budget at the 99th percentile of the drawn pixels, at most 0.5% of them over it), and
+// 1,000 instances moving for 600 frames with a bounded number of draw calls and uploads.
+import { expect, test } from '@playwright/test';
+import type { CameraKind, Field } from './harness/adaptive';
+
+test.beforeEach(async ({ page }) => {
+  await page.goto('/harness/adaptive.html');
+  await page.waitForFunction(() => document.body.dataset.ready === '1');
+});
+
+for (const field of ['spheres', 'knots'] as Field[]) {
+  for (const camera of ['perspective', 'orthographic'] as CameraKind[]) {
+    test(`honesty: a ${field} field, ${camera} camera, budgets 2, 8 and 32`, async ({ page }) => {
+      for (const budget of [2, 8, 32]) {
+        const r = await page.evaluate(
+          ([f, c, b]) => window.adaptiveHarness.honesty(f as Field, c as CameraKind, b as number),
+          [field, camera, budget] as const,
+        );
+        test.info().annotations.push({
+          type: `budget ${budget}`,
+          description: `drawn ${r.drawn}, p99 ${r.p99}, over ${(100 * r.over).toFixed(3)}%, max ${r.max}, choices ${JSON.stringify(r.choices)}`,
+        });
+        expect(r.drawn).toBeGreaterThan(2000);
+        expect(r.p99).toBeLessThanOrEqual(budget);
+        expect(r.over).toBeLessThanOrEqual(0.005);
+      }
+    });
+  }
+}
+
+test('1,000 instances moving for 600 frames: bounded draw calls and uploads', async ({ page }) => {
+  const r = await page.evaluate(() => window.adaptiveHarness.instances(600));
+  test.info().annotations.push({ type: 'instances', description: JSON.stringify(r) });
+  expect(r.instances).toBe(1000);
+  // One draw per group in use (the original InstancedMesh draws nothing), never one per instance.
+  expect(r.maxCalls).toBeLessThanOrEqual(r.maxGroups);
+  expect(r.maxGroups).toBeLessThanOrEqual(13);
+  // Every instance moves every frame: each group's matrices are uploaded once a frame, as one range.
+  expect(r.maxUploads).toBeLessThanOrEqual(r.maxGroups);
+});
