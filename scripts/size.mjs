@@ -39,11 +39,12 @@ const budgetOf = (/** @type {string} */ pkg) => ({ material: 19968, playwright: 
  * PhongLight light node, face texture for exact flat shading, both sides in one pass; the ray-cast impostor:
  * bounds in the vertex stage, exact depth; three/webgpu excluded): 6 kB (4 kB held the shading alone).
  * @shadelab/material/adaptive, AdaptiveShading with its CPU error model (a rasteriser and shade() over sampled
- * directions), the measured cost table, the allocation and the instance groups (@shadelab/sphere external): 6 kB.
+ * directions), the measured cost table, the allocation and the instance groups (@shadelab/sphere external):
+ * 7.9 kB measured at its first commit: 8 kB.
  */
 const subpathBudgets = /** @type {Record<string, number>} */ ({
   '@shadelab/material/webgpu': 6144,
-  '@shadelab/material/adaptive': 6144,
+  '@shadelab/material/adaptive': 8192,
 });
 
 const tmp = join(root, 'node_modules', '.shadelab-size');
