@@ -21,8 +21,11 @@ export type CostedShading = 'phong' | 'gouraud' | 'flat-prepared' | 'flat-deriva
  * than Phong, and above about 3 Gouraud does too (vertices cost more than pixels there).
  */
 export const SHADING_COST_TABLE = Object.freeze({
+  /** The rows: log10 of triangles per covered pixel. */
   log10TrianglesPerPixel: Object.freeze([-4, -3.5, -3, -2.5, -2, -1.5, -1, -0.5, 0, 0.5, 1]),
+  /** Flat shading of a `flatShadingGeometry` / Phong shading, per row. */
   flat: Object.freeze([0.55, 0.44, 0.45, 0.53, 0.48, 0.53, 0.71, 0.94, 1.11, 1.44, 1.83]),
+  /** Gouraud shading / Phong shading, per row. */
   gouraud: Object.freeze([0.52, 0.52, 0.51, 0.53, 0.57, 0.55, 0.69, 0.92, 0.97, 1.19, 1.51]),
   /** `bench/results/scene.json` flat meshes: [log10 τ, derivatives / prepared] (τ = triangles / face pixels). */
   derivativesOverPrepared: Object.freeze([
