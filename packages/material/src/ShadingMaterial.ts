@@ -36,7 +36,7 @@ import {
   type ShadingOptions,
 } from './options.js';
 import { PhongLight } from './PhongLight.js';
-import { fragmentShader, vertexShader, withLightCount } from './ShadingMaterial.glsl.js';
+import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
 import type { Lighting } from './shade.js';
 import {
   type ColorInput,
@@ -282,8 +282,8 @@ export class ShadingMaterial extends ShaderMaterial {
     normalScale = new Vector2(1, 1),
   }: ShadingMaterialOptions = {}) {
     super({
-      vertexShader: withLightCount(vertexShader, 0),
-      fragmentShader: withLightCount(fragmentShader, 0),
+      vertexShader,
+      fragmentShader,
       uniforms: {
         shadingNormalMatrix: { value: new Matrix3() },
         shadingEye: { value: new Vector4(0, 0, 1, 0) },
@@ -571,10 +571,6 @@ export class ShadingMaterial extends ShaderMaterial {
     this.defines = defines;
     // three's `ShaderMaterial.lights`: upload three's light uniforms (only when the scene has three's lights).
     this.lights = this.#threeLights;
-    if (old.NUM_LIGHTS !== defines.NUM_LIGHTS) {
-      this.vertexShader = withLightCount(vertexShader, this.#active.length);
-      this.fragmentShader = withLightCount(fragmentShader, this.#active.length);
-    }
     this.needsUpdate = true;
   }
 

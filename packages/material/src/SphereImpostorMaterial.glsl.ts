@@ -1,13 +1,9 @@
 // GLSL of SphereImpostorMaterial: a screen-aligned quad whose fragments ray-cast the unit sphere in model
-// space. The lighting equation is ShadingMaterial's own chunk (`lightingChunk` of shadingChunks.glsl.ts,
-// included by both), and the hit is clipped, tone-mapped, converted and fogged by the same chunks as a mesh.
-import {
-  clippingFragment,
-  instanceChunk,
-  lightingChunk,
-  outputFragment,
-  sceneFeatures,
-} from './shadingChunks.glsl.js';
+// space. Composed of ShadingMaterial's chunks: the lighting equation is its `lightingChunk`
+// (lightingChunks.glsl.ts), and the hit is clipped, tone-mapped, converted and fogged by the same chunks as a mesh
+// (shadingChunks.glsl.ts). These are the material's only shaders (set once; the light count is a define).
+import { lightingChunk } from './lightingChunks.glsl.js';
+import { clippingFragment, instanceChunk, outputFragment, sceneFeatures } from './shadingChunks.glsl.js';
 
 /**
  * Vertex stage: the quad's corners (position.xy = ±1) go to the projected ellipsoid's screen bounds. For an
@@ -76,7 +72,7 @@ void main() {
 `;
 
 /**
- * Fragment stage; `LIGHT_COUNT_LITERAL` is replaced by the number of lights (`withLightCount`). three defines
+ * Fragment stage (NUM_LIGHTS PhongLights, a define as in ShadingMaterial). three defines
  * USE_INSTANCING in the vertex stage only: `SphereImpostorMaterial.onBeforeCompile` defines IMPOSTOR_INSTANCED
  * (and IMPOSTOR_INSTANCED_COLOR) here for an instanced program, which takes the instance's matrices from the
  * vertex stage under the names of one impostor's uniforms (T⁻¹, M·I, P·V·M·I, the normal matrix

@@ -18,8 +18,8 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { fragmentShader, withLightCount } from './ShadingMaterial.glsl.js';
-import { lightingChunk } from './shadingChunks.glsl.js';
+import { lightingChunk } from './lightingChunks.glsl.js';
+import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
 
 const renderer = { getCurrentViewport: (v: Vector4) => v.set(0, 0, 1280, 720) } as unknown as WebGLRenderer;
 
@@ -56,21 +56,29 @@ function sampledBounds(mvp: Matrix4): [number, number, number, number] {
 }
 
 describe('SphereImpostorMaterial', () => {
-  it("includes the lighting chunk that ShadingMaterial includes (one named chunk, nobody cuts the other's shader)", () => {
+  it('includes the lighting chunk that ShadingMaterial includes (one named chunk; sources composed once, never rewritten)', () => {
     expect(lightingChunk).toContain('vec3 shadeColor(vec3 p, vec3 normal)');
-    expect(lightingChunk).toContain('LIGHT_COUNT_LITERAL');
     expect(lightingChunk).not.toContain('void main()');
+    // The light count is the NUM_LIGHTS define: nothing is pasted into the source.
+    expect(lightingChunk).not.toContain('LIGHT_COUNT_LITERAL');
     const light = new PhongLight();
     const material = new SphereImpostorMaterial({ lights: [light, new PhongLight()] });
     const shading = new ShadingMaterial({ lights: [light, new PhongLight()] });
-    const chunk = withLightCount(lightingChunk, 2);
-    expect(material.fragmentShader).toContain(chunk);
-    expect(shading.fragmentShader).toContain(chunk);
+    expect(material.fragmentShader).toContain(lightingChunk);
+    expect(shading.fragmentShader).toContain(lightingChunk);
     expect(material.fragmentShader).toContain('gl_FragDepth');
     // The flat and gouraud stages light per vertex with the same chunk.
     shading.shading = 'gouraud';
-    expect(shading.vertexShader).toContain(chunk);
+    expect(shading.vertexShader).toContain(lightingChunk);
     expect(fragmentShader).toContain(lightingChunk);
+    // Another light count is another define, with the same sources.
+    const impostorSource = material.fragmentShader;
+    material.phongLights = [light];
+    shading.phongLights = [light, new PhongLight(), new PhongLight()];
+    expect(material.fragmentShader).toBe(impostorSource);
+    expect(shading.fragmentShader).toBe(fragmentShader);
+    expect(shading.vertexShader).toBe(vertexShader);
+    expect([material.defines.NUM_LIGHTS, shading.defines.NUM_LIGHTS]).toEqual([1, 3]);
   });
 
   it("takes ShadingMaterial's options and variants; shading is always per fragment", () => {

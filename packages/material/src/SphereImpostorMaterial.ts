@@ -13,8 +13,6 @@ import {
   type WebGLRenderer,
 } from 'three';
 import type { Shading } from './options.js';
-import type { PhongLight } from './PhongLight.js';
-import { withLightCount } from './ShadingMaterial.glsl.js';
 import { ShadingMaterial, type ShadingMaterialOptions } from './ShadingMaterial.js';
 import { impostorFragmentShader, impostorVertexShader } from './SphereImpostorMaterial.glsl.js';
 
@@ -83,7 +81,10 @@ export class SphereImpostorMaterial extends ShadingMaterial {
       impostorBounds: { value: new Vector4(-1, -1, 1, 1) },
     });
     this.side = DoubleSide; // a mirrored object (det < 0) flips three's front face; the quad must stay drawn
-    syncShaders(this);
+    // The impostor's own shaders, composed of ShadingMaterial's chunks; the variants are defines (the light count
+    // too), so they are never set again.
+    this.vertexShader = impostorVertexShader;
+    this.fragmentShader = impostorFragmentShader;
   }
 
   /** Always `'phong'`: the impostor lights every fragment. Setting anything else is a TypeError. */
@@ -97,16 +98,6 @@ export class SphereImpostorMaterial extends ShadingMaterial {
       );
     }
     super.shading = value;
-    syncShaders(this);
-  }
-
-  /** The lights, as in `ShadingMaterial` (the count is part of the variant). @default [] */
-  override get phongLights(): readonly PhongLight[] {
-    return super.phongLights;
-  }
-  override set phongLights(value: readonly PhongLight[]) {
-    super.phongLights = value;
-    syncShaders(this);
   }
 
   /**
@@ -132,7 +123,6 @@ export class SphereImpostorMaterial extends ShadingMaterial {
     group: Group,
   ): void {
     super.onBeforeRender(renderer, scene, camera, geometry, object, group);
-    syncShaders(this);
     // A reversed-depth renderer switches the camera to reversed depth when it sets up the first program of a
     // frame, which may come after this: switch it now, as three does, so that the matrices below are the ones
     // the depth buffer expects.
@@ -178,18 +168,6 @@ function scaleToUnitW(inverse: Matrix4): Matrix4 {
   const e = inverse.elements;
   const w = Math.max(Math.abs(e[3]), Math.abs(e[7]), Math.abs(e[11]), Math.abs(e[15]));
   return w > 0 && Number.isFinite(w) ? inverse.multiplyScalar(2 ** -Math.round(Math.log2(w))) : inverse;
-}
-
-/** Put the impostor's shaders back (ShadingMaterial resets its own when the light count changes). */
-function syncShaders(material: ShadingMaterial): void {
-  const n = Number(material.defines.NUM_LIGHTS ?? 0); // the listed PhongLights, or the scene's
-  const vertex = impostorVertexShader;
-  const fragment = withLightCount(impostorFragmentShader, n);
-  if (material.vertexShader !== vertex || material.fragmentShader !== fragment) {
-    material.vertexShader = vertex;
-    material.fragmentShader = fragment;
-    material.needsUpdate = true;
-  }
 }
 
 /**

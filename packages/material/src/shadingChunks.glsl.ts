@@ -5,7 +5,7 @@
 // chunk here compiles to nothing unless its feature is on, so a scene without them compiles the same code as
 // before (tests/material-scene.spec.ts checks the active lines of every lecture program).
 
-import { shadowedLight, shadowLightMacros } from './shadowChunks.glsl.js';
+import { shadowTermsCopy } from './shadowChunks.glsl.js';
 
 /**
  * Which of three's scene features this draw uses, from the USE_* macros three defines per program:
@@ -130,217 +130,6 @@ export const emissiveFragment = /* glsl */ `
 `;
 
 /**
- * The lighting equation (uniforms, `lightTerm`, `shadeColor`), shared by the vertex (flat, gouraud) and
- * fragment (phong, impostor) stages. `LIGHT_COUNT_LITERAL` is replaced by the number of lights.
- */
-export const lightingChunk = /* glsl */ `
-uniform vec4 shadingEye; // homogeneous eye: (position, 1) perspective, (backward axis, 0) orthographic
-uniform vec3 ambientTerm; // Σ ka·Ia over the lights (ambient is never attenuated)
-uniform float shininess;
-#if NUM_LIGHTS > 0
-uniform vec3 lightPosition[NUM_LIGHTS];
-uniform vec3 lightDiffuse[NUM_LIGHTS]; // kd·Id
-uniform vec3 lightSpecular[NUM_LIGHTS]; // ks·Is
-#ifdef USE_ATTENUATION
-uniform vec3 lightAttenuation[NUM_LIGHTS]; // a, b, c
-#endif
-#endif
-#ifdef SHADING_TINT
-vec3 shadingTint = vec3( 1.0 ); // instance colour: multiplies ka and kd
-#endif
-#ifdef SHADING_SPLIT
-vec3 shadingSpecular = vec3( 0.0 ); // the ks part of the last shadeColor (which then returns the ka/kd part)
-#endif
-
-#ifdef USE_ATTENUATION
-#define LIGHT_ATTENUATION(i) lightAttenuation[i]
-#else
-#define LIGHT_ATTENUATION(i) vec3(1.0, 0.0, 0.0)
-#endif
-
-// One light's attenuated diffuse + specular term (kdId = kd·Id, ksIs = ks·Is, k = (a, b, c)).
-vec3 lightTerm(vec3 p, vec3 n, vec3 v, vec3 lightPos, vec3 kdId, vec3 ksIs, vec3 k) {
-  // inversesqrt and multiplies instead of length and divisions (cheaper on every GPU); the selects keep
-  // the degenerate cases of shade(): a light at the point lights it head-on.
-  vec3 toLight = lightPos - p;
-  float t2 = dot(toLight, toLight);
-  float invT = inversesqrt(t2);
-  vec3 l = t2 > 0.0 ? toLight * invT : n;
-  float ndl = dot(n, l);
-  float diffuse = max(ndl, 0.0);
-#ifdef LIGHTING_BLINN
-  vec3 h = l + v;
-  float h2 = dot(h, h);
-  float x = h2 > 0.0 ? max(dot(n, h) * inversesqrt(h2), 0.0) : 0.0;
-#else
-  // v·r with r = 2(l·n)n − l
-  float x = max(2.0 * ndl * dot(v, n) - dot(v, l), 0.0);
-#endif
-  // pow(0, 0) is undefined in GLSL: 0^0 = 1 (shininess 0 lights the whole lit side), 0^α = 0 for α > 0.
-  float spec = x > 0.0 ? pow(x, shininess) : step(shininess, 0.0);
-  spec = ndl > 0.0 ? spec : 0.0;
-#if CEL_BANDS > 0
-  diffuse = min(floor(diffuse * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
-  spec = step(0.5, spec);
-#endif
-#ifdef USE_ATTENUATION
-  float t = t2 > 0.0 ? t2 * invT : 0.0;
-  float att = 1.0 / max(k.x + k.y * t + k.z * t2, 1e-6);
-  diffuse *= att;
-  spec *= att;
-#endif
-#ifdef SHADING_SPLIT
-  shadingSpecular += spec * ksIs;
-  return diffuse * kdId;
-#else
-  return diffuse * kdId + spec * ksIs;
-#endif
-}
-
-#ifdef SHADING_THREE_LIGHTS
-#ifndef PI
-#include <common>
-#endif
-#include <lights_pars_begin>
-uniform vec3 shadingKa, shadingKd, shadingKs;
-#ifndef SHADING_TINT
-#define shadingTint 1.0
-#endif
-${shadowLightMacros}
-vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
-  float d = dot(n, l);
-#ifdef LIGHTING_BLINN
-  vec3 h = l + v;
-  float h2 = dot(h, h);
-  float x = h2 > 0.0 ? max(dot(n, h) * inversesqrt(h2), 0.0) : 0.0;
-#else
-  float x = max(2.0 * d * dot(v, n) - dot(v, l), 0.0);
-#endif
-  // Selects between computed values, not branches around pow (1.13× cheaper in the realistic scene); the same
-  // rules: 0⁰ = 1, 0^α = 0, no highlight where l·n ≤ 0.
-  float s = pow(max(x, 1e-30), shininess);
-  s = x > 0.0 ? s : step(shininess, 0.0);
-  s = d > 0.0 ? s : 0.0;
-  d = max(d, 0.0);
-#if CEL_BANDS > 0
-  d = min(floor(d * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
-  s = step(0.5, s);
-#endif
-#ifdef SHADING_SPLIT
-  shadingSpecular += c * s * shadingKs;
-  return c * d * shadingKd * shadingTint;
-#else
-  return c * (d * shadingKd * shadingTint + s * shadingKs);
-#endif
-}
-// three's getDistanceAttenuation at distance t (t2 = t²), compiled for what the scene's lights use: the cut-off
-// window only when some light has a distance, 1/max(t², 0.01) when every decay is 2 (no pow).
-float threeFalloff(float t, float t2, float cutoff, float decay) {
-#ifdef SHADING_INVERSE_SQUARE
-  float f = 1.0 / max(t2, 0.01);
-#else
-  float f = 1.0 / max(pow(t, decay), 0.01);
-#endif
-#ifdef SHADING_LIGHT_CUTOFF
-  if (cutoff > 0.0) f *= pow2(saturate(1.0 - pow4(t / cutoff)));
-#endif
-  return f;
-}
-// The unit direction from p to a light at q, its distance t and t² (one inversesqrt); a light at p lights it
-// head-on (l = n), as in lightTerm.
-vec3 threeToLight(vec3 q, vec3 p, vec3 n, out float t, out float t2) {
-  vec3 l = q - p;
-  t2 = dot(l, l);
-  float r = inversesqrt(t2);
-  t = t2 > 0.0 ? t2 * r : 0.0;
-  return t2 > 0.0 ? l * r : n;
-}
-vec3 threeLights(vec3 p, vec3 n, vec3 v) {
-#ifndef SHADING_VIEW_SPACE
-  // three's light uniforms are in view space (SHADING_VIEW_SPACE: p, n and v are already).
-  p = (viewMatrix * vec4(p, 1.0)).xyz;
-  n = normalize((viewMatrix * vec4(n, 0.0)).xyz);
-  v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
-#endif
-  vec3 c = ambientLightColor, l, term;
-  float t, t2;
-#if NUM_HEMI_LIGHTS > 0
-  for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
-#endif
-  c *= shadingKa * shadingTint;
-  // Unrolled, as three's own light loops are (cheaper, and a shadow map array needs a constant index). A
-  // shadow-casting light's term is shadowed per fragment (see shadowChunks.glsl.ts).
-#if NUM_DIR_LIGHTS > 0
-  #pragma unroll_loop_start
-  for ( int i = 0; i < NUM_DIR_LIGHTS; i ++ ) {
-    SHADING_SHADOW_BEGIN
-    term = threeDirect( n, v, directionalLights[ i ].direction, directionalLights[ i ].color );
-${shadowedLight('Dir')}
-    c += term;
-  }
-  #pragma unroll_loop_end
-#endif
-#if NUM_POINT_LIGHTS > 0
-  #pragma unroll_loop_start
-  for ( int i = 0; i < NUM_POINT_LIGHTS; i ++ ) {
-    l = threeToLight( pointLights[ i ].position, p, n, t, t2 );
-    SHADING_SHADOW_BEGIN
-    term = threeDirect( n, v, l, pointLights[ i ].color * threeFalloff( t, t2, pointLights[ i ].distance, pointLights[ i ].decay ) );
-${shadowedLight('Point')}
-    c += term;
-  }
-  #pragma unroll_loop_end
-#endif
-#if NUM_SPOT_LIGHTS > 0
-  #pragma unroll_loop_start
-  for ( int i = 0; i < NUM_SPOT_LIGHTS; i ++ ) {
-    l = threeToLight( spotLights[ i ].position, p, n, t, t2 );
-    SHADING_SHADOW_BEGIN
-    term = threeDirect( n, v, l, spotLights[ i ].color * getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * threeFalloff( t, t2, spotLights[ i ].distance, spotLights[ i ].decay ) );
-${shadowedLight('Spot')}
-    c += term;
-  }
-  #pragma unroll_loop_end
-#endif
-  return c;
-}
-#endif
-
-vec3 shadeColor(vec3 p, vec3 normal) {
-#ifdef SHADING_SPLIT
-  shadingSpecular = vec3( 0.0 );
-#endif
-  vec3 toEye = shadingEye.xyz - p * shadingEye.w;
-  float e2 = dot(toEye, toEye);
-  vec3 v = e2 > 0.0 ? toEye * inversesqrt(e2) : vec3(0.0, 0.0, 1.0);
-  float n2 = dot(normal, normal);
-  vec3 n = n2 > 0.0 ? normal * inversesqrt(n2) : v;
-  v = e2 > 0.0 ? v : n;
-#ifdef SHADING_TINT
-  vec3 color = ambientTerm * shadingTint;
-#else
-  vec3 color = ambientTerm;
-#endif
-#if NUM_LIGHTS > 0
-  // Unrolled by three (LIGHT_COUNT_LITERAL is replaced by the number of lights before compiling).
-  #pragma unroll_loop_start
-  for ( int i = 0; i < LIGHT_COUNT_LITERAL; i ++ ) {
-#ifdef SHADING_TINT
-    color += lightTerm(p, n, v, lightPosition[ i ], lightDiffuse[ i ] * shadingTint, lightSpecular[ i ], LIGHT_ATTENUATION(UNROLLED_LOOP_INDEX));
-#else
-    color += lightTerm(p, n, v, lightPosition[ i ], lightDiffuse[ i ], lightSpecular[ i ], LIGHT_ATTENUATION(UNROLLED_LOOP_INDEX));
-#endif
-  }
-  #pragma unroll_loop_end
-#endif
-#ifdef SHADING_THREE_LIGHTS
-  color += threeLights(p, n, v);
-#endif
-  return color;
-}
-`;
-
-/**
  * Vertex declarations for instancing and batching: the instance's normal matrix, made as `computeNormalMatrix`
  * makes the object's (sign(det A)·cof(A) of A / max|A|: finite for a singular or huge instance matrix, outward
  * under mirroring, right under shear), and the rescaling that keeps a product of normal matrices in range.
@@ -354,12 +143,13 @@ vec3 shadingRescale( vec3 v ) {
 mat3 shadingCofactor( mat3 a ) {
   vec3 e = max( max( abs( a[ 0 ] ), abs( a[ 1 ] ) ), abs( a[ 2 ] ) );
   float s = max( max( e.x, e.y ), e.z );
-  if ( ! ( s > 0.0 ) ) return mat3( 0.0 );
   vec3 a0 = a[ 0 ] / s;
   vec3 a1 = a[ 1 ] / s;
   vec3 a2 = a[ 2 ] / s;
   mat3 c = mat3( cross( a1, a2 ), cross( a2, a0 ), cross( a0, a1 ) );
-  return dot( a0, c[ 0 ] ) < 0.0 ? - c : c;
+  // Selects, not branches (per vertex): a zero or non-finite scale gives the zero matrix.
+  c = dot( a0, c[ 0 ] ) < 0.0 ? - c : c;
+  return s > 0.0 ? c : mat3( 0.0 );
 }
 #endif
 `;
@@ -477,5 +267,266 @@ export const outputFragment = /* glsl */ `
   float fogFactor = fogFar > fogNear ? smoothstep( fogNear, fogFar, vFogDepth ) : step( fogNear, vFogDepth );
 #endif
   gl_FragColor.rgb = mix( gl_FragColor.rgb, fogColor, fogFactor );
+#endif
+`;
+
+/**
+ * The varyings from the vertex to the fragment stage (`qualifier` 'out' in the vertex stage, 'in' in the
+ * fragment): the colours lit per face (flat, interpolated `flat`) or per vertex (gouraud), or the position,
+ * normal and tint lit per fragment (phong, and flat from derivatives, which has no normal varying).
+ */
+export function shadingVaryings(qualifier: 'out' | 'in'): string {
+  return /* glsl */ `
+#if defined( SHADING_FLAT ) && ! defined( FLAT_DERIVATIVES )
+${litVaryings(`flat ${qualifier}`)}
+#elif defined( SHADING_GOURAUD )
+${litVaryings(qualifier)}
+#else
+${qualifier} vec3 vWorldPosition;
+#ifndef FLAT_DERIVATIVES
+${qualifier} vec3 vNormal;
+#endif
+#ifdef SHADING_TINT
+${qualifier} vec3 vShadingTint;
+#endif
+#endif
+`;
+}
+
+/**
+ * The colours lit in the vertex stage: the front face's (`vColor`) and, when both sides are drawn, the back
+ * face's, lit with the flipped normal; with a texture (SHADING_SPLIT) their ks parts apart (`vSpecular…`).
+ */
+function litVaryings(qualifier: string): string {
+  return /* glsl */ `${qualifier} vec3 vColor;
+#ifdef DOUBLE_SIDED
+${qualifier} vec3 vColorBack;
+#endif
+#ifdef SHADING_SPLIT
+${qualifier} vec3 vSpecular;
+#ifdef DOUBLE_SIDED
+${qualifier} vec3 vSpecularBack;
+#endif
+#endif`;
+}
+
+/**
+ * Vertex declarations of flat shading (lit once per face, in the vertex stage): a flatShadingGeometry's
+ * corner attributes, or the soup's positions (and skin) fetched from textures.
+ */
+export const flatParsVertex = /* glsl */ `
+#if defined( SHADING_FLAT ) && ! defined( FLAT_DERIVATIVES )
+#ifdef FLAT_CORNERS
+// flatShadingGeometry: this vertex provokes one face; these are its other two corners (object space).
+in vec3 flatCornerA;
+in vec3 flatCornerB;
+#ifdef SHADING_DEFORM
+in vec2 flatCornerIndex; // the vertex indices of flatCornerA and flatCornerB (for morph targets and skinning)
+#endif
+#else
+uniform highp sampler2D facePositions; // object-space positions of the non-indexed geometry, one texel each
+vec3 fetchPosition(int i) {
+  int width = textureSize(facePositions, 0).x;
+  return texelFetch(facePositions, ivec2(i % width, i / width), 0).xyz;
+}
+#endif
+#ifdef USE_SKINNING
+uniform highp sampler2D faceSkin; // per vertex: skinIndex, skinWeight (two texels)
+#endif
+#endif
+`;
+
+/**
+ * Vertex stage: the vertex alpha and the tint for the fragment stage (lit per fragment) or for `shadeColor`
+ * here (lit per face or vertex).
+ */
+export const surfaceVertex = /* glsl */ `
+#ifdef USE_COLOR_ALPHA
+  vShadingAlpha = color.a;
+#endif
+#if defined(SHADING_TINT) && ( defined(SHADING_PHONG) || defined(FLAT_DERIVATIVES) )
+  vShadingTint = tint;
+#elif defined(SHADING_TINT)
+  shadingTint = tint;
+#endif
+`;
+
+/**
+ * Vertex stage, flat shading: the face this vertex belongs to (or provokes), moved as its vertices are, at its
+ * world centroid (`faceCentre`) with its face normal (`faceNormal`, object space, rescaled; × the instance's
+ * normal matrix).
+ */
+export const flatFaceVertex = /* glsl */ `
+#ifdef FLAT_CORNERS
+  vec3 p0 = flatCornerA;
+  vec3 p1 = flatCornerB;
+  vec3 p2 = position;
+#else
+  int first = gl_VertexID - gl_VertexID % 3;
+  vec3 p0 = fetchPosition(first);
+  vec3 p1 = fetchPosition(first + 1);
+  vec3 p2 = fetchPosition(first + 2);
+#endif
+#ifdef SHADING_DEFORM
+#ifdef FLAT_CORNERS
+  ivec3 cornerIndex = ivec3( int( flatCornerIndex.x ), int( flatCornerIndex.y ), gl_VertexID );
+#else
+  ivec3 cornerIndex = ivec3( first, first + 1, first + 2 );
+#endif
+#endif
+${flatDeformVertex}
+#ifdef SHADING_INSTANCE
+  vec3 faceCentre = (modelMatrix * (shadingInstance * vec4((p0 + p1 + p2) / 3.0, 1.0))).xyz;
+#else
+  vec3 faceCentre = (modelMatrix * vec4((p0 + p1 + p2) / 3.0, 1.0)).xyz;
+#endif
+  vec3 faceNormal = cross(p1 - p0, p2 - p0);
+  float m = max(max(abs(faceNormal.x), abs(faceNormal.y)), abs(faceNormal.z));
+  faceNormal = m > 0.0 ? faceNormal / m : vec3(0.0); // rescaled so it neither overflows nor underflows
+#ifdef SHADING_INSTANCE
+  faceNormal = shadingRescale( shadingInstanceNormal * faceNormal );
+#endif
+`;
+
+/**
+ * Vertex stage, gouraud and phong shading (and flat from derivatives, without a normal): the vertex's world
+ * position (`worldPosition`) and normal (`worldNormal`), moved by morph targets, skinning and the instance.
+ */
+export const worldVertex = /* glsl */ `
+#ifndef FLAT_DERIVATIVES
+#ifdef SPHERE_NORMALS
+  vec3 objectNormal = position;
+#else
+  vec3 objectNormal = normal;
+#endif
+#endif
+#ifdef SHADING_SCENE
+#ifndef FLAT_DERIVATIVES
+  #include <morphnormal_vertex>
+  #include <skinnormal_vertex>
+#endif
+  vec4 shadingLocal = vec4( transformed, 1.0 );
+#ifdef SHADING_INSTANCE
+  shadingLocal = shadingInstance * shadingLocal;
+#ifndef FLAT_DERIVATIVES
+  objectNormal = shadingRescale( shadingInstanceNormal * objectNormal );
+#endif
+#endif
+  vec3 worldPosition = ( modelMatrix * shadingLocal ).xyz;
+#else
+  vec3 worldPosition = (modelMatrix * vec4(position, 1.0)).xyz;
+#endif
+#ifndef FLAT_DERIVATIVES
+  vec3 worldNormal = shadingNormalMatrix * objectNormal;
+#endif
+`;
+
+/** One side lit in the vertex stage: its colour (`suffix` '' the front face, 'Back' the back face). */
+function litSide(suffix: '' | 'Back', point: string, normal: string): string {
+  return /* glsl */ `
+  vColor${suffix} = shadeColor(${point}, ${normal});
+${shadowTermsCopy(suffix)}
+#ifdef SHADING_SPLIT
+  vSpecular${suffix} = shadingSpecular;
+#endif`;
+}
+
+/**
+ * Vertex stage, flat and gouraud shading: the colours at `point` with `normal` (world space, GLSL
+ * expressions), one side at a time with {@link litSide}: three's sides light a back face with its flipped normal,
+ * both colours when both sides are drawn (the fragment picks by `gl_FrontFacing`).
+ */
+export function litSidesVertex(point: string, normal: string): string {
+  return /* glsl */ `
+#if defined( DOUBLE_SIDED )
+${litSide('Back', point, `-(${normal})`)}
+${litSide('', point, normal)}
+#elif defined( FLIP_SIDED )
+${litSide('', point, `-(${normal})`)}
+#else
+${litSide('', point, normal)}
+#endif
+`;
+}
+
+/**
+ * Vertex stage, phong shading (and flat from derivatives): the position and unit normal for the fragment stage,
+ * in world space, or in view space where three's light uniforms are (SHADING_VIEW_SPACE: the view matrix is
+ * rigid, see ShadingMaterial).
+ */
+export const phongVertex = /* glsl */ `
+#ifdef SHADING_VIEW_SPACE
+#ifndef FLAT_DERIVATIVES
+  vec3 viewNormal = mat3( viewMatrix ) * worldNormal;
+  float normalLength = length(viewNormal);
+  vNormal = normalLength > 0.0 ? viewNormal / normalLength : vec3(0.0);
+#endif
+#if defined( SHADING_SCENE )
+  vWorldPosition = mvPosition.xyz; // three's project_vertex: modelViewMatrix × the moved vertex
+#else
+  vWorldPosition = ( viewMatrix * vec4( worldPosition, 1.0 ) ).xyz;
+#endif
+#else
+#ifndef FLAT_DERIVATIVES
+  float normalLength = length(worldNormal);
+  vNormal = normalLength > 0.0 ? worldNormal / normalLength : vec3(0.0);
+#endif
+  vWorldPosition = worldPosition;
+#endif
+`;
+
+/**
+ * Fragment stage, phong shading (and flat from derivatives): the tint (× the texel), the face normal from
+ * screen-space derivatives for flat shading, then `color` lit at the fragment on the drawn side (or through the
+ * normal map).
+ */
+export const litFragment = /* glsl */ `
+#ifdef SHADING_TINT
+  shadingTint = vShadingTint;
+#endif
+#ifdef USE_MAP
+  shadingTint *= diffuseColor.rgb; // the texel multiplies ka and kd, not ks
+#endif
+#ifdef FLAT_DERIVATIVES
+  // The plane of the fragment's triangle: cross(dFdx p, dFdy p) faces the viewer (each rescaled so the cross
+  // product neither overflows nor underflows); outward is that for a front face of the geometry, its opposite
+  // for a back face.
+  vec3 fdx = dFdx( vWorldPosition );
+  vec3 fdy = dFdy( vWorldPosition );
+  fdx /= max( max( max( abs( fdx.x ), abs( fdx.y ) ), abs( fdx.z ) ), 1e-30 );
+  fdy /= max( max( max( abs( fdy.x ), abs( fdy.y ) ), abs( fdy.z ) ), 1e-30 );
+  vNormal = cross( fdx, fdy );
+#ifdef FLIP_SIDED
+  vNormal = gl_FrontFacing ? - vNormal : vNormal; // BackSide: three turns the front face round
+#else
+  vNormal = gl_FrontFacing ? vNormal : - vNormal;
+#endif
+#endif
+#if defined( SHADING_NORMALMAP )
+${normalMapFragment}
+#elif defined( DOUBLE_SIDED )
+  vec3 color = shadeColor(vWorldPosition, gl_FrontFacing ? vNormal : -vNormal);
+#elif defined( FLIP_SIDED )
+  vec3 color = shadeColor(vWorldPosition, -vNormal);
+#else
+  vec3 color = shadeColor(vWorldPosition, vNormal);
+#endif
+`;
+
+/**
+ * Fragment stage, flat and gouraud shading: `color` is the drawn side's colour lit in the vertex stage (with a
+ * texture, its ka/kd part × the texel plus its ks part).
+ */
+export const vertexLitFragment = /* glsl */ `
+#if defined( DOUBLE_SIDED )
+  vec3 color = gl_FrontFacing ? vColor : vColorBack;
+#ifdef SHADING_SPLIT
+  color = color * diffuseColor.rgb + ( gl_FrontFacing ? vSpecular : vSpecularBack );
+#endif
+#else
+  vec3 color = vColor;
+#ifdef SHADING_SPLIT
+  color = color * diffuseColor.rgb + vSpecular;
+#endif
 #endif
 `;

@@ -44,13 +44,23 @@ const KINDS: readonly ShadowKind[] = [
 const each = (f: (kind: ShadowKind) => string): string => KINDS.map(f).join('');
 
 /**
- * `SHADING_SHADOWS` when three's shadow map applies. The shaders define `SHADING_SHADOW_FACTOR` (the lighting
- * chunk applies the factor) or `SHADING_SHADOW_TERMS` (it records the terms) before including the lighting
- * chunk, and `SHADING_INTERPOLATION` (`flat` or nothing) for the recorded terms' varyings.
+ * `SHADING_SHADOWS` when three's shadow map applies, and how: `SHADING_SHADOW_FACTOR` where the lighting is per
+ * fragment (the lighting chunk applies the factor) or `SHADING_SHADOW_TERMS` where it is per vertex or face (it
+ * records the terms), with `SHADING_INTERPOLATION` (`flat` or nothing) for the recorded terms' varyings.
  */
 export const shadowFeatures = /* glsl */ `
 #if defined( USE_SHADOWMAP ) && defined( SHADING_THREE_LIGHTS )
 #define SHADING_SHADOWS
+#if defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES )
+#define SHADING_SHADOW_FACTOR
+#else
+#define SHADING_SHADOW_TERMS
+#endif
+#if defined( SHADING_FLAT ) && ! defined( FLAT_DERIVATIVES )
+#define SHADING_INTERPOLATION flat
+#else
+#define SHADING_INTERPOLATION
+#endif
 #endif
 `;
 
@@ -66,6 +76,18 @@ export function shadowedLight(kind: 'Dir' | 'Spot' | 'Point'): string {
 #endif`;
 }
 
+/** The recorded terms' varyings (`qualifier` 'out' in the vertex stage, 'in' in the fragment stage). */
+function termVaryings(kind: ShadowKind, qualifier: 'out' | 'in'): string {
+  const declare = (name: string) => `SHADING_INTERPOLATION ${qualifier} vec3 ${name}[ ${kind.count} ];
+#ifdef DOUBLE_SIDED
+SHADING_INTERPOLATION ${qualifier} vec3 ${name}Back[ ${kind.count} ];
+#endif`;
+  return `${declare(`v${kind.name}ShadowTerm`)}
+#ifdef SHADING_SPLIT
+${declare(`v${kind.name}ShadowSpec`)}
+#endif`;
+}
+
 /** Vertex declarations: three's shadow coordinates, and the recorded terms for flat and gouraud shading. */
 export const shadowVertexPars = /* glsl */ `
 #ifdef SHADING_SHADOWS
@@ -74,17 +96,10 @@ export const shadowVertexPars = /* glsl */ `
 ${each(
   (kind) => `#if ${kind.count} > 0
 vec3 shading${kind.name}Term[ ${kind.count} ];
-SHADING_INTERPOLATION out vec3 v${kind.name}ShadowTerm[ ${kind.count} ];
-#ifdef DOUBLE_SIDED
-SHADING_INTERPOLATION out vec3 v${kind.name}ShadowTermBack[ ${kind.count} ];
-#endif
 #ifdef SHADING_SPLIT
 vec3 shading${kind.name}Spec[ ${kind.count} ];
-SHADING_INTERPOLATION out vec3 v${kind.name}ShadowSpec[ ${kind.count} ];
-#ifdef DOUBLE_SIDED
-SHADING_INTERPOLATION out vec3 v${kind.name}ShadowSpecBack[ ${kind.count} ];
 #endif
-#endif
+${termVaryings(kind, 'out')}
 #endif
 `,
 )}#endif
@@ -118,12 +133,20 @@ ${each((kind) => {
 })}`;
 
 /**
- * Vertex stage, end of `main`: three's shadow coordinates at the vertex's world position, offset along
- * `SHADING_SHADOW_NORMAL` (world) by the light's normalBias; then, for flat and gouraud shading, the recorded
- * terms of the front (`shadowTermsFront`) or back face (`shadowTermsBack`) copied into their varyings.
+ * Vertex stage, end of `main`: three's shadow coordinates at the vertex's world position, offset along the
+ * world normal (`SHADING_SHADOW_NORMAL`: the face's, the vertex's, none from derivatives) by the light's
+ * normalBias. (The terms flat and gouraud shading record are copied per side by {@link shadowTermsCopy}.)
  */
 export const shadowVertex = /* glsl */ `
 #ifdef SHADING_SHADOWS
+#if defined( SHADING_FLAT ) && ! defined( FLAT_DERIVATIVES )
+#define SHADING_SHADOW_NORMAL ( shadingNormalMatrix * faceNormal )
+#elif defined( FLAT_DERIVATIVES )
+#undef HAS_NORMAL // no vertex normal: three's normalBias is not applied
+#define SHADING_SHADOW_NORMAL vec3( 0.0 )
+#else
+#define SHADING_SHADOW_NORMAL worldNormal
+#endif
   {
     vec3 shadowNormal = SHADING_SHADOW_NORMAL;
     float shadowNormal2 = dot( shadowNormal, shadowNormal );
@@ -163,16 +186,7 @@ export const shadowFragmentPars = /* glsl */ `
 uniform bool receiveShadow;
 ${each(
   (kind) => `#if ${kind.count} > 0
-SHADING_INTERPOLATION in vec3 v${kind.name}ShadowTerm[ ${kind.count} ];
-#ifdef DOUBLE_SIDED
-SHADING_INTERPOLATION in vec3 v${kind.name}ShadowTermBack[ ${kind.count} ];
-#endif
-#ifdef SHADING_SPLIT
-SHADING_INTERPOLATION in vec3 v${kind.name}ShadowSpec[ ${kind.count} ];
-#ifdef DOUBLE_SIDED
-SHADING_INTERPOLATION in vec3 v${kind.name}ShadowSpecBack[ ${kind.count} ];
-#endif
-#endif
+${termVaryings(kind, 'in')}
 #endif
 `,
 )}#endif

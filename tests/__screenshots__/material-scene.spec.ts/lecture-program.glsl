@@ -187,7 +187,8 @@ float diffuse = max ( ndl , 0.0 ) ;
 vec3 h = l + v ;
 float h2 = dot ( h , h ) ;
 float x = h2 > 0.0 ? max ( dot ( n , h ) * inversesqrt ( h2 ) , 0.0 ) : 0.0 ;
-float spec = x > 0.0 ? pow ( x , shininess ) : step ( shininess , 0.0 ) ;
+float spec = pow ( max ( x , 1e-30 ) , shininess ) ;
+spec = x > 0.0 ? spec : step ( shininess , 0.0 ) ;
 spec = ndl > 0.0 ? spec : 0.0 ;
 return diffuse * kdId + spec * ksIs ;
 }
