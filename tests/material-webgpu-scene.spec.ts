@@ -397,3 +397,104 @@ for (const backend of BACKENDS) {
     expect(problems).toEqual([]);
   });
 }
+
+// Shadows (issue 23): a ground plane in the shadow of an occluder, lit by one of three's shadow-casting lights and an
+// AmbientLight (tests/material-shadow.spec.ts on WebGLRenderer). Where the shadow falls: three's
+// MeshPhongNodeMaterial on the same renderer; colours: shade() with the light × three's shadow factor, and
+// WebGLRenderer + ShadingMaterial in the same scene (away from either renderer's shadow edge: their shadow maps
+// differ by a texel there).
+type ShadowStats = import('./harness/webgpu-scene').ShadowStats;
+type ShadowCase = import('./harness/webgpu-scene').ShadowCase;
+
+function expectShadow(s: ShadowStats, label: string, backend: string, shadeable: boolean): void {
+  const info = `${label} ${JSON.stringify({ ...s, webglWarnings: s.webglWarnings.length })}`;
+  if (backend === 'webgpu') expect(s.backend, info).toEqual({ isWebGPUBackend: true, isWebGLBackend: false });
+  else expect(s.backend, info).toEqual({ isWebGPUBackend: false, isWebGLBackend: true });
+  expect(s.oracleShadowed, info).toBeGreaterThan(500);
+  expect(s.maskCompared, info).toBeGreaterThan(10000);
+  expect(s.maskMismatches, info).toBe(0);
+  expect(s.webgl.compared, info).toBeGreaterThan(8000);
+  expect(s.webgl.maskMismatches, info).toBeLessThan(s.webgl.compared / 100);
+  expect(s.webgl.differing, info).toBe(0);
+  expect(s.webgl.maxDelta, info).toBeLessThanOrEqual(2);
+  if (shadeable) {
+    expect(s.compared, info).toBeGreaterThan(8000);
+    expect(s.shadowCompared, info).toBeGreaterThan(500);
+    expect(s.mismatches, info).toBe(0);
+    expect(s.maxError, info).toBeLessThanOrEqual(2);
+  }
+}
+
+for (const backend of BACKENDS) {
+  test(`${backend}: receiveShadow from three's DirectionalLight, SpotLight and PointLight (cube map) in flat, gouraud and phong shading: shadowed exactly where MeshPhongNodeMaterial is, colours = shade() with the light × shadow factor and = WebGLRenderer + ShadingMaterial within 2/255`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    for (const shading of ['flat', 'gouraud', 'phong'] as const) {
+      for (const light of ['directional', 'spot', 'point'] as const) {
+        const c: ShadowCase = { shading, light, ks: light === 'directional' ? 0 : 0.5 };
+        const s = await run<[string, ShadowCase], ShadowStats>(page, 'shadowCompare', backend, c);
+        expectShadow(
+          s,
+          `${backend} ${JSON.stringify(c)}`,
+          backend,
+          shading !== 'gouraud' || light === 'directional',
+        );
+      }
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend}: shadows with shadow.intensity 0.5, a texture, DoubleSide, and receiveShadow false (lit everywhere), in gouraud and flat shading (the terms recorded per vertex or face, shadowed per fragment)`, async ({
+    page,
+  }) => {
+    test.setTimeout(90_000);
+    const problems = await open(page);
+    for (const shading of ['flat', 'gouraud'] as const) {
+      for (const extra of [{ intensity: 0.5 }, { map: true, ks: 0.5 }, { doubleSide: true }] as const) {
+        const c: ShadowCase = { shading, light: 'directional', ...extra };
+        const s = await run<[string, ShadowCase], ShadowStats>(page, 'shadowCompare', backend, c);
+        expectShadow(s, `${backend} ${JSON.stringify(c)}`, backend, shading === 'flat' || !('ks' in extra));
+      }
+      const c: ShadowCase = { shading, light: 'directional', receive: false };
+      const s = await run<[string, ShadowCase], ShadowStats>(page, 'shadowCompare', backend, c);
+      const info = `${backend} ${JSON.stringify(c)} ${JSON.stringify(s)}`;
+      expect(s.shadowed, info).toBe(0);
+      expect(s.mismatches, info).toBe(0);
+      expect(s.compared, info).toBeGreaterThan(8000);
+    }
+    expect(problems).toEqual([]);
+  });
+
+  test(`${backend}: a PhongLight with castShadow = true casts no shadow and breaks no material: the picture (ShadingNodeMaterial and three's MeshPhongNodeMaterial receiving a DirectionalLight's shadow) is exactly the one with castShadow false, no console error; three's light still shadows a ground lit by that PhongLight (= shade()); WebGLRenderer warns that it has no shadow and draws the same`, async ({
+    page,
+  }) => {
+    test.setTimeout(60_000);
+    const problems = await open(page);
+    const r = await run<[string], { differing: number; drawn: number; black: number; backend: unknown }>(
+      page,
+      'phongCaster',
+      backend,
+    );
+    const info = JSON.stringify(r);
+    expect(r.backend, info).toEqual(
+      backend === 'webgpu'
+        ? { isWebGPUBackend: true, isWebGLBackend: false }
+        : { isWebGPUBackend: false, isWebGLBackend: true },
+    );
+    expect(r.drawn, info).toBeGreaterThan(5000);
+    expect(r.black, info).toBe(0);
+    expect(r.differing, info).toBe(0);
+    for (const shading of ['flat', 'gouraud', 'phong'] as const) {
+      const c: ShadowCase = { shading, light: 'directional', phongCaster: true };
+      const s = await run<[string, ShadowCase], ShadowStats>(page, 'shadowCompare', backend, c);
+      expectShadow(s, `${backend} ${JSON.stringify(c)}`, backend, shading !== 'gouraud');
+      test.info().annotations.push({
+        type: 'WebGLRenderer and a PhongLight with castShadow',
+        description: `${s.webglWarnings.length} console.warn over 2 frames: ${s.webglWarnings[0] ?? 'none'}`,
+      });
+    }
+    expect(problems).toEqual([]);
+  });
+}

@@ -16,39 +16,56 @@ import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   ACESFilmicToneMapping,
+  AmbientLight,
+  BasicShadowMap,
   BatchedMesh,
   Bone,
+  BoxGeometry,
   type BufferGeometry,
   type Camera,
   Color,
+  DataTexture,
   DirectionalLight,
+  DoubleSide,
   Euler,
   Float32BufferAttribute,
+  FrontSide,
   InstancedMesh,
   LinearSRGBColorSpace,
   type Material,
   Matrix3,
   Matrix4,
   Mesh,
+  MeshBasicMaterial,
   NoToneMapping,
   type Object3D,
   PerspectiveCamera,
   Plane,
+  PlaneGeometry,
+  PointLight,
   Quaternion,
   Raycaster,
   Scene,
   Skeleton,
   SkinnedMesh,
+  SphereGeometry,
+  SpotLight,
   SRGBColorSpace,
   Vector2,
   Vector3,
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { ClippingGroup, MeshPhongNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
+import {
+  ClippingGroup,
+  MeshBasicNodeMaterial,
+  MeshPhongNodeMaterial,
+  RenderTarget,
+  WebGPURenderer,
+} from 'three/webgpu';
 import { skinnedCylinder } from './lib/deform';
 import { maxRgbDelta } from './lib/pixels';
-import { type Backend, gpuRenderer, readTarget } from './lib/webgpu';
+import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 
 export type { Backend };
 /** The object: a sphere Mesh, a SkinnedMesh (bent cylinder), a morphed sphere, a BatchedMesh, an InstancedMesh. */
@@ -850,7 +867,441 @@ async function cycles(backend: Backend, n: number, every: number) {
   };
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// Shadows: a ground plane that receives an occluder's shadow (the occluder outside the view) from one of three's
+// shadow-casting lights, as tests/harness/material-shadow.ts on WebGLRenderer. Where the shadow falls: three's
+// MeshPhongNodeMaterial on the same renderer (the pixels its shadow darkens); colours: shade() with the light's
+// colour × three's shadow factor; and WebGLRenderer + ShadingMaterial in the same scene.
+
+export interface ShadowCase {
+  shading: Shading;
+  light: 'directional' | 'spot' | 'point';
+  /** The ground's receiveShadow. @default true */
+  receive?: boolean;
+  /** The light's shadow.intensity. @default 1 */
+  intensity?: number;
+  /** ks of the ground. @default 0 */
+  ks?: number;
+  /** A uniform texture (TEXEL, linear) as the ground's map. @default false */
+  map?: boolean;
+  /** DoubleSide on the ground. @default false */
+  doubleSide?: boolean;
+  /** A PhongLight with castShadow = true in the scene too (it lights the ground, casts nothing). @default false */
+  phongCaster?: boolean;
+}
+
+export interface ShadowStats {
+  /** Pixels the shadow darkens (by more than 2/255 on some channel): three's material, this material. */
+  oracleShadowed: number;
+  shadowed: number;
+  /** Pixels whose 3 × 3 neighbourhood is all shadowed or all lit for three's material, and how many differ. */
+  maskCompared: number;
+  maskMismatches: number;
+  /** Pixels compared with shade(), in full shadow among them, the largest difference (1/255), how many > 2. */
+  compared: number;
+  shadowCompared: number;
+  maxError: number;
+  mismatches: number;
+  worst: unknown;
+  /** Against WebGLRenderer + ShadingMaterial: pixels uniform (3 × 3, shadow and light) in both pictures. */
+  webgl: { compared: number; maxDelta: number; differing: number; maskMismatches: number; worst: unknown };
+  /** console.warn calls while WebGLRenderer drew (three warns of a shadow-casting light without a shadow). */
+  webglWarnings: string[];
+  /** Which backend drew (three's flags on the renderer). */
+  backend: ReturnType<typeof backendFlags>;
+}
+
+const SHADOW_SIZE = 128;
+const SHADOW_KD: [number, number, number] = [0.6, 0.35, 0.2];
+const SHADOW_TEXEL = [200, 220, 255] as const;
+const SHADOW_AMBIENT = 0.2;
+
+function shadowLight(kind: ShadowCase['light']): DirectionalLight | SpotLight | PointLight {
+  const color = new Color(1, 0.95, 0.9);
+  let light: DirectionalLight | SpotLight | PointLight;
+  if (kind === 'directional') {
+    light = new DirectionalLight(color, 1.5);
+    Object.assign(light.shadow.camera, { left: -4, right: 4, top: 4, bottom: -4 });
+  } else if (kind === 'spot') light = new SpotLight(color, 30, 0, Math.PI / 4, 0, 2);
+  else light = new PointLight(color, 30, 0, 2);
+  light.position.set(-3, 4, 0);
+  light.castShadow = true;
+  light.shadow.mapSize.set(512, 512);
+  light.shadow.camera.near = 0.5;
+  light.shadow.camera.far = 20;
+  return light;
+}
+
+/** What shade() takes for `light`, its colour × `visibility` (three's shadow factor). */
+function shadeThreeLight(
+  light: DirectionalLight | SpotLight | PointLight,
+  visibility: number,
+): ShadeThreeLight {
+  const color = light.color
+    .clone()
+    .multiplyScalar(light.intensity * visibility)
+    .toArray();
+  const position = light.position.clone();
+  if (light instanceof DirectionalLight) {
+    return { type: 'directional', color, direction: position.clone().normalize().toArray() };
+  }
+  const base = { color, position: position.toArray(), distance: 0, decay: 2 };
+  if (light instanceof SpotLight) {
+    return {
+      type: 'spot',
+      ...base,
+      direction: position.clone().normalize().toArray(),
+      coneCos: Math.cos(light.angle),
+      penumbraCos: Math.cos(light.angle * (1 - light.penumbra)),
+    };
+  }
+  return { type: 'point', ...base };
+}
+
+/** The shadow scene: the ground (exact flat shading: a triangle soup), an occluder, the light, an ambient light. */
+function shadowScene(c: ShadowCase, groundMaterial: Material, occluderMaterial: Material) {
+  const scene = new Scene();
+  const camera = new PerspectiveCamera(40, 1, 0.5, 20);
+  camera.position.set(0, 5, 0);
+  camera.up.set(0, 0, -1);
+  camera.lookAt(0, 0, 0);
+  const light = shadowLight(c.light);
+  light.shadow.intensity = c.intensity ?? 1;
+  scene.add(light, new AmbientLight(0xffffff, SHADOW_AMBIENT));
+  const phong = new PhongLight({ ambient: 0.05, diffuse: [0.3, 0.5, 0.4], specular: 0.6 });
+  phong.position.set(1, 1.5, -0.5);
+  phong.attenuation = { a: 1, b: 0.1, c: 0.05 };
+  if (c.phongCaster) {
+    (phong as unknown as { castShadow: boolean }).castShadow = true;
+    scene.add(phong);
+  }
+  const occluder = new Mesh(new BoxGeometry(0.6, 0.1, 1.6), occluderMaterial);
+  occluder.position.set(-1.9, 1.6, 0);
+  occluder.castShadow = true;
+  scene.add(occluder);
+  const plane = new PlaneGeometry(4, 4, 8, 8).rotateX(-Math.PI / 2);
+  const ground = new Mesh(c.shading === 'flat' ? plane.toNonIndexed() : plane, groundMaterial);
+  ground.receiveShadow = c.receive ?? true;
+  scene.add(ground);
+  scene.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  return { scene, camera, light, phong, ground };
+}
+
+function shadowOptions(c: ShadowCase) {
+  const texture = c.map ? new DataTexture(new Uint8Array([...SHADOW_TEXEL, 255]), 1, 1) : null;
+  if (texture !== null) texture.needsUpdate = true;
+  return {
+    shading: c.shading,
+    ka: SHADOW_KD,
+    kd: SHADOW_KD,
+    ks: c.ks ?? 0,
+    shininess: 16,
+    map: texture,
+    side: c.doubleSide ? DoubleSide : FrontSide,
+  } as const;
+}
+
+/** Whether pixel i of `shadowed` is darker than of `lit` by more than 2/255 on some channel. */
+const darker = (shadowed: Uint8Array, lit: Uint8Array, i: number) =>
+  lit[4 * i] - shadowed[4 * i] > 2 ||
+  lit[4 * i + 1] - shadowed[4 * i + 1] > 2 ||
+  lit[4 * i + 2] - shadowed[4 * i + 2] > 2;
+
+/** Whether the 3 × 3 neighbourhood of pixel (x, y) is all darker or all not (true), or mixed (false). */
+function uniformShadow(shadowed: Uint8Array, lit: Uint8Array, x: number, y: number): boolean {
+  const b = darker(shadowed, lit, y * SHADOW_SIZE + x);
+  for (let dy = -1; dy <= 1; dy++)
+    for (let dx = -1; dx <= 1; dx++)
+      if (darker(shadowed, lit, (y + dy) * SHADOW_SIZE + x + dx) !== b) return false;
+  return true;
+}
+
+/** Whether the 8 neighbours of pixel (x, y) have its RGB. */
+function sameNeighbours(p: Uint8Array, x: number, y: number): boolean {
+  const o = 4 * (y * SHADOW_SIZE + x);
+  for (let dy = -1; dy <= 1; dy++)
+    for (let dx = -1; dx <= 1; dx++)
+      if (maxRgbDelta(p, p, o, 4 * ((y + dy) * SHADOW_SIZE + x + dx)) !== 0) return false;
+  return true;
+}
+
+let shadowGl: WebGLRenderer | null = null;
+
+/** The shadow scene with ShadingMaterial on WebGLRenderer, linear into a target: receiving, and not. */
+function shadowGlPictures(c: ShadowCase): { ours: Uint8Array; lit: Uint8Array; warnings: string[] } {
+  if (shadowGl === null) {
+    shadowGl = new WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: true });
+    shadowGl.setPixelRatio(1);
+    shadowGl.setSize(SHADOW_SIZE, SHADOW_SIZE, false);
+    shadowGl.shadowMap.enabled = true;
+    shadowGl.shadowMap.type = BasicShadowMap;
+  }
+  const r = shadowGl;
+  const { side, ...options } = shadowOptions(c);
+  const material = new ShadingMaterial(options);
+  material.side = side;
+  const setup = shadowScene(c, material, new MeshBasicMaterial());
+  const target = new WebGLRenderTarget(SHADOW_SIZE, SHADOW_SIZE);
+  const warnings: string[] = [];
+  const warn = console.warn;
+  console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+  const draw = (receive: boolean) => {
+    setup.ground.receiveShadow = receive;
+    r.setRenderTarget(target);
+    r.setClearColor(0x000000, 0);
+    r.render(setup.scene, setup.camera);
+    const pixels = new Uint8Array(4 * SHADOW_SIZE * SHADOW_SIZE);
+    r.readRenderTargetPixels(target, 0, 0, SHADOW_SIZE, SHADOW_SIZE, pixels);
+    r.setRenderTarget(null);
+    return pixels;
+  };
+  try {
+    const ours = draw(c.receive ?? true);
+    const lit = draw(false);
+    return { ours, lit, warnings };
+  } finally {
+    console.warn = warn;
+    target.dispose();
+    material.map?.dispose();
+    material.dispose();
+  }
+}
+
+/**
+ * One shadow case on one backend: ShadingNodeMaterial's ground against MeshPhongNodeMaterial's (where the shadow
+ * falls), shade() (colours: the light × three's factor; flat shading at the face's centroid), and WebGLRenderer +
+ * ShadingMaterial (colours, away from both pictures' shadow edges).
+ */
+async function shadowCompare(backend: Backend, c: ShadowCase): Promise<ShadowStats> {
+  const r = await gpuRenderer(backend);
+  const { side, ...options } = shadowOptions(c);
+  const material = new ShadingNodeMaterial(options);
+  material.side = side;
+  const occluder = new MeshBasicNodeMaterial();
+  const setup = shadowScene(c, material, occluder);
+  const target = new RenderTarget(SHADOW_SIZE, SHADOW_SIZE, { depthBuffer: true });
+  const oracle = new MeshPhongNodeMaterial({
+    color: new Color(...SHADOW_KD),
+    specular: 0x000000,
+    shininess: 16,
+  });
+  r.shadowMap.enabled = true;
+  r.shadowMap.type = BasicShadowMap;
+  const draw = async (m: Material, receive: boolean) => {
+    setup.ground.material = m;
+    setup.ground.receiveShadow = receive;
+    r.setRenderTarget(target);
+    r.setClearColor(0x000000, 0);
+    r.render(setup.scene, setup.camera);
+    r.setRenderTarget(null);
+    return readTarget(r, target, SHADOW_SIZE);
+  };
+  const receive = c.receive ?? true;
+  let ours: Uint8Array;
+  let oursLit: Uint8Array;
+  let theirs: Uint8Array;
+  let theirsLit: Uint8Array;
+  try {
+    ours = await draw(material, receive);
+    oursLit = await draw(material, false);
+    theirs = await draw(oracle, true);
+    theirsLit = await draw(oracle, false);
+  } finally {
+    r.shadowMap.enabled = false;
+    target.dispose();
+    oracle.dispose();
+    occluder.dispose();
+    material.map?.dispose();
+    material.dispose();
+  }
+  const gl = shadowGlPictures(c);
+  const stats: ShadowStats = {
+    oracleShadowed: 0,
+    shadowed: 0,
+    maskCompared: 0,
+    maskMismatches: 0,
+    compared: 0,
+    shadowCompared: 0,
+    maxError: 0,
+    mismatches: 0,
+    worst: null,
+    webgl: { compared: 0, maxDelta: 0, differing: 0, maskMismatches: 0, worst: null },
+    webglWarnings: gl.warnings,
+    backend: backendFlags(r),
+  };
+  const { camera, light, phong, ground } = setup;
+  const eye = camera.position.toArray();
+  const others: (ShadeLight | ShadeThreeLight)[] = [
+    { type: 'ambient', color: [SHADOW_AMBIENT, SHADOW_AMBIENT, SHADOW_AMBIENT] },
+  ];
+  if (c.phongCaster) {
+    others.push({
+      position: phong.position.toArray(),
+      ambient: phong.ambient.toArray(),
+      diffuse: phong.diffuse.toArray(),
+      specular: phong.specular.toArray(),
+      attenuation: phong.attenuation,
+    });
+  }
+  const litLights = [...others, shadeThreeLight(light, 1)];
+  const shadowLights = [...others, shadeThreeLight(light, 1 - light.shadow.intensity)];
+  const m: ShadeMaterial = {
+    ka: SHADOW_KD,
+    kd: SHADOW_KD,
+    ks: [c.ks ?? 0, c.ks ?? 0, c.ks ?? 0],
+    shininess: 16,
+    lighting: 'phong',
+    celBands: 0,
+  };
+  const tint = c.map ? SHADOW_TEXEL.map((t) => t / 255) : [1, 1, 1];
+  // Gouraud shading interpolates the vertices' colours: shade() per pixel only where they are constant.
+  const shadeable = c.shading !== 'gouraud' || (c.light === 'directional' && (c.ks ?? 0) === 0);
+  const raycaster = new Raycaster();
+  const position = ground.geometry.getAttribute('position');
+  for (let y = 1; y < SHADOW_SIZE - 1; y++) {
+    for (let x = 1; x < SHADOW_SIZE - 1; x++) {
+      const i = y * SHADOW_SIZE + x;
+      const a = darker(ours, oursLit, i);
+      const b = darker(theirs, theirsLit, i);
+      if (a) stats.shadowed++;
+      if (b) stats.oracleShadowed++;
+      if (!uniformShadow(theirs, theirsLit, x, y)) continue;
+      stats.maskCompared++;
+      if (a !== b) stats.maskMismatches++;
+      const o = 4 * i;
+      // Against WebGLRenderer + ShadingMaterial, away from the edges of both renderers' shadows.
+      if (uniformShadow(gl.ours, gl.lit, x, y)) {
+        const g = darker(gl.ours, gl.lit, i);
+        if (g !== b) stats.webgl.maskMismatches++;
+        else {
+          stats.webgl.compared++;
+          const delta = maxRgbDelta(ours, gl.ours, o);
+          if (delta > 2) stats.webgl.differing++;
+          if (delta > stats.webgl.maxDelta) {
+            stats.webgl.maxDelta = delta;
+            stats.webgl.worst = {
+              x,
+              y,
+              ours: Array.from(ours.subarray(o, o + 3)),
+              gl: Array.from(gl.ours.subarray(o, o + 3)),
+            };
+          }
+        }
+      }
+      if (!shadeable) continue;
+      // Flat shading: one colour per face; a pixel whose neighbours are not all its colour is at a face's edge,
+      // where the rasteriser and the ray may take different faces.
+      if (c.shading === 'flat' && !sameNeighbours(ours, x, y)) continue;
+      raycaster.setFromCamera(
+        new Vector2(((x + 0.5) / SHADOW_SIZE) * 2 - 1, ((y + 0.5) / SHADOW_SIZE) * 2 - 1),
+        camera,
+      );
+      const hit = raycaster.intersectObject(ground, false)[0];
+      if (hit?.face == null) continue;
+      let point = hit.point;
+      if (c.shading === 'flat') {
+        // Lit once per face, at its centroid.
+        const { a: fa, b: fb, c: fc } = hit.face;
+        point = new Vector3()
+          .fromBufferAttribute(position, fa)
+          .add(new Vector3().fromBufferAttribute(position, fb))
+          .add(new Vector3().fromBufferAttribute(position, fc))
+          .divideScalar(3)
+          .applyMatrix4(ground.matrixWorld);
+      }
+      const expected = shade(
+        { position: point.toArray(), normal: [0, 1, 0], eye, tint },
+        m,
+        b && receive ? shadowLights : litLights,
+      );
+      let error = 0;
+      for (let k = 0; k < 3; k++)
+        error = Math.max(error, Math.abs(ours[o + k] - Math.min(Math.max(expected[k], 0), 1) * 255));
+      stats.compared++;
+      if (b) stats.shadowCompared++;
+      if (error > 2) stats.mismatches++;
+      if (error > stats.maxError) {
+        stats.maxError = error;
+        stats.worst = {
+          x,
+          y,
+          ours: Array.from(ours.subarray(o, o + 3)),
+          expected: expected.map((e) => e * 255),
+        };
+      }
+    }
+  }
+  return stats;
+}
+
+/**
+ * A PhongLight with castShadow = true beside three's MeshPhongNodeMaterial and ShadingNodeMaterial, both receiving
+ * shadows, with a shadow-casting DirectionalLight and the renderer's shadow map on: the picture of the same scene
+ * with the PhongLight's castShadow false (pixels differing), and the pixels drawn.
+ */
+async function phongCaster(backend: Backend) {
+  const r = await gpuRenderer(backend);
+  const scene = new Scene();
+  const camera = new PerspectiveCamera(45, 1, 0.1, 20);
+  camera.position.set(0, 1.5, 4);
+  camera.lookAt(0, 0, 0);
+  const phong = new PhongLight();
+  phong.position.set(-2, 3, 3);
+  const sun = shadowLight('directional');
+  scene.add(phong, sun, new AmbientLight(0xffffff, SHADOW_AMBIENT));
+  const ours = new ShadingNodeMaterial({ shading: 'gouraud' });
+  const three = new MeshPhongNodeMaterial({ color: 0x8080ff });
+  const left = new Mesh(new SphereGeometry(0.6, 24, 12), ours);
+  left.position.set(-0.7, 0.2, 0);
+  const right = new Mesh(new SphereGeometry(0.6, 24, 12), three);
+  right.position.set(0.7, 0.2, 0);
+  const floor = new Mesh(new PlaneGeometry(4, 4).rotateX(-Math.PI / 2), new ShadingNodeMaterial());
+  floor.position.y = -0.5;
+  for (const o of [left, right, floor]) {
+    o.castShadow = true;
+    o.receiveShadow = true;
+  }
+  scene.add(left, right, floor);
+  scene.updateMatrixWorld();
+  camera.updateMatrixWorld();
+  r.shadowMap.enabled = true;
+  r.shadowMap.type = BasicShadowMap;
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  const draw = async (cast: boolean) => {
+    (phong as unknown as { castShadow: boolean }).castShadow = cast;
+    r.setRenderTarget(target);
+    r.setClearColor(0x000000, 0);
+    r.render(scene, camera);
+    r.setRenderTarget(null);
+    return readTarget(r, target, SIZE);
+  };
+  try {
+    const casting = await draw(true);
+    const plain = await draw(false);
+    const again = await draw(true);
+    let differing = 0;
+    let drawn = 0;
+    let black = 0;
+    for (let i = 0; i < SIZE * SIZE; i++) {
+      const o = 4 * i;
+      if (maxRgbDelta(casting, plain, o) > 0 || maxRgbDelta(again, plain, o) > 0) differing++;
+      if (covered(casting, i)) {
+        drawn++;
+        if (casting[o] + casting[o + 1] + casting[o + 2] === 0) black++;
+      }
+    }
+    return { differing, drawn, black, backend: backendFlags(r) };
+  } finally {
+    r.shadowMap.enabled = false;
+    target.dispose();
+    for (const m of [ours, three, floor.material]) m.dispose();
+  }
+}
+
 const api = {
+  shadowCompare,
+  phongCaster,
   sceneCompare,
   clipCompare,
   pairDiff,

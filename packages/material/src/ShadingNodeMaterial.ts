@@ -5,16 +5,12 @@ import {
   batchColor,
   cameraViewMatrix,
   diffuseColor,
-  float,
   frontFacing,
   instanceColor,
   ivec2,
   lightingContext,
-  lightViewPosition,
   materialReference,
   max,
-  min,
-  mix,
   modelViewMatrix,
   negateOnBackSide,
   normalLocal,
@@ -30,28 +26,31 @@ import {
   vertexIndex,
 } from 'three/tsl';
 import {
-  AnalyticLightNode,
   BackSide,
   type BufferGeometry,
   Color,
   DataTexture,
   DoubleSide,
   FloatType,
-  type Light,
-  LightingModel,
   Matrix3,
   NearestFilter,
   NodeMaterial,
-  NodeUpdateType,
   type NormalMapTypes,
   RGBAFormat,
   TangentSpaceNormalMap,
   type Texture,
   Vector2,
-  Vector3,
 } from 'three/webgpu';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
+import {
+  LectureLightingModel,
+  type LightingSplit,
+  PhongLightNode,
+  phongLightNode,
+  type Surface,
+} from './nodeLighting.js';
+import { removeShadowed, shadowingLightNodes, shadowTerms, unshadowed } from './nodeShadows.js';
 import {
   checkCelBands,
   checkLighting,
@@ -60,10 +59,10 @@ import {
   SHADING_DEFAULTS,
   type Shading,
 } from './options.js';
-import { PhongLight } from './PhongLight.js';
+import type { PhongLight } from './PhongLight.js';
 import { provokingVertexOf } from './provokingVertexOf.js';
 import type { ShadingMaterialOptions } from './ShadingMaterial.js';
-import { type Lighting, MIN_ATTENUATION_DENOMINATOR } from './shade.js';
+import type { Lighting } from './shade.js';
 import {
   type ColorInput,
   checkColorChannels,
@@ -76,10 +75,7 @@ import {
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
 type N = any;
 
-const OWNER = 'ShadingNodeMaterial';
-
-/** 1/π: three's factor of every light's colour (BRDF_Lambert); see `shade()`. */
-const RECIPROCAL_PI = 1 / Math.PI;
+export type { LightingSplit, Surface } from './nodeLighting.js';
 
 /**
  * Options of {@link ShadingNodeMaterial}: `ShadingMaterial`'s, defined once (the lecture's options and three's
@@ -87,225 +83,6 @@ const RECIPROCAL_PI = 1 / Math.PI;
  * `transparent`, `alphaTest`, `alphaMap`, `normalMap`, `normalScale`), with the same defaults and checks.
  */
 export type ShadingNodeMaterialOptions = ShadingMaterialOptions;
-
-/** A PhongLight's uniforms, refreshed once per frame (its world position is read by three's light nodes). */
-class PhongLightNode extends AnalyticLightNode<Light> {
-  static get type(): string {
-    return 'PhongLightNode';
-  }
-  readonly ambient = uniform(new Color());
-  readonly diffuse = uniform(new Color());
-  readonly specular = uniform(new Color());
-  readonly attenuation = uniform(new Vector3(1, 0, 0));
-  readonly phongLight: PhongLight;
-  #reported: string | null = null;
-
-  constructor(light: PhongLight) {
-    // AnalyticLightNode reads `color`, `intensity` and `shadow` only from three's lights.
-    super(light as never);
-    this.phongLight = light;
-    // Refreshed for every render call (three's lights: once per animation frame), so that a change between two
-    // renders of one frame is seen.
-    this.updateType = NodeUpdateType.RENDER;
-  }
-
-  override update(): undefined {
-    const light = this.phongLight;
-    try {
-      light.validate();
-    } catch (error) {
-      // Edited in place to a bad value: reported once, drawn with the last valid values.
-      const message = (error as Error).message;
-      if (message !== this.#reported) {
-        console.error(`${OWNER}: ${message} (edited in place; drawing with the last valid values)`);
-      }
-      this.#reported = message;
-      return;
-    }
-    this.#reported = null;
-    (this.ambient.value as Color).copy(light.ambient);
-    (this.diffuse.value as Color).copy(light.diffuse);
-    (this.specular.value as Color).copy(light.specular);
-    const { a, b, c } = light.attenuation;
-    (this.attenuation.value as { set(x: number, y: number, z: number): void }).set(a, b, c);
-  }
-
-  override setupDirect(builder: N): N {
-    const lightVector = (lightViewPosition(this.phongLight as never) as N).sub(
-      builder.context.positionView ?? positionView,
-    );
-    return { lightDirection: vec3(0, 0, 1), lightColor: vec3(0), phong: { lightVector, node: this } };
-  }
-}
-
-// three builds a PhongLight in the rendered scene with this node, as it builds its own lights with theirs.
-(PhongLight.prototype as unknown as { _lightNode: typeof PhongLightNode })._lightNode = PhongLightNode;
-
-/** The nodes of the PhongLights listed in a material's `lights` (the scene's are three's). */
-const _lightNodes = /* @__PURE__ */ new WeakMap<PhongLight, PhongLightNode>();
-
-function phongLightNode(light: PhongLight): PhongLightNode {
-  let node = _lightNodes.get(light);
-  if (node === undefined) {
-    node = new PhongLightNode(light);
-    _lightNodes.set(light, node);
-  }
-  return node;
-}
-
-/** The surface point the lighting model lights, in view space, in the stage it is built in. */
-export interface Surface {
-  /** Unit normal. */
-  n: N;
-  /** Unit vector towards the viewer. */
-  v: N;
-  /**
-   * A vec3 variable (`toVar()`, starting at 0) that receives the colour of the other side, lit with −n, in the
-   * same pass (two lighting passes cannot share three's light nodes in one shader).
-   */
-  back?: N;
-  /**
-   * With `back`, a vec3 variable that receives the other side's ks part instead of `back` (see
-   * {@link LightingSplit}).
-   */
-  backSpecular?: N;
-}
-
-/**
- * How a lit colour is split for a texel applied per fragment after vertex lighting (gouraud, exact flat), as
- * `ShadingMaterial`'s SHADING_SPLIT: the lighting returns the ka/kd part, and `specular` (a vec3 variable,
- * `toVar()`, starting at 0) receives the ks part.
- */
-export interface LightingSplit {
-  /** What multiplies ka and kd (not ks): instance colour × batch colour × vertex colour × texel. @default none */
-  tint?: N;
-  /** A vec3 variable receiving the ks part (the lighting then returns the ka/kd part only). */
-  specular?: N;
-}
-
-/** The lecture's equation as three's lighting model: one direct() per light, ambient through indirect(). */
-class LectureLightingModel extends LightingModel {
-  constructor(
-    private readonly material: ShadingNodeMaterial,
-    private readonly surface: Surface,
-    private readonly uniforms: { ka: N; kd: N; ks: N; shininess: N },
-    private readonly specular?: N,
-  ) {
-    super();
-  }
-
-  /**
-   * three's lights (and the PhongLights, as material lightings), then the ambient. Hemisphere lights are
-   * evaluated here with the variant's normal: three's hemisphere node reads three's normalWorld, which the
-   * vertex stage (gouraud, flat) cannot give (no front-facing test there) and which is not the face's normal.
-   */
-  override start(builder: N): void {
-    const lightsNode = builder.lightsNode;
-    const listed = this.material.phongLights.length > 0;
-    // With a list of PhongLights, only their nodes light the material (not the scene's PhongLights).
-    const nodes: N[] = (lightsNode.getLightNodes(builder) as N[]).filter(
-      (node) => !(node instanceof PhongLightNode) || !listed || _lightNodes.get(node.phongLight) === node,
-    );
-    const hemispheres = nodes.filter((node) => node.light?.isHemisphereLight === true);
-    lightsNode.setupLights(
-      builder,
-      nodes.filter((node) => !hemispheres.includes(node)),
-    );
-    const { n, back } = this.surface;
-    const { ka } = this.uniforms;
-    // The ambient lights' irradiance is the same on both sides; the hemispheres' is not.
-    back?.addAssign(builder.context.irradiance.mul(ka).mul(RECIPROCAL_PI));
-    for (const node of hemispheres) {
-      // Registered for its per-frame update (colours, direction); its own setup is not built.
-      builder.addNode(node);
-      const direction = (cameraViewMatrix as N).mul(vec4(node.lightDirectionNode, 0)).xyz;
-      const weight = n.dot(direction).mul(0.5);
-      builder.context.irradiance.addAssign(mix(node.groundColorNode, node.colorNode, weight.add(0.5)));
-      back?.addAssign(
-        mix(node.groundColorNode, node.colorNode, weight.negate().add(0.5)).mul(ka).mul(RECIPROCAL_PI),
-      );
-    }
-    this.indirect(builder);
-  }
-
-  override direct(data: N): void {
-    const { n, v, back, backSpecular } = this.surface;
-    const { ka, kd, ks, shininess } = this.uniforms;
-    let ambient: N = null;
-    const { reflectedLight } = data;
-    let l: N;
-    let id: N;
-    let is: N;
-    let att: N = float(1);
-    if (data.phong !== undefined) {
-      const { lightVector, node } = data.phong as { lightVector: N; node: PhongLightNode };
-      const t = lightVector.length();
-      // A light at the point lights it head-on (l = n).
-      l = select(t.greaterThan(0), lightVector.div(max(t, 1e-30)), n);
-      const abc = node.attenuation as N;
-      att = float(1).div(max(abc.x.add(abc.y.mul(t)).add(abc.z.mul(t).mul(t)), MIN_ATTENUATION_DENOMINATOR));
-      id = node.diffuse;
-      is = node.specular;
-      ambient = ka.mul(node.ambient);
-      reflectedLight.indirectDiffuse.addAssign(ambient);
-    } else {
-      // three's lights: Id = Is = colour × intensity / π × three's falloff (as three's materials receive them).
-      l = data.lightDirection;
-      id = data.lightColor.mul(RECIPROCAL_PI);
-      is = id;
-    }
-    const ndl = n.dot(l);
-    const h = this.material.lighting === 'blinn-phong' ? l.add(v) : null;
-    // One side's diffuse and specular factors, for the normal n·sign (the back side: −n).
-    const side = (sign: number): [N, N] => {
-      const cos = sign > 0 ? ndl : ndl.negate();
-      let diffuse: N = max(cos, 0);
-      let x: N;
-      if (h !== null) {
-        const hl = h.length();
-        const nh = sign > 0 ? n.dot(h) : n.dot(h).negate();
-        x = select(hl.greaterThan(0), max(nh.div(max(hl, 1e-30)), 0), float(0));
-      } else {
-        // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l (the same for −n).
-        x = max(ndl.mul(2).mul(v.dot(n)).sub(v.dot(l)), 0);
-      }
-      // 0⁰ = 1: shininess 0 gives a uniform highlight over the lit side.
-      const power = select(
-        x.greaterThan(0),
-        x.pow(shininess),
-        select(shininess.equal(0), float(1), float(0)),
-      );
-      let spec: N = select(cos.greaterThan(0), power, float(0));
-      const bands = this.material.celBands;
-      if (bands > 0) {
-        diffuse = min(diffuse.mul(bands).floor(), bands - 1).div(bands - 1);
-        spec = select(spec.greaterThanEqual(0.5), float(1), float(0));
-      }
-      return [diffuse, spec];
-    };
-    const [diffuse, spec] = side(1);
-    reflectedLight.directDiffuse.addAssign(kd.mul(id).mul(diffuse.mul(att)));
-    // The ks part: with the lighting split (a texel per fragment after vertex lighting), into its own variable.
-    (this.specular ?? reflectedLight.directSpecular).addAssign(ks.mul(is).mul(spec.mul(att)));
-    if (back !== undefined) {
-      const [backDiffuse, backSpec] = side(-1);
-      const backDiffuseTerm = kd.mul(id).mul(backDiffuse.mul(att));
-      const backSpecularTerm = ks.mul(is).mul(backSpec.mul(att));
-      if (backSpecular === undefined) back.addAssign(backDiffuseTerm.add(backSpecularTerm));
-      else {
-        back.addAssign(backDiffuseTerm);
-        backSpecular.addAssign(backSpecularTerm);
-      }
-      if (ambient !== null) back.addAssign(ambient);
-    }
-  }
-
-  override indirect(builder: N): void {
-    // three's ambient and hemisphere lights: Ia = their irradiance / π.
-    const { irradiance, reflectedLight } = builder.context;
-    reflectedLight.indirectDiffuse.addAssign(irradiance.mul(this.uniforms.ka).mul(RECIPROCAL_PI));
-  }
-}
 
 /** An InstancedMesh's instance colour or a BatchedMesh's colour, or null. */
 function instanceTint(builder: N): N {
@@ -438,7 +215,9 @@ function faceTexel(texture: DataTexture, i: N): N {
  * ks, the texel per fragment in every shading (gouraud and exact flat shading pass the ka/kd part and the ks
  * part apart); `emissive` (× `emissiveMap`) is added outside the lighting; alpha is `opacity` × texel alpha ×
  * vertex alpha × `alphaMap` green (blended when `transparent`, discarded by `alphaTest`). `scene.fog` is three's
- * node fog (blended in linear before the output conversion, as three's node materials blend it).
+ * node fog (blended in linear before the output conversion, as three's node materials blend it). With
+ * `receiveShadow`, three's shadow-casting lights shadow their term of the equation (never the ambient) in every
+ * shading, per fragment; a PhongLight casts no shadow (its `castShadow` is ignored).
  * `normalMap` is not drawn yet (one console warning).
  *
  * @example
@@ -718,7 +497,11 @@ export class ShadingNodeMaterial extends NodeMaterial {
     // The scene's PhongLights come with three's lights (their registered light node); the listed ones, which
     // need not be in the scene, as the material's own lightings (the model keeps only them then).
     const node = lightingContext(builder.lightsNode, model, this.#lights.map(phongLightNode) as never) as N;
-    return positionView === undefined ? node : node.context({ positionView });
+    const context: Record<string, unknown> = {};
+    if (positionView !== undefined) context.positionView = positionView;
+    // Lit in the vertex stage, three's shadow-casting lights light unshadowed; the fragment stage shadows them.
+    if (surface.shadows !== undefined) context.getShadow = unshadowed;
+    return Object.keys(context).length === 0 ? node : node.context(context);
   }
 
   /**
@@ -796,6 +579,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
     // The vertex stage cannot tell a front face from a back one: it lights the side(s) the material draws, the
     // back with the normal turned round, and the fragment takes the colour of the side it is on.
     // Both sides (DoubleSide) are lit in one pass, the back into variables of its own.
+    // three's shadow-casting lights are recorded apart and shadowed per fragment (nodeShadows.ts).
+    const shadowing = shadowingLightNodes(builder, (node) => node instanceof PhongLightNode);
     const sided = (surface: (sign: number) => Surface, view: N, interpolate: (node: N) => N): N => {
       const double = this.side === DoubleSide;
       const front = surface(double || this.side !== BackSide ? 1 : -1);
@@ -804,14 +589,16 @@ export class ShadingNodeMaterial extends NodeMaterial {
         front.back = vec3(0).toVar();
         if (texel !== null) front.backSpecular = vec3(0).toVar();
       }
+      const shadows = shadowing.length > 0 ? shadowTerms(shadowing, double, texel !== null) : undefined;
+      front.shadows = shadows;
       const lit = interpolate(this.lightSurface(builder, front, view, { tint: vertexTint, specular }));
-      const colour = (part: N, ks: N | undefined): N => (ks === undefined ? part : part.mul(texel).add(ks));
-      const frontColour = colour(lit, specular === undefined ? undefined : interpolate(specular));
+      const colour = (part: N, ks: N | undefined): N =>
+        ks === undefined ? part : part.mul(texel).add(interpolate(ks));
+      const shadowed = (c: N, side: 'front' | 'back'): N =>
+        shadows === undefined ? c : removeShadowed(c, shadows, side, (t, ks) => colour(interpolate(t), ks));
+      const frontColour = shadowed(colour(lit, specular), 'front');
       if (!double) return frontColour;
-      const backColour = colour(
-        interpolate(front.back),
-        front.backSpecular === undefined ? undefined : interpolate(front.backSpecular),
-      );
+      const backColour = shadowed(colour(interpolate(front.back), front.backSpecular), 'back');
       return select(frontFacing, frontColour, backColour);
     };
     if (this.#shading === 'gouraud') {
