@@ -108,3 +108,118 @@ export async function recordReports(page: Page): Promise<() => Promise<string[]>
   });
   return () => page.evaluate(() => (window as unknown as { seen: string[] }).seen);
 }
+
+/** The parity view's two read-backs (RGBA, rows bottom-up) and the numbers it shows. */
+export interface ParityRead {
+  w: number;
+  h: number;
+  webgl: Uint8Array;
+  webgpu: Uint8Array;
+  numbers: { pixels: number; max: number; mean: number; over1: number; over3: number; coverage: number };
+  seq: number;
+}
+
+/**
+ * Waits until the parity view rests with a comparison of the last frame, then reads WebGL's cell back from the
+ * viewer's canvas (gl.readPixels) and WebGPU's picture from its canvas (getImageData), and the numbers shown.
+ */
+export async function readParity(page: Page): Promise<ParityRead> {
+  await expect(page.getByTestId('parity-numbers')).toBeVisible({ timeout: 60_000 });
+  await settle(page);
+  // The comparison of the last frame has arrived when the sequence stops moving.
+  let seq = -1;
+  for (let i = 0; i < 40; i++) {
+    const now = Number(await page.getByTestId('parity').getAttribute('data-seq'));
+    if (now === seq && now > 0) break;
+    seq = now;
+    await page.waitForTimeout(300);
+  }
+  const read = await page.evaluate(() => {
+    const panel = document.querySelector<HTMLElement>('[data-testid="parity"]')!;
+    const [x, y, w, h] = panel.dataset['cell']!.split(',').map(Number) as [number, number, number, number];
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="viewport"]')!;
+    const gl = canvas.getContext('webgl2')!;
+    const webgl = new Uint8Array(4 * w * h);
+    gl.readPixels(x, y, w, h, gl.RGBA, gl.UNSIGNED_BYTE, webgl);
+    const gpu = document.querySelector<HTMLCanvasElement>('[data-testid="parity-webgpu"]')!;
+    const top = gpu.getContext('2d')!.getImageData(0, 0, w, h).data;
+    const webgpu = new Uint8Array(4 * w * h);
+    for (let r = 0; r < h; r++) webgpu.set(top.subarray((h - 1 - r) * 4 * w, (h - r) * 4 * w), r * 4 * w);
+    const b64 = (a: Uint8Array) => {
+      let s = '';
+      for (let i = 0; i < a.length; i += 0x8000) s += String.fromCharCode(...a.subarray(i, i + 0x8000));
+      return btoa(s);
+    };
+    const d = document.querySelector<HTMLElement>('[data-testid="parity-numbers"]')!.dataset;
+    const numbers = Object.fromEntries(
+      ['pixels', 'max', 'mean', 'over1', 'over3', 'coverage'].map((k) => [k, Number(d[k])]),
+    );
+    return { w, h, webgl: b64(webgl), webgpu: b64(webgpu), numbers, seq: Number(panel.dataset['seq']) };
+  });
+  return {
+    ...read,
+    webgl: new Uint8Array(Buffer.from(read.webgl, 'base64')),
+    webgpu: new Uint8Array(Buffer.from(read.webgpu, 'base64')),
+    numbers: read.numbers as ParityRead['numbers'],
+  };
+}
+
+/** The parity numbers recomputed from two read-backs: largest channel difference per pixel, over every pixel. */
+export function parityNumbers(a: Uint8Array, b: Uint8Array, w: number, h: number) {
+  let max = 0;
+  let sum = 0;
+  let over1 = 0;
+  let over3 = 0;
+  for (let k = 0; k < w * h; k++) {
+    let d = 0;
+    for (let c = 0; c < 3; c++) d = Math.max(d, Math.abs(a[4 * k + c]! - b[4 * k + c]!));
+    max = Math.max(max, d);
+    sum += d;
+    if (d > 1) over1++;
+    if (d > 3) over3++;
+  }
+  return { pixels: w * h, max, mean: sum / (w * h), over1, over3 };
+}
+
+/** Whether pixel (x, y) of `p` is on an edge: a channel spans more than 24 codes over its 3 × 3 neighbourhood. */
+function onEdge(p: Uint8Array, w: number, h: number, x: number, y: number): boolean {
+  if (x === 0 || y === 0 || x === w - 1 || y === h - 1) return true;
+  for (let c = 0; c < 3; c++) {
+    let lo = 255;
+    let hi = 0;
+    for (let dy = -1; dy <= 1; dy++)
+      for (let dx = -1; dx <= 1; dx++) {
+        const v = p[4 * ((y + dy) * w + x + dx) + c]!;
+        lo = Math.min(lo, v);
+        hi = Math.max(hi, v);
+      }
+    if (hi - lo > 24) return true;
+  }
+  return false;
+}
+
+/**
+ * Two pictures of one view compared away from edges (silhouettes, cel and texture edges: see `onEdge`, in either
+ * picture): pixels compared, the largest and the mean channel difference there, and pixels lit in one only.
+ */
+export function awayFromEdges(a: Uint8Array, b: Uint8Array, w: number, h: number) {
+  let compared = 0;
+  let max = 0;
+  let sum = 0;
+  let litA = 0;
+  let coverage = 0;
+  const lit = (p: Uint8Array, k: number) => p[4 * k]! > 8 || p[4 * k + 1]! > 8 || p[4 * k + 2]! > 8;
+  for (let y = 0; y < h; y++)
+    for (let x = 0; x < w; x++) {
+      const k = y * w + x;
+      if (lit(a, k)) litA++;
+      if (lit(a, k) !== lit(b, k)) coverage++;
+      if (onEdge(a, w, h, x, y) || onEdge(b, w, h, x, y)) continue;
+      compared++;
+      let d = 0;
+      for (let c = 0; c < 3; c++) d = Math.max(d, Math.abs(a[4 * k + c]! - b[4 * k + c]!));
+      max = Math.max(max, d);
+      sum += d;
+    }
+  return { lit: litA, compared, max, mean: compared ? sum / compared : 0, coverage };
+}

@@ -4,8 +4,17 @@
 // picture and settings exactly. three/webgpu is loaded only when WebGPU mode is chosen. With the WebGPU flags:
 // playground-webgpu-flags.spec.ts.
 import { expect, test } from '@playwright/test';
+import type { RgbaImage } from '@shadelab/playwright/test';
 import { choose, open, picture, settle, stateUrl, typeInto, urlState } from './playground-helpers';
-import { expectSamePicture, shot, toWebGPU, watchProblems } from './playground-webgpu-helpers';
+import {
+  awayFromEdges,
+  expectSamePicture,
+  parityNumbers,
+  readParity,
+  shot,
+  toWebGPU,
+  watchProblems,
+} from './playground-webgpu-helpers';
 
 /** What a browser without WebGPU gets: no adapter (Chromium without the flag), or no `navigator.gpu` at all. */
 const FALLBACK = /^Renderer: WebGL2 \(WebGPU's fallback: (no WebGPU adapter|this browser has no WebGPU)\)$/;
@@ -80,7 +89,7 @@ test.describe('the renderer switch, in a browser without WebGPU', () => {
     });
   }
 
-  test('edits apply live in WebGPU mode; what it does not draw is named; switching back restores WebGL mode’s picture and settings exactly', async ({
+  test('edits apply live in WebGPU mode (the compare view and the outline drawn); switching back restores WebGL mode’s picture and settings exactly', async ({
     page,
   }) => {
     test.setTimeout(120_000);
@@ -95,15 +104,13 @@ test.describe('the renderer switch, in a browser without WebGPU', () => {
     const settings = await urlState(page);
     expect(settings['renderer']).toBe('webgl');
 
+    const webgl = await shot(page);
     await toWebGPU(page);
-    // The comparison view and the outline are WebGL-only: named, and kept in the state.
-    await expect(page.getByTestId('webgpu-note')).toHaveText([
-      /comparison view is WebGL-only/,
-      /cel outline is WebGL-only/,
-      /GLSL editing is WebGL-only/,
-    ]);
-    await expect(page.locator('.compare-labels')).toHaveCount(0);
+    // The comparison view with the cel column's outline is drawn: nothing is named as left out.
+    await expect(page.getByTestId('webgpu-note')).toHaveText([/GLSL editing is WebGL-only/]);
+    await expect(page.locator('.compare-labels li')).toHaveCount(4);
     expect(await urlState(page)).toEqual({ ...settings, renderer: 'webgpu' });
+    expectCloseAwayFromEdges(webgl, await shot(page));
 
     // A live edit redraws WebGPU mode's picture (no reload); putting the value back gives the same pixels.
     const before = await shot(page);
@@ -143,4 +150,99 @@ test.describe('the renderer switch, in a browser without WebGPU', () => {
       'state.renderer: "vulkan" is not one of webgl, webgpu',
     );
   });
+
+  test('WebGPU mode draws every scene, the compare view, the outline and the impostor as WebGL mode does', async ({
+    page,
+    context,
+  }) => {
+    test.setTimeout(240_000);
+    // Two pages, one per renderer, each kept open: a new state arrives through the URL's hash (no reload).
+    const [gl, gpu] = [page, await context.newPage()];
+    const problems = [...watchProblems(gl), ...watchProblems(gpu)];
+    await open(gl);
+    await open(gpu, { renderer: 'webgpu' });
+    await expect(gpu.getByTestId('renderer-backend')).toHaveText(FALLBACK, { timeout: 30_000 });
+    const STATES: Record<string, object> = {
+      'the compare view, cel outline': { view: 'compare', material: { celBands: 3, outline: true } },
+      'the impostor': { sphere: { render: 'impostor' } },
+      'instanced spheres': { scene: 'instanced' },
+      'skinned + morphing mesh': { scene: 'skinned' },
+      'textured, normal map': { scene: 'textured' },
+      'three’s lights, fog, clipping (fog apart)': { scene: 'lights' },
+      'instanced spheres in the compare view': { scene: 'instanced', view: 'compare' },
+    };
+    for (const [name, state] of Object.entries(STATES)) {
+      for (const [page, renderer] of [
+        [gl, 'webgl'],
+        [gpu, 'webgpu'],
+      ] as const) {
+        const url = stateUrl({ ...state, renderer });
+        await page.evaluate(
+          (hash) => {
+            window.location.hash = hash;
+          },
+          url.slice(url.indexOf('#')),
+        );
+        await settle(page);
+      }
+      await expect(gpu.getByTestId('viewport-webgpu')).toHaveAttribute('data-frames', /[1-9]/);
+      await settle(gpu);
+      const [a, b] = [await shot(gl), await shot(gpu)];
+      // The fog blends in linear on WebGPURenderer (see playground-webgpu-parity.spec.ts): the fogged scene is
+      // held to the bound nearer than the fog (the lower 30 % of this portrait canvas), to 96/255 in it.
+      const fog = name.includes('fog');
+      const rows = Math.ceil((fog ? 0.3 : 1) * a.height);
+      if (fog) expect(awayFromEdges(a.data, b.data, a.width, a.height).max).toBeLessThanOrEqual(96);
+      // Rows top-down in a screenshot: the last `rows` rows.
+      const from = 4 * a.width * (a.height - rows);
+      const d = awayFromEdges(a.data.subarray(from), b.data.subarray(from), a.width, rows);
+      console.log(`WebGPU mode (WebGL2 backend), ${name}: ${JSON.stringify(d)}`);
+      expect(d.compared, name).toBeGreaterThan(0.5 * a.width * rows);
+      expect(d.max, `${name}: largest channel difference away from edges`).toBeLessThanOrEqual(2);
+      expect(d.coverage, `${name}: pixels lit in one picture only`).toBeLessThanOrEqual(0.001 * d.lit);
+    }
+    // The stats are WebGPU mode's: a GPU time, or "n/a" and why.
+    await expect(gpu.getByTestId('stats-gpu')).toHaveText(/^(\d+\.\d\d ms|n\/a: .+)$/);
+    expect(problems).toEqual([]);
+  });
+
+  test('the parity view: in the URL like every view, its numbers are the two read-backs’, a bad view is refused', async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = watchProblems(page);
+    await open(page, { view: 'parity', material: { kd: [0.2, 0.5, 0.8] } });
+    await expect(page.locator('[id="View.view"]')).toHaveValue('2'); // single, compare, parity
+    // Without WebGPU here, WebGPU's half runs on the WebGL2 backend, and says so.
+    await expect(page.getByTestId('parity-backend')).toHaveText(/\(WebGL2 \(WebGPU's fallback: .+\)\)$/, {
+      timeout: 30_000,
+    });
+    const { w, h, webgl, webgpu, numbers } = await readParity(page);
+    const { coverage, ...shown } = numbers;
+    expect(shown).toEqual(parityNumbers(webgl, webgpu, w, h));
+    expect(numbers.max).toBeLessThanOrEqual(2);
+    const state = await urlState(page);
+    expect(state['view']).toBe('parity');
+    await page.reload();
+    await expect(page.getByTestId('parity-numbers')).toBeVisible({ timeout: 30_000 });
+    expect(await urlState(page)).toEqual(state);
+    // Leaving the view drops WebGPU's renderer: the WebGL view is drawn alone again.
+    await choose(page, 'View.view', 'single sphere');
+    await expect(page.getByTestId('parity')).toHaveCount(0);
+    expect((await urlState(page))['view']).toBe('single');
+    await page.goto(stateUrl({ view: 'sideways' }));
+    await page.reload();
+    await expect(page.getByTestId('notice').first()).toContainText(
+      'state.view: "sideways" is not one of single, compare, parity',
+    );
+    expect(problems).toEqual([]);
+  });
 });
+
+/** WebGL mode's and WebGPU mode's screenshots: within 2/255 away from edges, the same coverage. */
+function expectCloseAwayFromEdges(a: RgbaImage, b: RgbaImage) {
+  const d = awayFromEdges(a.data, b.data, a.width, a.height);
+  expect(d.compared).toBeGreaterThan(0.5 * a.width * a.height);
+  expect(d.max).toBeLessThanOrEqual(2);
+  expect(d.coverage).toBe(0);
+}

@@ -3,8 +3,10 @@ import type { ShaderSource } from './engine/ShaderProbe';
 import { SCENE_LABELS } from './engine/scenes';
 import { MOVE_KEYS, TURN_KEYS_TEXT } from './engine/viewer/input';
 import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/layout';
+import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
+import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
   DEPTH_MODES,
@@ -41,7 +43,7 @@ export function App() {
   const [layout, setLayout] = useState<Layout>({ cols: 2, rows: 2 });
   const [webgpu, setWebgpu] = useState<WebGPUStatus | null>(null);
   const [gpuShader, setGpuShader] = useState<GeneratedShader | null>(null);
-  const webgpuMode = state.renderer === 'webgpu';
+  const [parity, setParity] = useState<ParityResult | null>(null);
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -92,6 +94,7 @@ export function App() {
         onContext: (status) => setContext(status),
         onStatus: setWebgpu,
         onShader: setGpuShader,
+        onParity: setParity,
         onFirstFrame: (ms) => {
           feed.firstFrameMs = ms;
           console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
@@ -207,7 +210,8 @@ export function App() {
           onPointerDown={(e) => e.currentTarget.focus()}
           {...modelDropProps(model.open)}
         />
-        {state.view === 'compare' && !webgpuMode && (
+        {state.view === 'parity' && <ParityPanel result={parity} layout={layout} status={webgpu} />}
+        {state.view === 'compare' && (
           <ol
             className="compare-labels"
             aria-label="comparison columns"

@@ -142,9 +142,17 @@ export const MAX_LIGHTS = 8;
  * Within a group, rows are in the panel's order.
  */
 export const STATE_FIELDS = {
-  view: choice(['single', 'compare'], 'single', {
+  /**
+   * One view, the lecture's flat | Gouraud | Phong | cel slide, or the parity view: WebGL mode's and WebGPU
+   * mode's pictures of the state side by side with a heat map of their difference and its numbers.
+   */
+  view: choice(['single', 'compare', 'parity'], 'single', {
     label: 'view',
-    options: { 'single sphere': 'single', 'flat | Gouraud | Phong | cel': 'compare' },
+    options: {
+      'single sphere': 'single',
+      'flat | Gouraud | Phong | cel': 'compare',
+      'WebGL vs WebGPU parity': 'parity',
+    },
   }),
   /** The scene drawn (the lecture's sphere by default); the picker's labels are `SCENE_LABELS`. */
   scene: choice(SCENES, 'sphere', { label: 'scene' }),

@@ -32,7 +32,7 @@ export function Stats({ feed }: { feed: StatsFeed }) {
       <dd>{stats.cpuMs.toFixed(2)} ms</dd>
       <dt>frame (GPU)</dt>
       <dd data-testid="stats-gpu">
-        {stats.gpuMs === null ? 'n/a (no timer query)' : `${stats.gpuMs.toFixed(2)} ms`}
+        {stats.gpuMs === null ? (stats.gpuNote ?? 'n/a (no timer query)') : `${stats.gpuMs.toFixed(2)} ms`}
       </dd>
       <dt>triangles{cells}</dt>
       <dd data-testid="stats-triangles">{stats.triangles.toLocaleString('en-US')}</dd>

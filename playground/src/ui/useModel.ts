@@ -12,6 +12,7 @@ import { loadModel } from '../engine/modelLoader';
 import { loadStoredModel, type StoredModel, saveModel } from '../engine/modelStore';
 import type { ModelScene } from '../engine/scenes/model';
 import type { Viewer } from '../engine/viewer/Viewer';
+import { rememberOriginals } from '../engine/webgpu/originals';
 import type { PlaygroundState, SceneName } from '../state/schema';
 import type { Update } from './useFolder';
 
@@ -39,6 +40,8 @@ const errorText = (error: unknown) => (error instanceof Error ? error.message : 
 /** Parses the file and builds its scene (the scene's module and the loader arrive on first use). */
 async function build(source: StoredModel): Promise<ModelScene> {
   const loaded = await loadModel(source.name, source.bytes);
+  // WebGPU mode swaps the same originals with swapNodeMaterials.
+  rememberOriginals(loaded.scene);
   const { createModelScene } = await import('../engine/scenes/model');
   return createModelScene(loaded);
 }

@@ -20,13 +20,14 @@ import { applyMovement, applyProjection, applyTrackball } from './applyState';
 import { GpuTimer } from './gpuTimer';
 import type { ViewerEvents, ViewerHost } from './host';
 import { ViewInput } from './input';
-import { canvasSize, cellAspect, fitToCanvas, type Layout, viewLayout } from './layout';
+import { type CellRenderer, canvasSize, cellAspect, fitToCanvas, type Layout, viewLayout } from './layout';
 import { LightRig } from './lightRig';
+import { ParityFrames } from './parity';
 import { PickedScene } from './pickedScene';
 import { SceneRoot } from './sceneRoot';
 import { ShaderEditing } from './shaderEditing';
 import { cappedErrorScalePx, LectureSphere } from './sphere';
-import { FrameCounter, type FrameStats } from './stats';
+import { capPrograms, FrameCounter, type FrameStats, WebGPUStats } from './stats';
 
 /** Errors by state section (`camera`, `sphere`, `lights`, …); a section with an error keeps its last good value. */
 export type SectionErrors = Partial<Record<string, string>>;
@@ -59,8 +60,10 @@ export class Viewer implements ViewerHost {
   private readonly shader: ShaderEditing;
   private readonly gpuTimer: GpuTimer;
   private readonly frames: FrameCounter;
-  /** WebGPU mode (the `renderer` field): three/webgpu on a canvas over this one, loaded on first use. */
+  /** WebGPU mode (the `renderer` field) or the parity view's WebGPU half: three/webgpu, loaded on first use. */
   private readonly webgpu: WebGPUSwitch;
+  private readonly parity: ParityFrames;
+  private readonly gpuStats: WebGPUStats;
   private applied: PlaygroundState | null = null;
   /** The pending animation frame of {@link requestRender}; 0 when none. */
   private scheduled = 0;
@@ -97,7 +100,9 @@ export class Viewer implements ViewerHost {
     this.frames = new FrameCounter(canvas, (ms) => this.events.onFirstFrame?.(ms));
     canvas.addEventListener('webglcontextlost', this.onContextLost);
     canvas.addEventListener('webglcontextrestored', this.onContextRestored);
-    this.webgpu = new WebGPUSwitch(this, events);
+    this.gpuStats = new WebGPUStats(this.frames, events.onStats);
+    this.webgpu = new WebGPUSwitch(this, { ...events, onGpuTime: this.gpuStats.gpuTime });
+    this.parity = new ParityFrames(this.renderer, this.webgpu, this.drawViews, (r) => events.onParity?.(r));
   }
 
   /** The state applied last; null before the first. */
@@ -127,7 +132,8 @@ export class Viewer implements ViewerHost {
       });
     }
     this.applied = state;
-    if (changed('renderer')) this.webgpu.set(state.renderer === 'webgpu');
+    this.webgpu.set(state.view === 'parity' ? 'offscreen' : state.renderer === 'webgpu' ? 'canvas' : null);
+    if (this.webgpu.output !== 'canvas') this.gpuStats.reset();
     if (changed('scene')) attempt('scene', () => this.picked.pick(state.scene));
     if (this.picked.active) this.sphere.hide();
     if (this.picked.active && (changed('scene') || changed('material') || changed('lights'))) {
@@ -148,20 +154,15 @@ export class Viewer implements ViewerHost {
 
   /** The user's model (`scene: 'model'`), built by the app from the file; null frees it (pickedScene.ts). */
   setModel = (model: DemoScene | null): void => this.picked.setModel(model);
-
   /** The model shown or waiting to be shown; null when there is none (freed when another scene is picked). */
   model = (): DemoScene | null => this.picked.modelScene;
-
   /** Puts the move gizmo on light `index` (0-based), or removes it (null). */
   selectLight = (index: number | null) => this.lightRig.select(index);
-
   /** The current variant's key and its generated GLSL (before any edit). */
   getShaderSource = (): ShaderSource & { key: string; defines: Record<string, unknown> } =>
     this.shader.source();
-
   /** Compiles an edited program off-screen first; only one that compiles and links replaces the rendered one. */
   tryShader = (edited: ShaderSource): ShaderCheck => this.shader.tryEdit(edited);
-
   /** Drops the edit and goes back to the generated program. */
   clearShaderOverride = () => this.shader.clear();
 
@@ -180,7 +181,7 @@ export class Viewer implements ViewerHost {
    */
   render() {
     if (this.disposed || this.contextLost || !this.applied) return;
-    this.root.frame(this.webgpu.active ? this.drawWebGPU : this.drawWebGL);
+    this.root.frame(this.webgpu.output === 'canvas' ? this.drawWebGPU : this.drawWebGL);
   }
 
   /** A WebGL frame: the view drawn, timed on the CPU and GPU, counted, its stats reported. */
@@ -198,11 +199,8 @@ export class Viewer implements ViewerHost {
       // The camera section already reported the error; keep the last good projection.
     }
     try {
-      // The picked scene (the sphere is hidden then) or the sphere, in its cells; each draw recorded.
-      const [state, cells] = [this.applied!, { layout, w, h }];
-      this.frames.drawn = [];
-      if (this.picked.active) this.picked.draw(this.camera, state.material, cells, this.frames.drawn);
-      else this.sphere.draw(renderer, this.scene, this.camera, state, cells, this.frames.drawn);
+      if (this.applied!.view === 'parity') this.parity.frame(w, h, layout);
+      else this.drawViews(renderer, w, h, layout);
       if (this.renderError) this.events.onRenderError?.(null);
       this.renderError = false;
     } catch (error) {
@@ -215,17 +213,30 @@ export class Viewer implements ViewerHost {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, _pixel);
     const cpuMs = performance.now() - t0;
     this.frames.count();
-    this.capPrograms();
+    capPrograms(this.renderer, PROGRAM_CAP, [this.sphere, this.picked]);
     this.events.onStats?.(this.stats(cpuMs));
     // The material settles some defines while drawing (analytic sphere normals, attenuation).
     if (this.shader.variantChanged()) this.events.onVariant?.();
   };
 
-  /** WebGPU mode's frame (webgpu/WebGPUView.ts): the same camera and scene on WebGPURenderer. */
+  /**
+   * Draws the picked scene (the sphere is hidden then) or the sphere, in `layout`'s cells of a `w` × `h` canvas,
+   * with `renderer` (WebGL's, WebGPU mode's, a parity cell's); each draw recorded.
+   */
+  private readonly drawViews = (renderer: CellRenderer, w: number, h: number, layout: Layout) => {
+    const [state, cells] = [this.applied!, { layout, w, h }];
+    this.frames.drawn = [];
+    if (this.picked.active) this.picked.draw(this.camera, state.material, cells, this.frames.drawn, renderer);
+    else this.sphere.draw(renderer, this.scene, this.camera, state, cells, this.frames.drawn);
+  };
+
+  /** WebGPU mode's frame (webgpu/WebGPUView.ts): the same views, camera and scene on WebGPURenderer. */
   private readonly drawWebGPU = () => {
     try {
-      applyProjection(this.camera, this.applied!.camera, cellAspect(this.canvas, this.layout()));
-      if (this.webgpu.render()) this.frames.count();
+      const layout = this.layout();
+      applyProjection(this.camera, this.applied!.camera, cellAspect(this.canvas, layout));
+      const frame = this.webgpu.render((r, w, h) => this.drawViews(r, w, h, layout));
+      this.gpuStats.frame(frame, this.extras(0, null));
       if (this.renderError) this.events.onRenderError?.(null);
       this.renderError = false;
     } catch (error) {
@@ -234,9 +245,9 @@ export class Viewer implements ViewerHost {
     }
   };
 
-  /** The cells drawn: the compare view's (WebGL mode only: WebGPU mode draws the single view), or one. */
+  /** The cells drawn: the compare view's and the parity view's (WebGL, WebGPU, difference, numbers), or one. */
   private layout(): Layout {
-    return viewLayout(this.canvas, this.applied?.view === 'compare' && !this.webgpu.active);
+    return viewLayout(this.canvas, this.applied?.view);
   }
 
   /** Pixels of silhouette error per unit of relative radial error (an upper bound), for automatic detail. */
@@ -247,25 +258,13 @@ export class Viewer implements ViewerHost {
     return cappedErrorScalePx(this.camera, this.mesh.matrixWorld, h / rows, this.applied!.sphere.radius);
   };
 
-  /**
-   * three keeps every program a material ever used until the material is disposed; a long session visiting
-   * many variants would grow without bound. Past {@link PROGRAM_CAP}, free them all: the next frame
-   * recompiles only the variants on screen.
-   */
-  private capPrograms() {
-    if ((this.renderer.info.programs?.length ?? 0) <= PROGRAM_CAP) return;
-    this.sphere.freePrograms();
-    this.picked.freePrograms();
+  private extras(cpuMs: number, gpuMs: number | null) {
+    const errorPx = this.applied && !this.picked.active ? this.sphere.errorPx(this.errorScalePx) : null;
+    return { cpuMs, gpuMs, depth: this.depth, detail: this.sphere.detail, errorPx };
   }
 
   private stats(cpuMs: number): FrameStats {
-    return this.frames.stats(this.renderer.info, {
-      cpuMs,
-      gpuMs: this.gpuTimer.gpuMs,
-      depth: this.depth,
-      detail: this.sphere.detail,
-      errorPx: this.applied && !this.picked.active ? this.sphere.errorPx(this.errorScalePx) : null,
-    });
+    return this.frames.stats(this.renderer.info, this.extras(cpuMs, this.gpuTimer.gpuMs));
   }
 
   private readonly onGpuTime = () => this.applied && this.events.onStats?.(this.stats(Number.NaN));

@@ -6,6 +6,7 @@ import type { Trackball } from '@shadelab/trackball';
 import type * as THREE from 'three';
 import type { PlaygroundState, Vec3 } from '../../state/schema';
 import type { WebGPUEvents } from '../webgpu/switch';
+import type { ParityResult } from './parity';
 import type { FrameStats } from './stats';
 
 /** The viewer's objects, as its parts see them (read when an event comes, never copied). */
@@ -42,4 +43,6 @@ export interface ViewerEvents extends WebGPUEvents {
   onStats?: (stats: FrameStats) => void;
   onContext?: (status: 'lost' | 'restored') => void;
   onFirstFrame?: (ms: number) => void;
+  /** The parity view compared WebGL's and WebGPU's pictures of a frame. */
+  onParity?: (result: ParityResult) => void;
 }

@@ -50,10 +50,10 @@ export function fitToCanvas(
   return size;
 }
 
-/** The cells drawn on `canvas`: the compare view's, or the single view's one. */
-export function viewLayout(canvas: HTMLCanvasElement, compare: boolean): Layout {
+/** The cells drawn on `canvas` in `view`: the compare and parity views' four (compareLayout), or one. */
+export function viewLayout(canvas: HTMLCanvasElement, view: string | undefined): Layout {
   const { w, h } = canvasSize(canvas);
-  return compare ? compareLayout(w, h) : SINGLE;
+  return view === 'compare' || view === 'parity' ? compareLayout(w, h) : SINGLE;
 }
 
 /** Width over height of one cell of `layout` on `canvas`. */
@@ -63,29 +63,49 @@ export function cellAspect(canvas: HTMLCanvasElement, { cols, rows }: Layout): n
 }
 
 /**
+ * What the views draw with: three's WebGLRenderer, or an adapter with WebGL's conventions (viewport and scissor
+ * from the bottom left) around WebGPURenderer (`webgpu/gpuCells.ts`) or around one cell of a canvas.
+ */
+export interface CellRenderer {
+  setScissorTest(on: boolean): void;
+  setViewport(x: number, y: number, width: number, height: number): void;
+  setScissor(x: number, y: number, width: number, height: number): void;
+  render(scene: THREE.Object3D, camera: THREE.Camera): void;
+}
+
+/** Cell `i` of `layout` on a `w` × `h` canvas, in pixels from the bottom left (row by row from the top). */
+export function cellRect(
+  { cols, rows }: Layout,
+  w: number,
+  h: number,
+  i: number,
+): { x: number; y: number; width: number; height: number } {
+  const cw = w / cols;
+  const ch = h / rows;
+  const col = i % cols;
+  const row = Math.floor(i / cols);
+  const x = Math.round(col * cw);
+  const y = Math.round(h - (row + 1) * ch);
+  return { x, y, width: Math.round((col + 1) * cw) - x, height: Math.round(h - row * ch) - y };
+}
+
+/**
  * Draws `scene` once per compare column, each in its cell of a `w` × `h` canvas (row by row from the top),
  * after `setUp(column, i)` has set that column's shading. The scissor test is left on: the caller turns it off.
  */
 export function drawCells(
-  renderer: THREE.WebGLRenderer,
+  renderer: CellRenderer,
   scene: THREE.Scene,
   camera: THREE.Camera,
-  { cols, rows }: Layout,
+  layout: Layout,
   w: number,
   h: number,
   setUp: (column: CompareColumn, i: number) => void,
 ): void {
   renderer.setScissorTest(true);
-  const cw = w / cols;
-  const ch = h / rows;
   COMPARE_COLUMNS.forEach((column, i) => {
     setUp(column, i);
-    const col = i % cols;
-    const row = Math.floor(i / cols);
-    const x = Math.round(col * cw);
-    const width = Math.round((col + 1) * cw) - x;
-    const y = Math.round(h - (row + 1) * ch);
-    const height = Math.round(h - row * ch) - y;
+    const { x, y, width, height } = cellRect(layout, w, h, i);
     renderer.setViewport(x, y, width, height);
     renderer.setScissor(x, y, width, height);
     renderer.render(scene, camera);

@@ -9,7 +9,7 @@ import type * as THREE from 'three';
 import type { PlaygroundState, SceneName, Shading } from '../../state/schema';
 import { createScene, type DemoScene } from '../scenes';
 import { applyMaterial, applyOutline } from './applyState';
-import { drawCells, type Layout } from './layout';
+import { type CellRenderer, drawCells, type Layout } from './layout';
 import type { Drawn } from './stats';
 
 export class PickedScene {
@@ -103,15 +103,16 @@ export class PickedScene {
   /**
    * Draws the picked scene: in one view with the panel's shading, or in the compare view's cells with each
    * column's shading and cel bands set on its materials for that cell (and put back after). Adds each part's
-   * draw to `drawn`.
+   * draw to `drawn`. Drawn with `renderer` (WebGPU mode's, a parity cell's), by default the viewer's.
    */
   draw(
     camera: THREE.Camera,
     material: PlaygroundState['material'],
     { layout, w, h }: { layout: Layout; w: number; h: number },
     drawn: Drawn[],
+    renderer: CellRenderer = this.renderer,
   ): void {
-    const { renderer, scene } = this;
+    const { scene } = this;
     const picked = this.demo?.scene;
     const parts = picked?.parts ?? [];
     if (picked?.animating) this.requestRender();

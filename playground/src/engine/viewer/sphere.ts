@@ -15,7 +15,7 @@ import type * as THREE from 'three';
 import type { PlaygroundState, Shading, SphereBase } from '../../state/schema';
 import { createOutlineMesh, createSphere, type Outline, sphereKey } from '../meshes';
 import { applyLighting, applyMaterial, applyOutline, columnOptions } from './applyState';
-import { COMPARE_COLUMNS, drawCells, type Layout } from './layout';
+import { type CellRenderer, COMPARE_COLUMNS, drawCells, type Layout } from './layout';
 import type { LectureSphereObjects } from './sceneRoot';
 import type { Drawn } from './stats';
 
@@ -122,7 +122,7 @@ export class LectureSphere {
    * its cell (only that one shown); adds each draw to `drawn`.
    */
   draw(
-    renderer: THREE.WebGLRenderer,
+    renderer: CellRenderer,
     scene: THREE.Scene,
     camera: THREE.Camera,
     state: PlaygroundState,

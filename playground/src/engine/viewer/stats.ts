@@ -5,14 +5,20 @@
 import type { SphereDetail } from '@shadelab/sphere/detail';
 import type * as THREE from 'three';
 import type { DepthMode } from '../../state/schema';
+import type { GpuFrame } from '../webgpu/status';
 
 /** What the stats panel shows. */
 export interface FrameStats {
   frames: number;
   /** CPU time of the last frame (submit + 1×1 readPixels), ms. */
   cpuMs: number;
-  /** GPU time of a recent frame (EXT_disjoint_timer_query_webgl2), ms; null without the extension. */
+  /**
+   * GPU time of a recent frame, ms (WebGL mode: EXT_disjoint_timer_query_webgl2; WebGPU mode: three's timestamp
+   * queries); null without them, and then `gpuNote` says why.
+   */
   gpuMs: number | null;
+  /** Why there is no GPU time (WebGPU mode), e.g. "n/a: the WebGPU adapter has no 'timestamp-query' feature". */
+  gpuNote?: string | null;
   /** Triangles drawn in the frame (every cell of the compare view, outlines included; three's count). */
   triangles: number;
   /** Vertices drawn in the frame, summed like `triangles` over every draw of the sphere and its outline. */
@@ -92,4 +98,53 @@ export class FrameCounter {
       errorPx: extras.errorPx,
     };
   }
+}
+
+/** WebGPU mode's stats: its frames counted, their stats from three's WebGPU counters, its GPU time when it comes. */
+export class WebGPUStats {
+  private last: FrameStats | null = null;
+
+  constructor(
+    private readonly counter: FrameCounter,
+    private readonly onStats?: (stats: FrameStats) => void,
+  ) {}
+
+  /** A frame WebGPU mode drew (null: nothing drawn yet), with what the viewer knows beside it. */
+  frame(frame: GpuFrame | null, extras: Omit<FrameExtras, 'cpuMs' | 'gpuMs' | 'depth'>): void {
+    if (!frame) return;
+    this.counter.count();
+    const info = { render: { triangles: frame.triangles }, programs: { length: frame.programs } };
+    this.last = this.counter.stats(info as unknown as THREE.WebGLInfo, {
+      ...extras,
+      cpuMs: frame.cpuMs,
+      gpuMs: frame.gpuMs.ms,
+      depth: 'standard',
+    });
+    this.last.gpuNote = frame.gpuMs.note;
+    this.onStats?.(this.last);
+  }
+
+  /** A frame's GPU time arrived, ms. */
+  readonly gpuTime = (ms: number): void => {
+    if (this.last) this.onStats?.({ ...this.last, cpuMs: Number.NaN, gpuMs: ms, gpuNote: null });
+  };
+
+  /** WebGPU mode was left: a late GPU time is not reported. */
+  reset(): void {
+    this.last = null;
+  }
+}
+
+/**
+ * three keeps every program a material ever used until the material is disposed; a long session visiting many
+ * variants would grow without bound. Past `cap` programs, `owners` free theirs: the next frame recompiles only
+ * the variants on screen.
+ */
+export function capPrograms(
+  renderer: THREE.WebGLRenderer,
+  cap: number,
+  owners: readonly { freePrograms(): void }[],
+): void {
+  if ((renderer.info.programs?.length ?? 0) <= cap) return;
+  for (const owner of owners) owner.freePrograms();
 }

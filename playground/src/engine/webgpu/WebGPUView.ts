@@ -1,8 +1,11 @@
 /**
- * WebGPU mode's renderer: three's WebGPURenderer on a canvas of its own laid over the viewer's WebGL canvas (which
- * keeps the pointer and keyboard input: the trackball, the camera keys and the gizmo work unchanged), drawing the
- * viewer's scene and camera with the mesh's ShadingMaterial mirrored into a ShadingNodeMaterial. Loaded only by
- * dynamic import (switch.ts), so that WebGL mode never loads three/webgpu.
+ * WebGPU mode's renderer: three's WebGPURenderer drawing the viewer's own scene and camera (every view: the
+ * viewer's draw code runs on it through `gpuCells.ts`, the WebGL-only materials swapped for node materials by
+ * `nodeMirror.ts`). Output `'canvas'`: on a canvas of its own laid over the viewer's WebGL canvas (which keeps the
+ * pointer and keyboard input: the trackball, the camera keys and the gizmo work unchanged). Output `'offscreen'`
+ * (the parity view): into a render target through three's output pass, read back ({@link WebGPUView.read}),
+ * never presented (headless Chromium loses a WebGPU device that presents a canvas). Loaded only by dynamic import
+ * (switch.ts), so that WebGL mode never loads three/webgpu.
  *
  * The WebGPU backend runs when `navigator.gpu` gives an adapter, else the WebGL2 backend (`forceWebGL`). A lost
  * WebGPU device (a canvas presented headless loses it) falls back to the WebGL2 backend on a fresh canvas (a
@@ -10,28 +13,24 @@
  */
 import { ShadingMaterial } from '@shadelab/material';
 import { provokingVertexOf, ShadingNodeMaterial } from '@shadelab/material/webgpu';
-import * as THREE from 'three';
-import { WebGPURenderer } from 'three/webgpu';
-import { drawnAsWebGPU, flatFor, mirrorMaterial } from './scene';
-import type { FallbackReason, GeneratedShader, WebGPUStatus } from './status';
+import type * as THREE from 'three';
+import { RenderTarget, WebGPURenderer } from 'three/webgpu';
+import { GpuCells } from './gpuCells';
+import { NodeMirror } from './nodeMirror';
+import { mirrorMaterial } from './scene';
+import { generatedShader } from './shaderReader';
+import type {
+  FallbackReason,
+  GpuDraw,
+  GpuFrame,
+  GpuHost,
+  GpuOutput,
+  WebGPUEvents,
+  WebGPUStatus,
+} from './status';
+import { timestamps } from './timing';
 
-/** What the view needs of the viewer: its canvas (the overlay's size and place), scene, camera and mesh. */
-export interface GpuHost {
-  readonly canvas: HTMLCanvasElement;
-  readonly scene: THREE.Scene;
-  readonly camera: THREE.Camera;
-  /** The lecture's sphere: drawn with the node material (its siblings, the impostor and a picked scene, hidden). */
-  readonly mesh: THREE.Mesh;
-  requestRender(): void;
-}
-
-/** What WebGPU mode reports to the app. */
-export interface WebGPUEvents {
-  /** The backend that runs (and why), or null when WebGPU mode is left. */
-  onStatus?: (status: WebGPUStatus | null) => void;
-  /** The mesh material's generated shader, after a variant change or a backend change. */
-  onShader?: (shader: GeneratedShader | null) => void;
-}
+export type { GpuHost, WebGPUEvents } from './status';
 
 type Backend = {
   isWebGPUBackend?: boolean;
@@ -43,6 +42,8 @@ export class WebGPUView {
   private renderer: WebGPURenderer | null = null;
   private canvas: HTMLCanvasElement | null = null;
   private readonly material = new ShadingNodeMaterial();
+  private mirror: NodeMirror | null = null;
+  private target: RenderTarget | null = null;
   private ready = false;
   private disposed = false;
   private frames = 0;
@@ -51,6 +52,7 @@ export class WebGPUView {
   constructor(
     private readonly host: GpuHost,
     private readonly events: WebGPUEvents,
+    private readonly output: GpuOutput = 'canvas',
   ) {
     window.addEventListener('unhandledrejection', this.onRejection);
     host.canvas.addEventListener('webglcontextrestored', this.onHostRestored);
@@ -91,9 +93,15 @@ export class WebGPUView {
     canvas.dataset['testid'] = 'viewport-webgpu';
     canvas.setAttribute('aria-hidden', 'true');
     canvas.style.cssText = 'position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none';
-    this.host.canvas.after(canvas);
+    if (this.output === 'canvas') this.host.canvas.after(canvas);
     this.canvas = canvas;
-    const renderer = new WebGPURenderer({ canvas, antialias: false, forceWebGL: reason !== null });
+    const renderer = new WebGPURenderer({
+      canvas,
+      antialias: false,
+      forceWebGL: reason !== null,
+      trackTimestamp: true,
+    });
+    renderer.info.autoReset = false;
     this.renderer = renderer;
     renderer.setPixelRatio(1);
     // A lost WebGPU device: the WebGL2 backend takes over on a new canvas. (A lost WebGL2 context is reported.)
@@ -121,6 +129,7 @@ export class WebGPUView {
     }
     if (this.disposed || this.renderer !== renderer) return;
     this.ready = true;
+    this.mirror = new NodeMirror(provokingVertexOf(renderer));
     const webgpu = (renderer.backend as Backend).isWebGPUBackend === true;
     // three ignores a loss with reason 'destroyed' (its own dispose), but a dropped instance (the GPU process
     // gone) says 'destroyed' too; only this view's close() destroys the device on purpose.
@@ -137,7 +146,7 @@ export class WebGPUView {
     const source = this.host.mesh.material;
     if (source instanceof ShadingMaterial) mirrorMaterial(source, this.material);
     this.shaderKey = this.variantKey();
-    await this.readShader(renderer);
+    if (this.output === 'canvas') await this.readShader(renderer);
     if (!this.disposed && this.renderer === renderer) this.host.requestRender();
   }
 
@@ -168,29 +177,78 @@ export class WebGPUView {
     if (!this.disposed) this.events.onStatus?.(status);
   }
 
-  /** Draws the viewer's scene; false when no backend is ready yet (nothing drawn). */
-  render(): boolean {
-    const { renderer, canvas } = this;
-    if (!renderer || !canvas || !this.ready || this.disposed) return false;
-    const { host } = this;
-    const w = Math.max(1, host.canvas.clientWidth || host.canvas.width);
-    const h = Math.max(1, host.canvas.clientHeight || host.canvas.height);
+  /**
+   * Draws a frame with `draw` (the viewer's views, on a `w` × `h` target: the canvas's size, or `size` offscreen);
+   * null when no backend is ready yet (nothing drawn), else what the frame drew and cost.
+   */
+  render(draw: GpuDraw, size?: { w: number; h: number }): GpuFrame | null {
+    const { renderer, canvas, mirror, host } = this;
+    if (!renderer || !canvas || !mirror || !this.ready || this.disposed) return null;
+    const t0 = performance.now();
+    const w = size?.w ?? Math.max(1, host.canvas.clientWidth || host.canvas.width);
+    const h = size?.h ?? Math.max(1, host.canvas.clientHeight || host.canvas.height);
     if (canvas.width !== w || canvas.height !== h) renderer.setSize(w, h, false);
-    const source = host.mesh.material;
-    if (source instanceof ShadingMaterial) mirrorMaterial(source, this.material);
-    drawnAsWebGPU(host, this.material, provokingVertexOf(renderer), () =>
-      renderer.render(host.scene, host.camera),
-    );
+    if (this.output === 'offscreen') {
+      if (!this.target || this.target.width !== w || this.target.height !== h) {
+        this.target?.dispose();
+        // No depth buffer: the frame is drawn in three's frame-buffer target (with its own), and only its output
+        // pass (a quad) comes here. (With one, clear() recurses in three 0.187: the output pass clears its depth.)
+        this.target = new RenderTarget(w, h, { depthBuffer: false });
+      }
+      // The canvas path (three's output pass: sRGB, as on screen) into the target.
+      renderer.setOutputRenderTarget(this.target);
+    }
+    renderer.setRenderTarget(null);
+    renderer.info.reset();
+    const camera = host.camera as THREE.PerspectiveCamera & { _reversedDepth?: boolean };
+    const saved = { coordinateSystem: camera.coordinateSystem, reversedDepth: camera._reversedDepth };
+    // The standard depth buffer: a projection the viewer's WebGLRenderer reversed is made standard again.
+    if (saved.reversedDepth) {
+      camera._reversedDepth = false;
+      camera.updateProjectionMatrix?.();
+    }
+    try {
+      draw(new GpuCells(renderer, h, mirror), w, h);
+    } finally {
+      renderer.setScissorTest(false);
+      renderer.setViewport(0, 0, w, h);
+      if (this.output === 'offscreen') renderer.setOutputRenderTarget(null);
+      camera.coordinateSystem = saved.coordinateSystem;
+      camera._reversedDepth = saved.reversedDepth;
+      camera.updateProjectionMatrix?.();
+    }
     // The WebGL canvas stays below for the input; it shows again when WebGPU mode is left.
-    host.canvas.style.opacity = '0';
+    if (this.output === 'canvas') host.canvas.style.opacity = '0';
     this.frames += 1;
     canvas.dataset['frames'] = String(this.frames);
     const key = this.variantKey();
-    if (key !== this.shaderKey) {
+    if (this.output === 'canvas' && key !== this.shaderKey) {
       this.shaderKey = key;
       void this.readShader(renderer);
     }
-    return true;
+    const { render, memory } = renderer.info;
+    return {
+      cpuMs: performance.now() - t0,
+      gpuMs: timestamps(renderer, (ms) => this.events.onGpuTime?.(ms)),
+      triangles: render.triangles,
+      programs: memory.programs,
+    };
+  }
+
+  /** The last offscreen frame's pixels (RGBA8 sRGB, rows bottom-up as gl.readPixels gives them); null if none. */
+  async read(): Promise<{ pixels: Uint8Array; w: number; h: number } | null> {
+    const { renderer, target } = this;
+    if (!renderer || !target || !this.ready) return null;
+    const { width: w, height: h } = target;
+    const data = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, w, h)) as Uint8Array;
+    if (this.renderer !== renderer) return null;
+    const pixels = new Uint8Array(data);
+    // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL).
+    if ((renderer.backend as Backend).isWebGPUBackend) {
+      const row = 4 * w;
+      for (let y = 0; y < h; y++) pixels.set(data.subarray((h - 1 - y) * row, (h - y) * row), y * row);
+    }
+    return { pixels, w, h };
   }
 
   /** What the generated shader depends on: the compiled variant and the geometry. */
@@ -201,34 +259,8 @@ export class WebGPUView {
 
   /** The node material's generated code as the running backend compiled it (a scene of the mesh alone). */
   private async readShader(renderer: WebGPURenderer) {
-    const { mesh } = this.host;
-    const probe = new THREE.Mesh(flatFor(mesh.geometry, provokingVertexOf(renderer)), this.material);
-    probe.matrixWorld.copy(mesh.matrixWorld);
-    probe.matrixAutoUpdate = false;
-    probe.matrixWorldAutoUpdate = false;
-    const scene = new THREE.Scene();
-    scene.add(probe);
-    const camera = this.host.camera;
-    const saved = camera.coordinateSystem;
-    const language = (renderer.backend as Backend).isWebGPUBackend === true ? 'WGSL' : 'GLSL';
-    try {
-      const { vertexShader, fragmentShader } = await renderer.debug.getShaderAsync(scene, camera, probe);
-      if (this.renderer !== renderer || this.disposed) return;
-      this.events.onShader?.({
-        language,
-        vertexShader: vertexShader ?? '',
-        fragmentShader: fragmentShader ?? '',
-      });
-    } catch (error) {
-      if (this.renderer === renderer && !this.disposed) {
-        const text = `// The generated shader could not be read: ${error instanceof Error ? error.message : error}`;
-        this.events.onShader?.({ language, vertexShader: text, fragmentShader: text });
-      }
-    } finally {
-      camera.coordinateSystem = saved;
-      (camera as THREE.PerspectiveCamera).updateProjectionMatrix?.();
-      scene.remove(probe);
-    }
+    const shader = await generatedShader(renderer, this.host, this.material);
+    if (this.renderer === renderer && !this.disposed) this.events.onShader?.(shader);
   }
 
   /** Drops the renderer and its canvas (the WebGL canvas shows again). */
@@ -239,6 +271,10 @@ export class WebGPUView {
     this.canvas = null;
     // dispose() is async (it awaits init(): a failed init rejects it) and a lost device may refuse to free what
     // it no longer has: nothing to report either way.
+    this.mirror?.dispose();
+    this.mirror = null;
+    this.target?.dispose();
+    this.target = null;
     renderer?.dispose().catch(() => {});
     canvas?.remove();
     this.host.canvas.style.opacity = '';

@@ -1,6 +1,7 @@
 /**
- * How WebGPU mode draws the viewer's scene: the mesh with the node material mirroring the panel's material, what
- * only WebGL materials draw hidden for the frame, the camera's conventions put back after.
+ * What WebGPU mode copies from WebGL mode's objects: a ShadingMaterial's options onto its ShadingNodeMaterial, an
+ * impostor's onto its SphereImpostorNodeMaterial, and a flatShadingGeometry remade for the backend's provoking
+ * vertex.
  */
 import {
   FLAT_PROVOKING_VERTEX,
@@ -8,18 +9,54 @@ import {
   type ProvokingVertex,
   type ShadingMaterial,
 } from '@shadelab/material';
-import type { ShadingNodeMaterial } from '@shadelab/material/webgpu';
-import * as THREE from 'three';
-import type { GpuHost } from './WebGPUView';
+import type { SphereImpostorMaterial } from '@shadelab/material/impostor';
+import type { ShadingNodeMaterial, SphereImpostorNodeMaterial } from '@shadelab/material/webgpu';
+import type * as THREE from 'three';
 
-/** The panel's options, as the viewer set them on the WebGL material (setters recompile only on a change). */
+/** The surface properties (textures and three's Material flags) whose change rebuilds the node graph. */
+const REBUILT = [
+  'map',
+  'alphaMap',
+  'emissiveMap',
+  'normalMap',
+  'vertexColors',
+  'transparent',
+  'side',
+] as const;
+/** Plain properties copied as they are. */
+const COPIED = ['fog', 'depthTest', 'depthWrite', 'blending', 'visible', 'opacity', 'alphaTest'] as const;
+
+/**
+ * The panel's options and the surface, as the viewer (or a scene) set them on the WebGL material (setters
+ * recompile only on a change).
+ */
 export function mirrorMaterial(source: ShadingMaterial, m: ShadingNodeMaterial): void {
+  mirrorLighting(source, m);
   m.shading = source.shading;
+  const s = source as unknown as Record<string, unknown>;
+  const t = m as unknown as Record<string, unknown>;
+  let rebuild = false;
+  for (const key of REBUILT) {
+    if (t[key] === s[key]) continue;
+    t[key] = s[key];
+    rebuild = true;
+  }
+  for (const key of COPIED) if (t[key] !== s[key]) t[key] = s[key];
+  if (!m.emissive.equals(source.emissive)) m.emissive = source.emissive;
+  m.normalScale.copy(source.normalScale);
+  if (rebuild) m.needsUpdate = true;
+}
+
+/** The options a ShadingMaterial and an impostor's material have in common (all but shading and the surface). */
+export function mirrorLighting(
+  source: ShadingMaterial | SphereImpostorMaterial,
+  m: ShadingNodeMaterial | SphereImpostorNodeMaterial,
+): void {
   m.lighting = source.lighting;
   m.celBands = source.celBands;
-  m.ka = source.ka;
-  m.kd = source.kd;
-  m.ks = source.ks;
+  if (!m.ka.equals(source.ka)) m.ka = source.ka;
+  if (!m.kd.equals(source.kd)) m.kd = source.kd;
+  if (!m.ks.equals(source.ks)) m.ks = source.ks;
   m.shininess = source.shininess;
   const lights = source.phongLights;
   if (lights.length !== m.phongLights.length || lights.some((l, i) => l !== m.phongLights[i])) {
@@ -48,53 +85,3 @@ export function flatFor(
   }
   return remade;
 }
-
-/**
- * Runs `draw` with the scene as WebGPU mode draws it: the mesh visible with the node material, what WebGL
- * materials draw beside it hidden (the mesh's outline, its siblings: the impostor, a picked scene), no fog,
- * a black background; the camera's projection conventions put back after (WebGPU's depth range differs).
- */
-export function drawnAsWebGPU(
-  host: GpuHost,
-  material: ShadingNodeMaterial,
-  provokingVertex: ProvokingVertex,
-  draw: () => void,
-): void {
-  const { scene, camera, mesh } = host;
-  const hidden = [...(mesh.parent?.children ?? []), ...mesh.children].filter((o) => o !== mesh && o.visible);
-  const saved = {
-    geometry: mesh.geometry,
-    material: mesh.material,
-    visible: mesh.visible,
-    fog: scene.fog,
-    background: scene.background,
-    coordinateSystem: camera.coordinateSystem,
-    reversedDepth: (camera as { _reversedDepth?: boolean })._reversedDepth,
-  };
-  for (const o of hidden) o.visible = false;
-  mesh.geometry = flatFor(mesh.geometry, provokingVertex);
-  mesh.material = material;
-  mesh.visible = true;
-  scene.fog = null;
-  scene.background = BLACK;
-  // The standard depth buffer: a projection the viewer's WebGLRenderer reversed is made standard again.
-  if (saved.reversedDepth) {
-    (camera as { _reversedDepth?: boolean })._reversedDepth = false;
-    (camera as THREE.PerspectiveCamera).updateProjectionMatrix?.();
-  }
-  try {
-    draw();
-  } finally {
-    for (const o of hidden) o.visible = true;
-    mesh.geometry = saved.geometry;
-    mesh.material = saved.material;
-    mesh.visible = saved.visible;
-    scene.fog = saved.fog;
-    scene.background = saved.background;
-    camera.coordinateSystem = saved.coordinateSystem;
-    (camera as { _reversedDepth?: boolean })._reversedDepth = saved.reversedDepth;
-    (camera as THREE.PerspectiveCamera).updateProjectionMatrix?.();
-  }
-}
-
-const BLACK = /* @__PURE__ */ new THREE.Color(0x000000);
