@@ -10,11 +10,15 @@
 // read-back. Scene: the material bench's level-6 sphere (analytic normals; flat: ShadingMaterial's
 // flatShadingGeometry, ShadingNodeMaterial's exact per-face path on the triangle soup) and one PhongLight.
 // Target (issue 23): after ≤ 1.02× before, every shading on both renderers.
+// On WebGPURenderer the checkout's ShadingNodeMaterial is also timed with three's own observer ('static-bindings',
+// the page's experimentalMaterial): what refreshing its bindings on every frame (its observer's hasNode, which
+// the build before did not have) costs here.
 //
 //   node bench/lecture-refactor.bench.mjs [--json PATH] [--frames 120] [--rounds 12] [--width 1280 --height 720]
-//                                         [--backends webgl,webgpu,webgl2] [--quick]
+//                                         [--backends webgl,webgpu,webgl2] [--no-experiment] [--quick]
 //
-// --quick: 6 frames in 2 rounds (a smoke check, not a measurement).
+// --quick: 6 frames in 2 rounds (a smoke check, not a measurement). --no-experiment: without the static-bindings
+// rows.
 import { arg, writeResults } from './lib/bench.mjs';
 import { bundleMaterialAt } from './lib/materialAt.mjs';
 import { openWebgpuBench, Timings } from './lib/webgpuPage.mjs';
@@ -31,6 +35,8 @@ const backends = /** @type {import('./harness/webgpu-bench').Backend[]} */ (
   arg('--backends', 'webgl,webgpu,webgl2').split(',')
 );
 const SHADINGS = /** @type {const} */ (['flat', 'gouraud', 'phong']);
+const experiment = !process.argv.includes('--no-experiment');
+const STATIC = 'after, static bindings';
 
 /** @type {Record<string, { label: string, material: string }>} */
 const RENDERERS = {
@@ -64,6 +70,12 @@ try {
         { backend, material: 'shadelab', shading, build: 'before' },
       ]);
       specs.push([row(backend, shading, 'after'), { backend, material: 'shadelab', shading }]);
+      if (experiment && backend !== 'webgl') {
+        specs.push([
+          row(backend, shading, STATIC),
+          { backend, material: 'shadelab', shading, experiment: 'static-bindings' },
+        ]);
+      }
     }
   }
   await timings.time(page, specs, { frames, rounds });
@@ -81,6 +93,19 @@ try {
         before: timings.rows[row(backend, shading, 'before')],
         after: timings.rows[row(backend, shading, 'after')],
         afterVsBefore: r,
+        ...(experiment && backend !== 'webgl'
+          ? {
+              staticBindings: timings.rows[row(backend, shading, STATIC)],
+              staticBindingsVsBefore: timings.ratio(
+                row(backend, shading, STATIC),
+                row(backend, shading, 'before'),
+              ),
+              afterVsStaticBindings: timings.ratio(
+                row(backend, shading, 'after'),
+                row(backend, shading, STATIC),
+              ),
+            }
+          : {}),
       };
       targets[`${backend}: ${shading}`] = {
         ratio: r,
@@ -95,6 +120,9 @@ try {
       "the material bench's lecture scene: the level-6 tetrahedron sphere (16,384 triangles, radius 2, no normal attribute: the analytic sphere normal), perspective camera 90° at z = 3, one PhongLight at (−5, 10, 20) (Ia 0.2, Id 1, Is 0.8), the default ka = kd = (0.6, 0.35, 0.2), ks = 0.5, α = 32, phong lighting. Flat: ShadingMaterial draws each build's flatShadingGeometry, ShadingNodeMaterial the triangle soup (its exact per-face path). Each frame drawn offscreen into a linear RGBA8 render target, then a 1×1 read-back (WebGPU: readRenderTargetPixelsAsync; WebGL2 backend and WebGLRenderer: readPixels)",
     before: { rev: BEFORE, commit: before.commit, exports: exported.length },
     after: 'this checkout (meta.commit; meta.dirty: with uncommitted changes)',
+    staticBindings: experiment
+      ? "on WebGPURenderer, the checkout's ShadingNodeMaterial with three's own observer (without hasNode: its bindings not refreshed on every frame), timed in the same cycles: what the per-frame refresh costs here"
+      : null,
     gpuTimer: {
       webgl: info.webgl.timer ? 'EXT_disjoint_timer_query_webgl2' : 'not available',
       webgpu: info.webgpu.timestamps ? "three's trackTimestamp (timestamp-query)" : 'not available',
@@ -115,8 +143,9 @@ try {
     const s = /** @type {any} */ (perBackend[backend]).shadings[shading];
     const ms = (/** @type {any} */ r) => (r && !r.error ? r.frameMs.median.toFixed(2) : `error: ${r?.error}`);
     const r = t.ratio;
+    const x = s.afterVsStaticBindings;
     console.log(
-      `| ${RENDERERS[backend].label}: ${shading} | ${ms(s.before)} | ${ms(s.after)} | ${r ? `${r.paired.toFixed(3)} (${r.median.toFixed(3)})` : 'n/a'} | ${r?.gpu?.toFixed(3) ?? 'n/a'} | ${t.target}: ${t.met === null ? 'n/a' : t.met ? 'met' : 'NOT MET'} |`,
+      `| ${RENDERERS[backend].label}: ${shading} | ${ms(s.before)} | ${ms(s.after)} | ${r ? `${r.paired.toFixed(3)} (${r.median.toFixed(3)})` : 'n/a'} | ${r?.gpu?.toFixed(3) ?? 'n/a'} | ${t.target}: ${t.met === null ? 'n/a' : t.met ? 'met' : 'NOT MET'} |${x ? ` after / static bindings ${x.paired.toFixed(3)} (GPU ${x.gpu?.toFixed(3)})` : ''}`,
     );
   }
 } finally {
