@@ -14,7 +14,7 @@
 // trackTimestamp (WebGPU 'timestamp-query'; EXT_disjoint_timer_query_webgl2 on the WebGL2 backend) and the same
 // extension under WebGLRenderer, when the browser has them.
 import { flatShadingGeometry, PhongLight, ShadingMaterial } from '@shadelab/material';
-import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
+import { provokingVertexOf, ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import * as THREE from 'three';
 import {
@@ -67,6 +67,11 @@ export interface BenchSpec {
    * (realistic scene only): MeshLambertNodeMaterial or MeshLambertMaterial.
    */
   material: 'shadelab' | 'three-phong' | 'three-lambert';
+  /**
+   * Flat shading in the realistic scene: the indexed sphere as it is (default), or its flatShadingGeometry made
+   * for the backend's provoking vertex.
+   */
+  flatGeometry?: 'indexed' | 'prepared';
   /**
    * 'shadelab' in the lecture's scene: the name of a build of @shadelab/material given to loadModule (an older
    * commit's) whose ShadingMaterial / ShadingNodeMaterial and PhongLight draw it; default: this checkout's.
@@ -318,7 +323,7 @@ function sphere(normals: boolean, indexed: boolean): BufferGeometry {
   }
   return g;
 }
-/** flatShadingGeometry of the lecture's sphere, per build of @shadelab/material ('' = this checkout's). */
+/** flatShadingGeometry of the lecture's sphere per build of @shadelab/material ('' = this checkout's), and of the realistic scene's sphere per provoking vertex ('realistic/first', 'realistic/last'). */
 const flatPrepared = new Map<string, BufferGeometry>();
 
 /**
@@ -465,7 +470,20 @@ function realisticOf(spec: BenchSpec): Built {
   } else {
     material = node ? new MeshLambertNodeMaterial({ color: grey }) : new MeshLambertMaterial({ color: grey });
   }
-  const { scene, camera, mesh } = buildRealisticScene(material, realisticGeometries.indexed, width / height);
+  let geometry: BufferGeometry = realisticGeometries.indexed;
+  if (spec.material === 'shadelab' && spec.shading === 'flat' && spec.flatGeometry === 'prepared') {
+    const provokingVertex = node
+      ? provokingVertexOf(gpu[spec.backend as 'webgpu' | 'webgl2']?.renderer ?? {})
+      : 'last';
+    const key = `realistic/${provokingVertex}`;
+    let prepared = flatPrepared.get(key);
+    if (prepared === undefined) {
+      prepared = flatShadingGeometry(realisticGeometries.indexed, { provokingVertex });
+      flatPrepared.set(key, prepared);
+    }
+    geometry = prepared;
+  }
+  const { scene, camera, mesh } = buildRealisticScene(material, geometry, width / height);
   return { scene, camera, mesh };
 }
 
