@@ -17,14 +17,16 @@
 //
 //   node bench/webgpu.bench.mjs [--json PATH] [--frames 80] [--rounds 8] [--width 1280 --height 720]
 //                               [--realistic-frames 30] [--realistic-rounds 6] [--only lecture,realistic]
-//                               [--quick] [--experiments NAME,...] [--ab] [--backends webgpu,webgl2,webgl]
+//                               [--quick] [--experiments NAME,...] [--realistic-experiments NAME,...] [--ab]
+//                               [--backends webgpu,webgl2,webgl]
 //
 // --quick: 6 frames in 2 rounds, the realistic scene 2 in 1 (a smoke check, not a measurement). --only: the
 // scenes to time (the results file then holds only those). --experiments: also time the named A/B variants of
-// the lighting (the page's experimentalMaterial) on both backends; --ab: only phong × phong and three's phong
-// material (with the experiments), in the realistic scene only phong, MeshPhongNodeMaterial and the experiments,
-// for a quicker A/B run. --backends also limits the realistic scene (drawn on
-// WebGPURenderer's backends only).
+// the lighting (the page's experimentalMaterial) on both backends in the lecture's scene; --realistic-experiments:
+// the same for phong shading in the realistic scene (each against phong shading as it is: vsBaseline). --ab: only
+// phong × phong and three's phong material, in the realistic scene only phong, MeshPhongNodeMaterial (each with
+// the experiments), for a quicker A/B run. --backends also limits the realistic scene (drawn on WebGPURenderer's
+// backends only).
 import { arg, writeResults } from './lib/bench.mjs';
 import { openWebgpuBench, Timings } from './lib/webgpuPage.mjs';
 
@@ -37,11 +39,14 @@ const width = Number(arg('--width', '1280'));
 const height = Number(arg('--height', '720'));
 const onlyBackends = arg('--backends', 'webgpu,webgl2,webgl').split(',');
 const only = arg('--only', 'lecture,realistic').split(',');
-const experiments = /** @type {import('./harness/webgpu-bench').Experiment[]} */ (
-  arg('--experiments', '')
-    .split(',')
-    .filter((e) => e !== '')
-);
+const experimentList = (/** @type {string} */ flag) =>
+  /** @type {import('./harness/webgpu-bench').Experiment[]} */ (
+    arg(flag, '')
+      .split(',')
+      .filter((e) => e !== '')
+  );
+const experiments = experimentList('--experiments');
+const realisticExperiments = experimentList('--realistic-experiments');
 
 /** @typedef {import('./harness/webgpu-bench').BenchSpec} BenchSpec */
 /** @typedef {import('./harness/webgpu-bench').Backend} Backend */
@@ -267,7 +272,7 @@ async function realistic() {
   /** @type {Array<[string, Omit<BenchSpec, 'backend'>]>} */
   const timed = [
     ...REALISTIC.filter(([name]) => !ab || name.endsWith('phong') || name === 'MeshPhongNodeMaterial'),
-    ...experiments.map(
+    ...realisticExperiments.map(
       (name) =>
         /** @type {[string, Omit<BenchSpec, 'backend'>]} */ ([
           `ShadingNodeMaterial phong, experiment ${name}`,
