@@ -117,7 +117,7 @@ uniform vec3 shadingKa, shadingKd, shadingKs;
 ${shadowLightMacros}
 // One of three's direct lights of colour c (× its falloff, and three's 1/π folded into shadingKa/Kd/Ks).
 vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
-  vec3 kdId = c * shadingKd * shadingTint;
+  vec3 kdId = c * ( shadingKd * shadingTint ); // kd × tint once for every light
   vec3 ksIs = c * shadingKs;
 ${lightFactors}${lightReturn}}
 // three's getDistanceAttenuation at distance t (t2 = t²), compiled for what the scene's lights use: the cut-off

@@ -140,16 +140,32 @@ vec3 shadingRescale( vec3 v ) {
   float m = max( max( abs( v.x ), abs( v.y ) ), abs( v.z ) );
   return m > 0.0 ? v / m : vec3( 0.0 );
 }
-mat3 shadingCofactor( mat3 a ) {
+// cof(A / s) (its columns: the crosses of A's columns / s) with s = max|A|, and whether det A < 0.
+mat3 shadingScaledCofactor( mat3 a, out float s, out bool mirrored ) {
   vec3 e = max( max( abs( a[ 0 ] ), abs( a[ 1 ] ) ), abs( a[ 2 ] ) );
-  float s = max( max( e.x, e.y ), e.z );
+  s = max( max( e.x, e.y ), e.z );
   vec3 a0 = a[ 0 ] / s;
   vec3 a1 = a[ 1 ] / s;
   vec3 a2 = a[ 2 ] / s;
   mat3 c = mat3( cross( a1, a2 ), cross( a2, a0 ), cross( a0, a1 ) );
-  // Selects, not branches (per vertex): a zero or non-finite scale gives the zero matrix.
-  c = dot( a0, c[ 0 ] ) < 0.0 ? - c : c;
+  mirrored = dot( a0, c[ 0 ] ) < 0.0;
+  return c;
+}
+// sign(det A)·cof(A / max|A|); the zero matrix for a zero or non-finite A (selects, not branches).
+mat3 shadingCofactor( mat3 a ) {
+  float s;
+  bool mirrored;
+  mat3 c = shadingScaledCofactor( a, s, mirrored );
+  c = mirrored ? - c : c;
   return s > 0.0 ? c : mat3( 0.0 );
+}
+// shadingCofactor( a ) · n, the sign and the zero case applied to the vector (per vertex: cheaper, the same bits).
+vec3 shadingCofactorTimes( mat3 a, vec3 n ) {
+  float s;
+  bool mirrored;
+  vec3 m = shadingScaledCofactor( a, s, mirrored ) * n;
+  m = mirrored ? - m : m;
+  return s > 0.0 ? m : vec3( 0.0 );
 }
 #endif
 `;
@@ -176,8 +192,8 @@ export const projectVertex = /* glsl */ `
 `;
 
 /**
- * Vertex stage: the instance (or batch) matrix and its normal matrix (`shadingInstance`,
- * `shadingInstanceNormal`), and the tint: instance colour × vertex colour (`tint`).
+ * Vertex stage: the instance (or batch) matrix (`shadingInstance`, whose normals `shadingCofactorTimes` turns),
+ * and the tint: instance colour × vertex colour (`tint`).
  */
 export const instanceVertex = /* glsl */ `
 #ifdef SHADING_INSTANCE
@@ -188,7 +204,6 @@ export const instanceVertex = /* glsl */ `
 #ifdef USE_INSTANCING
   shadingInstance = instanceMatrix;
 #endif
-  mat3 shadingInstanceNormal = shadingCofactor( mat3( shadingInstance ) );
 #endif
 #ifdef SHADING_TINT
   vec3 tint = vec3( 1.0 );
@@ -384,7 +399,7 @@ ${flatDeformVertex}
   float m = max(max(abs(faceNormal.x), abs(faceNormal.y)), abs(faceNormal.z));
   faceNormal = m > 0.0 ? faceNormal / m : vec3(0.0); // rescaled so it neither overflows nor underflows
 #ifdef SHADING_INSTANCE
-  faceNormal = shadingRescale( shadingInstanceNormal * faceNormal );
+  faceNormal = shadingRescale( shadingCofactorTimes( mat3( shadingInstance ), faceNormal ) );
 #endif
 `;
 
@@ -409,7 +424,7 @@ export const worldVertex = /* glsl */ `
 #ifdef SHADING_INSTANCE
   shadingLocal = shadingInstance * shadingLocal;
 #ifndef FLAT_DERIVATIVES
-  objectNormal = shadingRescale( shadingInstanceNormal * objectNormal );
+  objectNormal = shadingRescale( shadingCofactorTimes( mat3( shadingInstance ), objectNormal ) );
 #endif
 #endif
   vec3 worldPosition = ( modelMatrix * shadingLocal ).xyz;
