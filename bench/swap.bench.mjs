@@ -13,6 +13,7 @@
 //
 // - the by-hand material also with the lecture's Phong lighting (reflection vector) in place of the Blinn-Phong
 //   the swap carries over, which tells what the half vector costs (`--by-hand-lighting ''` leaves it out).
+// Ratios carry the quartiles of the same-cycle ratios besides their median (how much one cycle strays).
 //
 //   node bench/swap.bench.mjs [--json PATH] [--frames 30] [--rounds 10] [--by-hand phong[,gouraud,flat]]
 //                             [--by-hand-lighting phong]
@@ -113,8 +114,17 @@ function ratio(rows, a, b) {
   const fa = framesOf.get(a) ?? [];
   const fb = framesOf.get(b) ?? [];
   const pairs = fa.slice(0, Math.min(fa.length, fb.length)).map((t, i) => t / fb[i]);
+  const sorted = [...pairs].sort((x, y) => x - y);
+  /** The q-quantile of the same-cycle ratios, interpolated. @param {number} q */
+  const quantile = (q) => {
+    const at = q * (sorted.length - 1);
+    const lo = Math.floor(at);
+    return sorted[lo] + (sorted[Math.min(lo + 1, sorted.length - 1)] - sorted[lo]) * (at - lo);
+  };
   return {
     paired: summarize(pairs).median,
+    /** The quartiles of the same-cycle ratios: how far one cycle's ratio strays under the run's load. */
+    pairedQuartiles: [quantile(0.25), quantile(0.75)],
     median: ra.frameMs.median / rb.frameMs.median,
     min: ra.frameMs.min / rb.frameMs.min,
   };

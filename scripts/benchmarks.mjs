@@ -26,6 +26,7 @@ export const SOURCES = [
   { name: 'tradeoff', writer: 'bench/tradeoff.bench.mjs', command: 'npm run bench -- tradeoff' },
   { name: 'material', writer: 'bench/material.bench.mjs', command: 'npm run bench -- material' },
   { name: 'scene', writer: 'bench/scene.bench.mjs', command: 'npm run bench -- scene' },
+  { name: 'swap', writer: 'bench/swap.bench.mjs', command: 'npm run bench -- swap' },
   { name: 'webgpu', writer: 'bench/webgpu.bench.mjs', command: 'npm run bench -- webgpu' },
   { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
   { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
@@ -686,6 +687,123 @@ function sceneFlat(r) {
   ];
 }
 
+const SWAP_TITLE = 'Swapped materials in a realistic scene';
+
+/** A ratio to 3 decimals, the ratio of the medians in brackets. @param {any} x */
+const ratio3 = (x) => (!x ? '—' : `${x.paired.toFixed(3)} (${x.median.toFixed(3)})`);
+/** A luma ratio to 4 decimals. @param {number | null | undefined} x */
+const luma4 = (x) => (typeof x === 'number' ? x.toFixed(4) : '—');
+
+/**
+ * Issue 22: the realistic scene with MeshPhongMaterial against the same scene after swapMaterials, frame time and
+ * mean luma, and a ShadingMaterial built by hand with the options the swap carried over. @param {any} r
+ * @returns {string[]}
+ */
+function swap(r) {
+  const names = Object.keys(r.rows);
+  const t = r.targets;
+  const d = r.diffuseOnly;
+  const dRatio = d?.swappedVsMeshPhong;
+  const swapped = r.materials?.['swapped phong'];
+  const o = swapped?.options;
+  /** @param {number[]} c */
+  const rgb = (c) => (c[0] === c[1] && c[1] === c[2] ? String(c[0]) : `(${c.join(', ')})`);
+  const carried = o
+    ? `The swap made ${swapped.swap?.materials ?? '?'} material (${swapped.swap?.skipped.length ? `skipped: ${swapped.swap.skipped.join('; ')}` : 'nothing skipped'}) and carried over: lighting \`${o.lighting}\`, ka = ${rgb(o.ka)}, kd = ${rgb(o.kd)}, ks = ${rgb(o.ks)}, shininess ${o.shininess}${o.celBands ? `, ${o.celBands} cel bands` : ''}.`
+    : '';
+  const diff = r.swappedVsByHandProgram;
+  // Where the swap costs more than MeshPhongMaterial: whether the swap adds anything to the material built by hand,
+  // and what the lighting it carries over costs against the lecture's Phong lighting.
+  const phongLit = r.ratiosVsByHand?.['ShadingMaterial phong (by hand, lighting phong)'];
+  const costCause =
+    t.cost.met === false && diff?.length === 0 && phongLit && o
+      ? `Cost: the swap adds nothing to the material (swapped / by hand ${ratio3(r.ratiosVsByHand['swapped phong'])}, one program); the same material with the lecture's Phong lighting (reflection vector) in place of the \`${o.lighting}\` the swap carries over costs ${ratio3(phongLit)} × it and ${ratio3(r.ratiosVsMeshPhong['ShadingMaterial phong (by hand, lighting phong)'])} × MeshPhongMaterial: what puts the swap above MeshPhongMaterial is the Blinn-Phong half vector (h = l + v normalised: an add, two dots, an inversesqrt and a select per light and fragment, where Phong's r·v = 2(l·n)(v·n) − v·l takes one dot per light, v·n being the same for every light), which the swap takes to match MeshPhongMaterial's highlight.`
+      : '';
+  const program = !diff
+    ? ''
+    : diff.length === 0
+      ? 'The swapped material compiles the same program as the one built by hand (identical program cache keys).'
+      : `The swapped material's program differs from the one built by hand in ${diff.length} parameter${diff.length === 1 ? '' : 's'}: ${diff.map((/** @type {any} */ x) => `#${x.index} \`${x.swapped}\` (by hand \`${x.byHand}\`)`).join(', ')}.`;
+  return [
+    `## ${SWAP_TITLE}`,
+    '',
+    fromLine('swap', r),
+    '',
+    `Issue 22: the scene as an app has it, with \`${r.source}\`, against the same scene after ${r.swap}, and against ${r.byHand}, all in one run. Scene: ${r.scene}. ${r.frames} frames per variant in ${r.rounds} rounds, the variants interleaved frame by frame (each cycle renders one frame of every variant), a 1×1 \`readPixels\` after each; ratios are the median of the ratios of frames from the same cycle, and the ratio of the medians in brackets. Frame ms: median (minimum)${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}. Luma: ${r.luma}. ${r.note ?? ''}`.trim(),
+    '',
+    ...table(
+      [
+        'variant',
+        'frame ms',
+        'GPU ms',
+        '/ MeshPhongMaterial',
+        '/ by hand',
+        'mean luma, frame',
+        'mean luma, covered',
+        'luma / MeshPhongMaterial (frame, covered)',
+        'max channel Δ',
+        'RMS luma Δ',
+      ],
+      'lrrrrrrlrr',
+      names.map((name) => {
+        const row = r.rows[name];
+        const l = r.luminance[name];
+        const lr = r.luminanceVsMeshPhong[name];
+        return [
+          name,
+          frameCell(row),
+          row.gpuMs ? row.gpuMs.median.toFixed(1) : 'n/a',
+          ratio3(r.ratiosVsMeshPhong[name]),
+          ratio3(r.ratiosVsByHand?.[name]),
+          l && !l.error ? l.frame.toFixed(2) : '—',
+          l && !l.error ? l.covered.toFixed(2) : '—',
+          lr ? `${luma4(lr.frame)}, ${luma4(lr.covered)}` : '—',
+          l && !l.error ? String(l.vsFirst.maxChannel) : '—',
+          l && !l.error ? l.vsFirst.rmsLuma.toFixed(2) : '—',
+        ];
+      }),
+    ),
+    ...names
+      .filter((name) => r.rows[name].error)
+      .map((name, i) => `${i === 0 ? '\n' : ''}- ${name} does not render: ${r.rows[name].error}`),
+    '',
+    "Issue 22's targets (swapped phong, the swap's default, against MeshPhongMaterial):",
+    '',
+    ...table(['measure', 'measured', 'target', 'result'], 'lrll', [
+      [
+        `frame time, swapped / MeshPhongMaterial${t.cost.ratio?.pairedQuartiles ? ` (quartiles of the same-cycle ratios ${t.cost.ratio.pairedQuartiles.map((/** @type {number} */ q) => q.toFixed(3)).join(' … ')})` : ''}`,
+        ratio3(t.cost.ratio),
+        t.cost.target,
+        metCell(t.cost.met),
+      ],
+      [
+        'mean luma over the frame, swapped / MeshPhongMaterial',
+        luma4(t.luminanceFrame.ratio),
+        t.luminanceFrame.target,
+        metCell(t.luminanceFrame.met),
+      ],
+      [
+        'mean luma over the covered pixels, swapped / MeshPhongMaterial',
+        luma4(t.luminanceCovered.ratio),
+        t.luminanceCovered.target,
+        metCell(t.luminanceCovered.met),
+      ],
+    ]),
+    '',
+    [
+      carried,
+      program,
+      dRatio
+        ? `The diffuse term alone (the same two scenes with MeshPhongMaterial's specular 0, so ks = 0): luma / MeshPhongMaterial ${luma4(dRatio.frame)} over the frame, ${luma4(dRatio.covered)} over the covered pixels${d.specularLuma ? `; the highlights' share of the mean covered luma (full − diffuse alone): ${d.specularLuma.meshPhong.toFixed(2)} codes with MeshPhongMaterial, ${d.specularLuma.swapped.toFixed(2)} swapped (${d.specularLuma.ratio.toFixed(2)} ×)` : ''}.`
+        : '',
+      r.cause ?? '',
+      costCause,
+    ]
+      .filter(Boolean)
+      .join(' '),
+  ];
+}
+
 const WEBGPU_TITLE = 'Material on WebGPURenderer';
 const WEBGPU_BACKENDS = /** @type {const} */ (['webgpu', 'webgl2', 'webgl']);
 
@@ -1161,6 +1279,7 @@ export function renderBenchmarks(results) {
       '- [Sphere build time](#sphere-build-time) · [Sphere error](#sphere-error) · [Automatic detail](#automatic-detail)',
       '- [Speed against accuracy](#speed-against-accuracy) · [Material frame time](#material-frame-time)',
       '- [Material in a realistic scene](#material-in-a-realistic-scene) · [Lecture scene before and after issue 14](#lecture-scene-before-and-after-issue-14) · [Flat shading without preparation](#flat-shading-without-preparation)',
+      '- [Swapped materials in a realistic scene](#swapped-materials-in-a-realistic-scene)',
       '- [Material on WebGPURenderer](#material-on-webgpurenderer)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
@@ -1175,6 +1294,7 @@ export function renderBenchmarks(results) {
     section('scene', sceneRealistic, 'Material in a realistic scene'),
     section('scene', sceneLecture, 'Lecture scene before and after issue 14'),
     section('scene', sceneFlat, 'Flat shading without preparation'),
+    section('swap', swap, SWAP_TITLE),
     section('webgpu', webgpu, WEBGPU_TITLE),
     section('camera-depth', cameraDepth, 'Camera depth precision'),
     section('trackball', trackball, 'Trackball'),
