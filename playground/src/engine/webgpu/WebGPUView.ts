@@ -17,6 +17,7 @@ import type * as THREE from 'three';
 import { RenderTarget, WebGPURenderer } from 'three/webgpu';
 import { GpuCells } from './gpuCells';
 import { NodeMirror } from './nodeMirror';
+import { readBack } from './readBack';
 import { mirrorMaterial } from './scene';
 import { generatedShader } from './shaderReader';
 import type {
@@ -45,6 +46,8 @@ export class WebGPUView {
   private mirror: NodeMirror | null = null;
   private target: RenderTarget | null = null;
   private ready = false;
+  /** When the backend opened (performance.now(), ms). */
+  private openedAt = 0;
   private disposed = false;
   private frames = 0;
   private shaderKey = '';
@@ -129,6 +132,7 @@ export class WebGPUView {
     }
     if (this.disposed || this.renderer !== renderer) return;
     this.ready = true;
+    this.openedAt = performance.now();
     this.mirror = new NodeMirror(provokingVertexOf(renderer));
     const webgpu = (renderer.backend as Backend).isWebGPUBackend === true;
     // three ignores a loss with reason 'destroyed' (its own dispose), but a dropped instance (the GPU process
@@ -229,7 +233,12 @@ export class WebGPUView {
     const { render, memory } = renderer.info;
     return {
       cpuMs: performance.now() - t0,
-      gpuMs: timestamps(renderer, (ms) => this.events.onGpuTime?.(ms)),
+      // Not read in the first second of a presenting WebGPU backend: a device lost by presenting (headless
+      // Chromium loses it) would fail the read-back, which three reports as a console error.
+      gpuMs:
+        this.output === 'canvas' && performance.now() - this.openedAt < 1000
+          ? { ms: null, note: 'GPU time: waiting for the first timestamps' }
+          : timestamps(renderer, (ms) => this.events.onGpuTime?.(ms)),
       triangles: render.triangles,
       programs: memory.programs,
     };
@@ -239,16 +248,8 @@ export class WebGPUView {
   async read(): Promise<{ pixels: Uint8Array; w: number; h: number } | null> {
     const { renderer, target } = this;
     if (!renderer || !target || !this.ready) return null;
-    const { width: w, height: h } = target;
-    const data = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, w, h)) as Uint8Array;
-    if (this.renderer !== renderer) return null;
-    const pixels = new Uint8Array(data);
-    // The WebGPU backend reads rows top-down (texture space), the WebGL2 backend bottom-up (GL).
-    if ((renderer.backend as Backend).isWebGPUBackend) {
-      const row = 4 * w;
-      for (let y = 0; y < h; y++) pixels.set(data.subarray((h - 1 - y) * row, (h - y) * row), y * row);
-    }
-    return { pixels, w, h };
+    const read = await readBack(renderer, target);
+    return this.renderer === renderer ? read : null;
   }
 
   /** What the generated shader depends on: the compiled variant and the geometry. */

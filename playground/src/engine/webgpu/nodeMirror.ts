@@ -39,7 +39,7 @@ export class NodeMirror {
   private readonly impostors = new Map<SphereImpostorMaterial, SphereImpostorNodeMaterial>();
   private readonly outlines = new Map<OutlineMaterial, OutlineNode>();
   private readonly models = new Map<THREE.Object3D, ModelSwap>();
-  private readonly groups = new Map<readonly THREE.Plane[], THREE.ClippingGroup>();
+  private readonly groups = new WeakMap<readonly THREE.Plane[], THREE.ClippingGroup>();
 
   /** @param provokingVertex - The running backend's (`provokingVertexOf(renderer)`). */
   constructor(private readonly provokingVertex: ProvokingVertex) {}

@@ -23,8 +23,8 @@ export function timestamps(renderer: WebGPURenderer, onResult: (ms: number) => v
       ms: null,
       note:
         backend.isWebGPUBackend === true
-          ? "n/a: the WebGPU adapter has no 'timestamp-query' feature"
-          : 'n/a: no EXT_disjoint_timer_query_webgl2 on the WebGL2 backend',
+          ? "GPU time n/a: the WebGPU adapter has no 'timestamp-query' feature"
+          : 'GPU time n/a: no EXT_disjoint_timer_query_webgl2 on the WebGL2 backend',
     };
   }
   let last = _last.get(renderer);
@@ -49,5 +49,5 @@ export function timestamps(renderer: WebGPURenderer, onResult: (ms: number) => v
       },
     );
   }
-  return { ms: last.ms, note: last.ms === null ? 'waiting for the first timestamps' : null };
+  return { ms: last.ms, note: last.ms === null ? 'GPU time: waiting for the first timestamps' : null };
 }
