@@ -167,7 +167,9 @@ describe('parseState', () => {
 
   it('refuses script in strings without running it', () => {
     const error = refused('{"view":"<img src=x onerror=alert(1)>"}');
-    expect(error).toMatch(/^state\.view: "<img src=x onerror=alert\(1\)>" is not one of single, compare, parity$/);
+    expect(error).toMatch(
+      /^state\.view: "<img src=x onerror=alert\(1\)>" is not one of single, compare, parity$/,
+    );
   });
 
   it('takes every scene name, defaults to the sphere and refuses any other scene value', () => {
