@@ -28,6 +28,7 @@ export const SOURCES = [
   { name: 'scene', writer: 'bench/scene.bench.mjs', command: 'npm run bench -- scene' },
   { name: 'swap', writer: 'bench/swap.bench.mjs', command: 'npm run bench -- swap' },
   { name: 'webgpu', writer: 'bench/webgpu.bench.mjs', command: 'npm run bench -- webgpu' },
+  { name: 'lighting', writer: 'bench/lighting.bench.mjs', command: 'npm run bench -- lighting' },
   { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
   { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
   {
@@ -882,6 +883,52 @@ function webgpu(r) {
   ];
 }
 
+const LIGHTING_TITLE = 'The lighting itself';
+
+/**
+ * Issue 23: the lighting of ShadingMaterial (the lecture's equation, written once in GLSL) against
+ * MeshPhongMaterial's, above MeshBasicMaterial's unlit floor, in the vertex-heavy realistic scene. @param {any} r
+ * @returns {string[]}
+ */
+function lighting(r) {
+  /** @param {{ paired: number, median: number } | null} x */
+  const cell = (x) => (x ? `${x.paired.toFixed(3)} (${x.median.toFixed(3)})` : '—');
+  const rows = Object.entries(r.rows).map(([name, v]) => {
+    const row = /** @type {any} */ (v);
+    return [
+      name,
+      `${ms(row.frameMs.median)} (${ms(row.frameMs.min)})`,
+      ms(row.cpuMs.median),
+      cell(row.vsMeshPhong),
+      cell(row.lightingVsMeshPhong),
+      cell(row.cpuLightingVsMeshPhong),
+    ];
+  });
+  const t = r.target;
+  return [
+    `## ${LIGHTING_TITLE}`,
+    '',
+    fromLine('lighting', r),
+    '',
+    `Issue 23: what the lighting costs on WebGLRenderer, in the vertex-heavy realistic scene: ${r.scene}. ${r.frames} cycles, each rendering one frame of every variant in turn, a 1×1 \`readPixels\` after each. The lighting above the floor is (frame − ${r.floor}'s) / (MeshPhongMaterial's − ${r.floor}'s) from the frames of one cycle, the median over the cycles (the same of the medians in brackets); of the wall time, and of the CPU time the browser's processes used for the frame (SwiftShader draws on the CPU, on every core: a frame's CPU time can exceed its wall time, and does not depend on what else the machine runs). ${r.note ?? ''}`.trim(),
+    '',
+    ...table(
+      [
+        'variant',
+        'wall ms: median (min)',
+        'CPU ms',
+        'wall / MeshPhongMaterial',
+        "lighting above the floor / MeshPhongMaterial's (wall)",
+        '(CPU)',
+      ],
+      'lrrrrr',
+      rows,
+    ),
+    '',
+    `Target: ${t.variant}, ${t.measure} ${t.target}: **${t.ratio.toFixed(3)}** (${t.met ? 'met' : 'not met'}; CPU time: ${t.cpuRatio.toFixed(3)}).`,
+  ];
+}
+
 /** @param {any} r @returns {string[]} */
 function cameraDepth(r) {
   /** @type {any[]} */
@@ -1281,6 +1328,7 @@ export function renderBenchmarks(results) {
       '- [Material in a realistic scene](#material-in-a-realistic-scene) · [Lecture scene before and after issue 14](#lecture-scene-before-and-after-issue-14) · [Flat shading without preparation](#flat-shading-without-preparation)',
       '- [Swapped materials in a realistic scene](#swapped-materials-in-a-realistic-scene)',
       '- [Material on WebGPURenderer](#material-on-webgpurenderer)',
+      '- [The lighting itself](#the-lighting-itself)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
       '- [Rasteriser variation](#rasteriser-variation)',
@@ -1296,6 +1344,7 @@ export function renderBenchmarks(results) {
     section('scene', sceneFlat, 'Flat shading without preparation'),
     section('swap', swap, SWAP_TITLE),
     section('webgpu', webgpu, WEBGPU_TITLE),
+    section('lighting', lighting, LIGHTING_TITLE),
     section('camera-depth', cameraDepth, 'Camera depth precision'),
     section('trackball', trackball, 'Trackball'),
     section('size', sizes, 'Package sizes'),
