@@ -95,27 +95,46 @@ for (const backend of BACKENDS) {
     });
   }
 
-  test(`${backend}: flat shading of a deformed triangle soup (skinned, morphed) is per fragment with the deformed face normal (= shade()), not WebGL ShadingMaterial's one exact colour per face`, async ({
+  test(`${backend}: exact flat shading of a triangle soup and of a flatShadingGeometry made for this backend's provoking vertex, for a SkinnedMesh, a morphed mesh and an InstancedMesh (two instances): exactly one colour per face, = shade() at the moved face's centroid with its face normal, = WebGLRenderer + ShadingMaterial within 2/255, drawn where MeshPhongNodeMaterial draws`, async ({
     page,
   }) => {
-    test.setTimeout(60_000);
+    test.setTimeout(120_000);
     const problems = await open(page);
-    for (const kind of ['skinned', 'morphed'] as const) {
-      const c: SceneCase = { kind, shading: 'flat', flatGeometry: 'soup' };
-      const stats = await run<[string, SceneCase], SceneStats>(page, 'sceneCompare', backend, c);
-      const label = `${backend} ${JSON.stringify(c)}`;
-      expect(stats.phongNode.coverageMismatches, label).toBe(0);
-      expect(stats.webgl.interiorCoverageMismatches, label).toBe(0);
-      const sh = stats.shade;
-      expect(sh?.compared, label).toBeGreaterThan(300);
-      expect(sh?.mismatches, `${label} ${JSON.stringify(sh)}`).toBe(0);
-      // ShadingMaterial lights each deformed face once at its centroid: the node material differs from it by
-      // the change of the specular and view vector across a face (recorded, not asserted: issue 15 plans exact
-      // per-face colours for deformed meshes).
-      test.info().annotations.push({
-        type: 'flat soup vs WebGL exact flat',
-        description: `${label}: max |Δ| ${stats.webgl.maxDelta}/255 on ${stats.webgl.compared} pixels, ${stats.webgl.differing} > 2/255`,
-      });
+    for (const flatGeometry of ['soup', 'prepared'] as const) {
+      for (const kind of ['skinned', 'morphed', 'instanced', 'mesh'] as const) {
+        for (const lighting of ['phong', 'blinn-phong'] as const) {
+          const c: SceneCase = { kind, shading: 'flat', flatGeometry, lighting };
+          const stats = await run<
+            [string, SceneCase],
+            {
+              backend: { isWebGPUBackend: boolean; isWebGLBackend: boolean };
+              phongNode: Diff;
+              webgl: Diff;
+              exact: {
+                compared: number;
+                maxError: number;
+                mismatches: number;
+                faces: number;
+                multiColour: number;
+                worst: unknown;
+              };
+            }
+          >(page, 'flatExactCompare', backend, c);
+          const label = `${backend} ${JSON.stringify(c)} ${JSON.stringify(stats.exact)}`;
+          expect(stats.backend, label).toEqual(
+            backend === 'webgpu'
+              ? { isWebGPUBackend: true, isWebGLBackend: false }
+              : { isWebGPUBackend: false, isWebGLBackend: true },
+          );
+          expect(stats.phongNode.coverageMismatches, `${label} ${JSON.stringify(stats.phongNode)}`).toBe(0);
+          expectSame(stats.webgl, label, 300);
+          expect(stats.exact.compared, label).toBeGreaterThan(300);
+          expect(stats.exact.faces, label).toBeGreaterThan(12);
+          expect(stats.exact.multiColour, label).toBe(0);
+          expect(stats.exact.mismatches, label).toBe(0);
+          expect(stats.exact.maxError, label).toBeLessThanOrEqual(2);
+        }
+      }
     }
     expect(problems).toEqual([]);
   });

@@ -44,6 +44,7 @@ interface SurfaceCase {
   alphaTest?: number;
   alphaMap?: boolean;
   side?: 'front' | 'back' | 'double';
+  normalMap?: 'tangent' | 'object';
 }
 interface Harness {
   backendInfo(
@@ -140,7 +141,7 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
     expect(problems).toEqual([]);
   });
 
-  test(`${backend} backend: three's ambient, hemisphere, directional, point and spot lights, an attenuated PhongLight with shininess 0 (0⁰ = 1), a sphere without normals, flat shading of an indexed geometry and of an InstancedMesh (by derivatives) = shade() within 2/255`, async ({
+  test(`${backend} backend: three's ambient, hemisphere, directional, point and spot lights, an attenuated PhongLight with shininess 0 (0⁰ = 1), a sphere without normals, flat shading of an indexed geometry (by derivatives) and of an InstancedMesh's soup (each face one colour at its centroid, as ShadingMaterial) = shade() within 2/255`, async ({
     page,
   }) => {
     test.setTimeout(120_000);
@@ -149,7 +150,8 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       ['three-lights', VARIANTS],
       ['attenuated', VARIANTS.filter((v) => v.celBands === 0)],
       ['analytic', VARIANTS.filter((v) => v.shading !== 'flat' && v.lighting === 'blinn-phong')],
-      // Flat shading by derivatives (per fragment, the face normal): an indexed geometry, an InstancedMesh.
+      // Flat shading by derivatives (per fragment, the face normal): an indexed geometry; exact (one colour per
+      // face, at its centroid): an InstancedMesh's soup.
       ['indexed', VARIANTS.filter((v) => v.shading === 'flat')],
       ['instanced', VARIANTS.filter((v) => v.lighting === 'phong')],
       // Back faces: flat shading lights each with the face normal turned round.
@@ -166,7 +168,7 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
         expect(stats.compared, label).toBeGreaterThan(1000);
         expect(stats.mismatches, label).toBe(0);
         expect(stats.maxError, label).toBeLessThanOrEqual(2);
-        if (variant.shading === 'flat' && scenario !== 'indexed' && scenario !== 'instanced') {
+        if (variant.shading === 'flat' && scenario !== 'indexed') {
           expect(stats.facesMultiColour, label).toBe(0);
         }
       }
@@ -354,9 +356,8 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       { map: true, vertexColors: 'rgb', side: 'back' },
     ];
     for (const surface of cases) {
-      // Flat shading of an InstancedMesh: ShadingMaterial lights each face at its centroid, ShadingNodeMaterial
-      // per fragment with the face normal (both against shade() above).
-      for (const variant of SURFACE_VARIANTS.filter((v) => v.shading !== 'flat' || !surface.instanceColor)) {
+      // Flat shading of an InstancedMesh too: both light each face at its centroid.
+      for (const variant of SURFACE_VARIANTS) {
         const stats = await page.evaluate(
           ([b, v, sf]) =>
             (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'lecture', sf),
@@ -373,6 +374,75 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
 }
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
+  test(`${backend} backend: normalMap (tangent space through the derivative tangent frame, and object space) perturbs the material's own normal in phong shading: = shade() with the perturbed normal within 2/255, with a map too, and = WebGLRenderer + ShadingMaterial within 2/255; gouraud and flat shading ignore it with one console warning each`, async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    const problems = await open(page);
+    const warnings: string[] = [];
+    page.on('console', (m) => {
+      if (m.type() === 'warning' && m.text().includes('normalMap')) warnings.push(m.text());
+    });
+    const info = await page.evaluate(
+      (b) => (window as never as { harness: Harness }).harness.backendInfo(b),
+      backend,
+    );
+    expect(info).toMatchObject(
+      backend === 'webgpu'
+        ? { isWebGPUBackend: true, isWebGLBackend: false, device: true }
+        : { isWebGPUBackend: false, isWebGLBackend: true },
+    );
+    const phongVariants: Variant[] = [
+      { shading: 'phong', lighting: 'blinn-phong', celBands: 0 },
+      { shading: 'phong', lighting: 'phong', celBands: 0 },
+    ];
+    for (const surface of [
+      { normalMap: 'tangent' },
+      { normalMap: 'object' },
+      { normalMap: 'tangent', map: true },
+    ] as SurfaceCase[]) {
+      for (const variant of phongVariants) {
+        const stats = await page.evaluate(
+          ([b, v, sf]) => (window as never as { harness: Harness }).harness.compare(b, v, 'lecture', sf),
+          [backend, variant, surface] as const,
+        );
+        const label = `${backend} ${JSON.stringify(surface)} ${JSON.stringify(variant)} ${JSON.stringify(stats.worst)}`;
+        expect(stats.compared, label).toBeGreaterThan(1500);
+        expect(stats.mismatches, label).toBe(0);
+        expect(stats.maxError, label).toBeLessThanOrEqual(2);
+        const cross = await page.evaluate(
+          ([b, v, sf]) =>
+            (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'lecture', sf),
+          [backend, variant, surface] as const,
+        );
+        const crossLabel = `${backend} ${JSON.stringify(surface)} ${JSON.stringify(variant)} ${JSON.stringify(cross)}`;
+        expect(cross.covered, crossLabel).toBeGreaterThan(2000);
+        expect(cross.coverageMismatch, crossLabel).toBe(0);
+        expect(cross.maxDelta, crossLabel).toBeLessThanOrEqual(2);
+      }
+    }
+    expect(warnings).toEqual([]);
+    for (const shading of ['gouraud', 'flat'] as const) {
+      const variant: Variant = { shading, lighting: 'phong', celBands: 0 };
+      // Ignored: = shade() with the vertex normals (the harness perturbs only phong shading's).
+      const stats = await page.evaluate(
+        ([b, v]) =>
+          (window as never as { harness: Harness }).harness.compare(b, v, 'lecture', {
+            normalMap: 'tangent',
+          }),
+        [backend, variant] as const,
+      );
+      expect(stats.mismatches, `${shading} ${JSON.stringify(stats.worst)}`).toBe(0);
+      expect(stats.compared).toBeGreaterThan(1500);
+    }
+    await expect.poll(() => warnings.length).toBe(2);
+    expect(warnings[0]).toContain(
+      "ShadingNodeMaterial: normalMap needs a per-fragment normal (shading 'phong'); gouraud shading ignores it",
+    );
+    expect(warnings[1]).toContain('flat shading ignores it');
+    expect(problems).toEqual([]);
+  });
+
   test(`${backend} backend: in three's Fog and FogExp2 (sRGB output), ShadingNodeMaterial({ ka: c, kd: c, ks: 0 }) = MeshPhongNodeMaterial({ color: c, specular: 0 }) and MeshLambertNodeMaterial({ color: c }) within 2/255: fog blended in linear before the output conversion, as three's node materials blend it (WebGLRenderer blends it in the output colour space)`, async ({
     page,
   }) => {

@@ -36,6 +36,7 @@ import {
   Mesh,
   MeshPhongMaterial,
   Object3D,
+  ObjectSpaceNormalMap,
   PerspectiveCamera,
   PointLight,
   Raycaster,
@@ -67,7 +68,7 @@ export type { Backend };
  * PhongLight with a + b·t + c·t², shininess 0: the 0⁰ = 1 rule), 'three-lights' (three's ambient, hemisphere,
  * directional, point and spot lights, no PhongLight), 'analytic' (the lecture's light, a sphere without normals),
  * 'indexed' (an indexed sphere: flat shading by derivatives) and 'instanced' (one instance of an InstancedMesh
- * carrying the transform: flat shading by derivatives), 'fog' (the lecture's scene in three's Fog), 'prepared'
+ * carrying the transform: exact flat shading, the instance's face at its centroid), 'fog' (the lecture's scene in three's Fog), 'prepared'
  * (the indexed sphere through flatShadingGeometry for the backend's provoking vertex: one colour per face),
  * 'prepared-other' (made for the other backend's: by derivatives, with a warning), 'flattened' (the lecture's
  * scene with the sphere's y scale 0: a disc, whose normal only the robust normal matrix gives), 'backside' (the
@@ -106,6 +107,8 @@ export interface SurfaceCase {
   alphaTest?: number;
   alphaMap?: boolean;
   side?: 'front' | 'back' | 'double';
+  /** A 4 × 4 normal map (bilinear): tangent space (through the derivative tangent frame) or object space. */
+  normalMap?: 'tangent' | 'object';
 }
 
 const SIZE = 128;
@@ -183,6 +186,15 @@ const MAP_TEXELS = texels((x, y) => [
   150 + 25 * x,
 ]);
 const ALPHA_TEXELS = texels((x, y) => [60 + 30 * y, 255 - 40 * x, 0, 255]);
+/** A tangent-space normal map: x and y in −0.45 … 0.45, z up (8-bit, 0 … 255 ↦ −1 … 1). */
+const NORMAL_TEXELS = texels((x, y) => [128 + 38 * (x - 1.5), 128 - 30 * (y - 1.5), 210, 255]);
+/** An object-space normal map: the sphere's outward directions, bent. */
+const OBJECT_NORMAL_TEXELS = texels((x, y) => [
+  128 + 40 * (x - 1.5),
+  128 + 40 * (y - 1.5),
+  200 - 20 * x,
+  255,
+]);
 function texels(f: (x: number, y: number) => number[]): Uint8Array {
   const data = new Uint8Array(64);
   for (let y = 0; y < 4; y++) for (let x = 0; x < 4; x++) data.set(f(x, y), 4 * (4 * y + x));
@@ -191,7 +203,15 @@ function texels(f: (x: number, y: number) => number[]): Uint8Array {
 /** The texture of `data`: linear (no colour space), bilinear, no mipmaps, clamped. One per renderer. */
 const _textures = new Map<string, DataTexture>();
 function textureOf(data: Uint8Array, api: 'gpu' | 'gl'): DataTexture {
-  const key = `${data === MAP_TEXELS ? 'map' : 'alpha'} ${api}`;
+  const name =
+    data === MAP_TEXELS
+      ? 'map'
+      : data === NORMAL_TEXELS
+        ? 'normal'
+        : data === OBJECT_NORMAL_TEXELS
+          ? 'object'
+          : 'alpha';
+  const key = `${name} ${api}`;
   let t = _textures.get(key);
   if (t === undefined) {
     t = new DataTexture(data, 4, 4, RGBAFormat);
@@ -234,6 +254,10 @@ function surfaceOptions(surface: SurfaceCase | undefined, api: 'gpu' | 'gl') {
     transparent: surface.transparent === true,
     alphaTest: surface.alphaTest ?? 0,
     alphaMap: surface.alphaMap ? textureOf(ALPHA_TEXELS, api) : null,
+    normalMap:
+      surface.normalMap === undefined
+        ? null
+        : textureOf(surface.normalMap === 'object' ? OBJECT_NORMAL_TEXELS : NORMAL_TEXELS, api),
   };
 }
 
@@ -389,6 +413,7 @@ async function renderGpu(
     ...surfaceOptions(surface, 'gpu'),
   });
   material.side = surface !== undefined ? surfaceSide(surface) : sideOf(scenario);
+  if (surface?.normalMap === 'object') material.normalMapType = ObjectSpaceNormalMap;
   const setup = scene(material, scenario, backend, surface);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
   renderer.setRenderTarget(target);
@@ -407,6 +432,7 @@ function renderGl(v: Variant, scenario: Scenario = 'lecture', surface?: SurfaceC
   gl ??= new WebGLRenderer({ antialias: false });
   const material = new ShadingMaterial({ ...v, ...surfaceOptions(surface, 'gl') });
   material.side = surface !== undefined ? surfaceSide(surface) : sideOf(scenario);
+  if (surface?.normalMap === 'object') material.normalMapType = ObjectSpaceNormalMap;
   const setup = scene(material, scenario, 'webgl', surface);
   const target = new WebGLRenderTarget(SIZE, SIZE);
   gl.setRenderTarget(target);
@@ -467,11 +493,8 @@ async function compare(
           : geometry;
   const positions = soup.getAttribute('position');
   // Flat shading by derivatives: per fragment, the face normal at the fragment's position.
-  const perFragmentFlat =
-    scenario === 'indexed' ||
-    scenario === 'instanced' ||
-    scenario === 'prepared-other' ||
-    surface?.instanceColor === true;
+  // (An InstancedMesh's soup is exact flat shading, as ShadingMaterial's: each face at its centroid.)
+  const perFragmentFlat = scenario === 'indexed' || scenario === 'prepared-other';
   const matrix = mesh.matrixWorld.clone();
   if (mesh instanceof InstancedMesh) {
     const instance = new Matrix4();
@@ -541,6 +564,33 @@ async function compare(
     sf.vertexColors !== undefined
       ? [colours.getX(i), colours.getY(i), colours.getZ(i)].map((c, k) => c * instanceTint[k])
       : instanceTint;
+  // The normal map (phong shading): the interpolated unit normal n of triangle t perturbed at (u, v), three's
+  // getTangentFrame on the triangle's own edges (the derivatives' frame: its formula is bilinear and
+  // antisymmetric in the two difference vectors, so any two of the plane's give it), or the object-space texel
+  // through the normal matrix.
+  const mapNormal = (n: Vector3, t: number, u: number, vv: number): Vector3 => {
+    if (sf.normalMap === 'object') {
+      const texel = sample(OBJECT_NORMAL_TEXELS, u, vv);
+      return new Vector3(texel[0] * 2 - 1, texel[1] * 2 - 1, texel[2] * 2 - 1).applyMatrix3(nm).normalize();
+    }
+    const texel = sample(NORMAL_TEXELS, u, vv).map((c) => c * 2 - 1);
+    const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
+    const q0 = b.clone().sub(a);
+    const q1 = c.clone().sub(a);
+    const uv = (i: number) => new Vector2(uvs.getX(3 * t + i), uvs.getY(3 * t + i));
+    const st0 = uv(1).sub(uv(0));
+    const st1 = uv(2).sub(uv(0));
+    const q1perp = q1.clone().cross(n);
+    const q0perp = n.clone().cross(q0);
+    const T = q1perp.clone().multiplyScalar(st0.x).addScaledVector(q0perp, st1.x);
+    const B = q1perp.clone().multiplyScalar(st0.y).addScaledVector(q0perp, st1.y);
+    const det = Math.max(T.dot(T), B.dot(B));
+    const scale = det === 0 ? 0 : 1 / Math.sqrt(det);
+    return T.multiplyScalar(scale * texel[0])
+      .addScaledVector(B, scale * texel[1])
+      .addScaledVector(n, texel[2])
+      .normalize();
+  };
   const kadOnly: ShadeMaterial = { ...m, ks: [0, 0, 0] };
   const ksOnly: ShadeMaterial = { ...m, ka: [0, 0, 0], kd: [0, 0, 0] };
   const split = (position: number[], normal: number[], tint: number[]) => ({
@@ -649,6 +699,7 @@ async function compare(
           const normal = new Vector3();
           if (v.shading === 'phong') {
             for (let i = 0; i < 3; i++) normal.addScaledVector(worldNormal[3 * t + i], w[i]);
+            if (sf.normalMap !== undefined) normal.copy(mapNormal(normal.normalize(), t, u, vv));
           } else {
             // Flat shading by derivatives (an InstancedMesh): per fragment, the face normal.
             const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];

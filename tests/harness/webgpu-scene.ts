@@ -4,6 +4,7 @@
 // MeshPhongNodeMaterial on the same renderer (coverage) and shade() (flat shading by derivatives). Also device
 // loss and recovery, and create/dispose cycles.
 import {
+  flatShadingGeometry,
   PhongLight,
   type ShadeLight,
   type ShadeMaterial,
@@ -83,8 +84,11 @@ export interface SceneCase {
   shading: Shading;
   lighting?: 'phong' | 'blinn-phong';
   celBands?: number;
-  /** Flat shading's geometry: indexed (flat by derivatives in both materials) or a triangle soup. @default 'indexed' */
-  flatGeometry?: 'indexed' | 'soup';
+  /**
+   * Flat shading's geometry: indexed (flat by derivatives in both materials), a triangle soup, or a
+   * flatShadingGeometry made for the renderer's provoking vertex (WebGPU's first, WebGL's last). @default 'indexed'
+   */
+  flatGeometry?: 'indexed' | 'soup' | 'prepared';
   clip?: Clip;
   /** Through the output conversion (WebGPU: an output render target; WebGL: the canvas). Absent: a linear target. */
   output?: 'srgb' | 'linear';
@@ -172,10 +176,37 @@ export interface Setup {
 }
 
 /** The scene of `c` with `material`, built for WebGPURenderer ('gpu') or WebGLRenderer ('gl'). */
-function build(material: Material, c: SceneCase, api: 'gpu' | 'gl'): Setup {
+/** The flatShadingGeometry of `source` for `provoking`, made once. */
+const _prepared = new Map<BufferGeometry, Map<string, BufferGeometry>>();
+function prepare(source: BufferGeometry, provoking: 'first' | 'last'): BufferGeometry {
+  let made = _prepared.get(source);
+  if (made === undefined) {
+    made = new Map();
+    _prepared.set(source, made);
+  }
+  let g = made.get(provoking);
+  if (g === undefined) {
+    g = flatShadingGeometry(source, { provokingVertex: provoking });
+    made.set(provoking, g);
+  }
+  return g;
+}
+
+function build(
+  material: Material,
+  c: SceneCase,
+  api: 'gpu' | 'gl',
+  provoking: 'first' | 'last' = 'last',
+): Setup {
   const soup = flatSoup(c);
-  const { sphereIndexed, sphereSoup, cylinderIndexed, cylinderSoup, morphIndexed, morphSoup } =
-    GEOMETRIES[api];
+  const indexed = GEOMETRIES[api];
+  const { sphereSoup, cylinderSoup, morphSoup } = indexed;
+  // A flatShadingGeometry stands in for the indexed geometries.
+  const prepared = c.shading === 'flat' && c.flatGeometry === 'prepared';
+  const maybe = (g: BufferGeometry) => (prepared ? prepare(g, provoking) : g);
+  const sphereIndexed = maybe(indexed.sphereIndexed);
+  const cylinderIndexed = maybe(indexed.cylinderIndexed);
+  const morphIndexed = maybe(indexed.morphIndexed);
   let object: Mesh;
   let geometry: BufferGeometry;
   if (c.kind === 'skinned') {
@@ -223,7 +254,7 @@ function build(material: Material, c: SceneCase, api: 'gpu' | 'gl'): Setup {
     });
     object = mesh as unknown as Mesh;
   } else {
-    geometry = c.shading === 'flat' ? sphereSoup : sphereIndexed;
+    geometry = c.shading === 'flat' && !prepared ? sphereSoup : sphereIndexed;
     object = new Mesh(geometry, material);
     object.scale.set(1.2, 1, 1.2);
     object.rotation.set(0.3, 0.5, 0);
@@ -319,7 +350,7 @@ async function drawGpu(r: WebGPURenderer, scene: Scene, camera: Camera, c: Scene
 async function renderGpu(backend: Backend, c: SceneCase, which: 'shading' | 'phong' = 'shading') {
   const r = await gpuRenderer(backend);
   const material = which === 'phong' ? new MeshPhongNodeMaterial() : nodeMaterial(c);
-  const setup = build(material, c, 'gpu');
+  const setup = build(material, c, 'gpu', backend === 'webgpu' ? 'first' : 'last');
   const pixels = await drawGpu(r, setup.scene, setup.camera, c);
   material.dispose();
   // The object is kept for the CPU reference (a disposed BatchedMesh cannot be ray cast).
@@ -549,6 +580,95 @@ async function sceneCompare(backend: Backend, c: SceneCase) {
     phongNode: diff(pixels, phong),
     webgl: diff(pixels, webgl, mask),
     shade: c.shading === 'flat' && mask !== undefined ? shadeFlat(setup, pixels, c, mask) : null,
+  };
+  dispose();
+  return result;
+}
+
+/**
+ * Exact flat shading (a triangle soup or a flatShadingGeometry) against shade(): each face (of each instance) one
+ * colour, = shade() at the deformed, placed face's centroid with its face normal (away from triangle edges).
+ */
+function shadeExactFlat(setup: Setup, pixels: Uint8Array, c: SceneCase, mask: Uint8Array) {
+  const { object, camera, lights, geometry } = setup;
+  const eye = [camera.position.x, camera.position.y, camera.position.z, 1];
+  const m: ShadeMaterial = {
+    ka: [0.6, 0.35, 0.2],
+    kd: [0.6, 0.35, 0.2],
+    ks: [0.5, 0.5, 0.5],
+    shininess: 32,
+    lighting: c.lighting ?? 'phong',
+    celBands: c.celBands ?? 0,
+  };
+  const raycaster = new Raycaster();
+  const stats = { compared: 0, maxError: 0, mismatches: 0, faces: 0, multiColour: 0, worst: null as unknown };
+  const colours = new Map<string, string>();
+  const multi = new Set<string>();
+  const position = geometry.getAttribute('position');
+  for (let y = 0; y < SIZE; y++) {
+    for (let x = 0; x < SIZE; x++) {
+      const i = y * SIZE + x;
+      if (mask[i] === 1 || neighbourhood(pixels, x, y) !== true) continue;
+      raycaster.setFromCamera(new Vector2(((x + 0.5) / SIZE) * 2 - 1, ((y + 0.5) / SIZE) * 2 - 1), camera);
+      const hit = raycaster.intersectObject(object as Object3D, false)[0];
+      if (hit?.face == null || hit.faceIndex == null) continue;
+      const instance = hit.instanceId;
+      const world =
+        instance !== undefined
+          ? object.matrixWorld.clone().multiply(INSTANCES[instance].matrix)
+          : object.matrixWorld;
+      const corner = (k: number) =>
+        (instance !== undefined
+          ? new Vector3().fromBufferAttribute(position, k)
+          : object.getVertexPosition(k, new Vector3())
+        ).applyMatrix4(world);
+      const [a, b, cc] = [hit.face.a, hit.face.b, hit.face.c].map(corner);
+      const centroid = a.clone().add(b).add(cc).divideScalar(3);
+      const normal = b.clone().sub(a).cross(cc.clone().sub(a));
+      const expected = shade({ position: centroid.toArray(), normal: normal.toArray(), eye }, m, lights);
+      const o = 4 * i;
+      const key = `${instance ?? 0}:${hit.faceIndex}`;
+      const colour = `${pixels[o]},${pixels[o + 1]},${pixels[o + 2]}`;
+      const seen = colours.get(key);
+      if (seen === undefined) colours.set(key, colour);
+      else if (seen !== colour) multi.add(key);
+      stats.compared++;
+      let error = 0;
+      for (let k = 0; k < 3; k++)
+        error = Math.max(error, Math.abs(pixels[o + k] - Math.min(Math.max(expected[k], 0), 1) * 255));
+      if (error > stats.maxError) {
+        stats.maxError = error;
+        stats.worst = {
+          x,
+          y,
+          key,
+          got: Array.from(pixels.subarray(o, o + 3)),
+          expected: expected.map((e) => e * 255),
+        };
+      }
+      if (error > 2) stats.mismatches++;
+    }
+  }
+  stats.faces = colours.size;
+  stats.multiColour = multi.size;
+  return stats;
+}
+
+/**
+ * Exact flat shading of a soup or a flatShadingGeometry (made for the backend's provoking vertex) of a mesh,
+ * SkinnedMesh, morphed mesh or InstancedMesh: coverage as MeshPhongNodeMaterial's, colours as WebGLRenderer +
+ * ShadingMaterial's (away from triangle edges), one colour per face = shade() at the centroid.
+ */
+async function flatExactCompare(backend: Backend, c: SceneCase) {
+  const { pixels, setup, dispose } = await renderGpu(backend, c);
+  const { pixels: phong } = await renderGpu(backend, c, 'phong');
+  const webgl = renderGl(c);
+  const mask = edgeMask(setup);
+  const result = {
+    backend: backendFlags(await gpuRenderer(backend)),
+    phongNode: diff(pixels, phong),
+    webgl: diff(pixels, webgl, mask),
+    exact: shadeExactFlat(setup, pixels, c, mask),
   };
   dispose();
   return result;
@@ -1300,6 +1420,7 @@ async function phongCaster(backend: Backend) {
 }
 
 const api = {
+  flatExactCompare,
   shadowCompare,
   phongCaster,
   sceneCompare,

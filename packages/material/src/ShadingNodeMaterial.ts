@@ -1,13 +1,11 @@
 // ShadingMaterial's shading on three's WebGPURenderer (both of its backends): a node material with a lighting
 // model of the lecture's equation, PhongLights as light nodes beside three's own lights.
 import {
-  attribute,
   batchColor,
   cameraViewMatrix,
   diffuseColor,
   frontFacing,
   instanceColor,
-  ivec2,
   lightingContext,
   materialReference,
   max,
@@ -17,7 +15,6 @@ import {
   positionLocal,
   positionView,
   select,
-  textureLoad,
   uniform,
   varying,
   vec3,
@@ -29,20 +26,17 @@ import {
   BackSide,
   type BufferGeometry,
   Color,
-  DataTexture,
   DoubleSide,
-  FloatType,
   Matrix3,
-  NearestFilter,
   NodeMaterial,
   type NormalMapTypes,
-  RGBAFormat,
   TangentSpaceNormalMap,
   type Texture,
   Vector2,
 } from 'three/webgpu';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
-import { FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
+import { SPHERE_FLAG } from './geometryFlags.js';
+import { faceTexel, faceTexture, flatFace, instanceNormal, rescaled } from './nodeFlat.js';
 import {
   LectureLightingModel,
   type LightingSplit,
@@ -50,6 +44,7 @@ import {
   phongLightNode,
   type Surface,
 } from './nodeLighting.js';
+import { normalMapped } from './nodeNormalMap.js';
 import { removeShadowed, shadowingLightNodes, shadowTerms, unshadowed } from './nodeShadows.js';
 import {
   checkCelBands,
@@ -60,7 +55,6 @@ import {
   type Shading,
 } from './options.js';
 import type { PhongLight } from './PhongLight.js';
-import { provokingVertexOf } from './provokingVertexOf.js';
 import type { ShadingMaterialOptions } from './ShadingMaterial.js';
 import type { Lighting } from './shade.js';
 import {
@@ -129,59 +123,6 @@ function normalToView(n: N): N {
   return (cameraViewMatrix as N).mul(vec4((robustNormalMatrix as N).mul(n), 0)).xyz;
 }
 
-/** The geometries already warned about their provoking vertex. */
-const _warnedProvoking = /* @__PURE__ */ new WeakSet<BufferGeometry>();
-
-/** Texels per row of the face textures. */
-const FACE_TEXTURE_WIDTH = 2048;
-const _faceTextures = /* @__PURE__ */ new WeakMap<
-  BufferGeometry,
-  Map<string, { texture: DataTexture; version: number }>
->();
-
-/**
- * Vertex i's attribute `name` (`position`: object-space xyz, w = 1; `color`: RGBA, alpha 1 for RGB) at texel i
- * (RGBA float: WebGPU has no RGB float textures), cached per geometry and attribute version.
- */
-function faceTexture(geometry: BufferGeometry, name: 'position' | 'color'): DataTexture {
-  const attribute = geometry.getAttribute(name);
-  const version = 'version' in attribute ? (attribute.version as number) : 0;
-  let textures = _faceTextures.get(geometry);
-  if (textures === undefined) {
-    const created = new Map<string, { texture: DataTexture; version: number }>();
-    textures = created;
-    _faceTextures.set(geometry, created);
-    geometry.addEventListener('dispose', () => {
-      for (const { texture } of created.values()) texture.dispose();
-    });
-  }
-  const cached = textures.get(name);
-  if (cached !== undefined && cached.version === version) return cached.texture;
-  const height = Math.max(1, Math.ceil(attribute.count / FACE_TEXTURE_WIDTH));
-  const data = new Float32Array(4 * FACE_TEXTURE_WIDTH * height);
-  const four = attribute.itemSize > 3;
-  for (let i = 0; i < attribute.count; i++) {
-    data[4 * i] = attribute.getX(i);
-    data[4 * i + 1] = attribute.getY(i);
-    data[4 * i + 2] = attribute.getZ(i);
-    data[4 * i + 3] = four ? attribute.getW(i) : 1;
-  }
-  const texture = cached?.texture ?? new DataTexture(data, FACE_TEXTURE_WIDTH, height, RGBAFormat, FloatType);
-  if (cached !== undefined) texture.image = { data, width: FACE_TEXTURE_WIDTH, height } as never;
-  texture.minFilter = NearestFilter;
-  texture.magFilter = NearestFilter;
-  texture.generateMipmaps = false;
-  texture.flipY = false;
-  texture.needsUpdate = true;
-  textures.set(name, { texture, version });
-  return texture;
-}
-
-/** Vertex `i`'s texel of a face texture. */
-function faceTexel(texture: DataTexture, i: N): N {
-  return textureLoad(texture, ivec2(i.mod(FACE_TEXTURE_WIDTH), i.div(FACE_TEXTURE_WIDTH))) as N;
-}
-
 /**
  * `ShadingMaterial`'s shading for three's `WebGPURenderer` (`three/webgpu`), on its WebGPU and its WebGL2
  * backend: the lecture's flat, Gouraud and Phong shading × Phong and Blinn-Phong lighting × cel bands, with the
@@ -197,9 +138,9 @@ function faceTexel(texture: DataTexture, i: N): N {
  * vertex of a triangle reads its three corners from a float texture and computes the same colour, so the
  * provoking vertex, the first on WebGPU and the last on WebGL2, does not matter) and for a `flatShadingGeometry`
  * made for the backend's provoking vertex (`provokingVertex: 'first'` for WebGPU, the default `'last'` for
- * WebGL2; one made for the other is drawn as below, with a warning); else (another indexed geometry, an
- * instanced, batched, skinned or morphed mesh) per fragment with the face normal from screen-space derivatives
- * (as three's `flatShading`). A geometry without `normal` that is a sphere centred at its origin
+ * WebGL2; one made for the other is drawn as below, with a warning), skinned, morphed and instanced meshes
+ * included (the corners moved and placed as three moves the vertices); else (another indexed geometry, a
+ * BatchedMesh) per fragment with the face normal from screen-space derivatives (as three's `flatShading`). A geometry without `normal` that is a sphere centred at its origin
  * (`SubdivisionSphereGeometry` or `userData.isSphere`) uses normal = position. Normals go to view space through
  * the robust normal matrix sign(det)·cof(M) (`computeNormalMatrix`), finite for a zero or extreme scale.
  *
@@ -218,7 +159,7 @@ function faceTexel(texture: DataTexture, i: N): N {
  * node fog (blended in linear before the output conversion, as three's node materials blend it). With
  * `receiveShadow`, three's shadow-casting lights shadow their term of the equation (never the ambient) in every
  * shading, per fragment; a PhongLight casts no shadow (its `castShadow` is ignored).
- * `normalMap` is not drawn yet (one console warning).
+ * `normalMap` perturbs the normal in phong shading.
  *
  * @example
  * const light = new PhongLight();
@@ -258,7 +199,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
   // What the GPU adds: emissive as last found valid.
   readonly #emissiveNode: N = uniform(new Color(0, 0, 0));
   #opacity = 1;
-  // The warning that normalMap is not drawn was given.
+  // The warning that normalMap needs phong shading was given.
   #warnedNormalMap = false;
 
   /**
@@ -273,8 +214,10 @@ export class ShadingNodeMaterial extends NodeMaterial {
   /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingNodeMaterial.emissive}. @default null */
   emissiveMap: Texture | null = null;
   /**
-   * three's `normalMap`: kept (validated, copied) for `ShadingMaterial`'s option, but not drawn on
-   * WebGPURenderer yet: the surface is lit with its vertex normals, with one console warning. @default null
+   * three's `normalMap` (tangent space by default, see `normalMapType`): perturbs the material's own normal per
+   * fragment through three's tangent frame from screen-space derivatives (a `tangent` attribute is not used), as
+   * `ShadingMaterial` does; phong shading only (gouraud and flat shading ignore it, with one console warning).
+   * @default null
    */
   normalMap: Texture | null = null;
   /** three's `normalMapType`: `TangentSpaceNormalMap` or `ObjectSpaceNormalMap`. @default TangentSpaceNormalMap */
@@ -530,10 +473,10 @@ export class ShadingNodeMaterial extends NodeMaterial {
 
   /** Builds the lighting of the variant (three calls it when it compiles the material), plus the emissive. */
   override setupLighting(builder: N): N {
-    if (this.normalMap !== null && !this.#warnedNormalMap) {
+    if (this.normalMap !== null && this.#shading !== 'phong' && !this.#warnedNormalMap) {
       this.#warnedNormalMap = true;
       console.warn(
-        `${this.#owner}: normalMap is not drawn on WebGPURenderer yet (ShadingMaterial draws it in phong shading); the surface is lit with its vertex normals`,
+        `${this.#owner}: normalMap needs a per-fragment normal (shading 'phong'); ${this.#shading} shading ignores it`,
       );
     }
     const emissive: N =
@@ -562,7 +505,9 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const v = onStack(towardsViewer(positionView));
       // Unit vertex normals interpolated (zero where the matrix flattens the surface away); a back face
       // (DoubleSide, BackSide) is lit with its normal turned round, as three's normalView does.
-      const n = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
+      let n: N = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
+      // A normal map perturbs that normal (as ShadingMaterial does: not three's normalView).
+      if (this.normalMap !== null) n = onStack(normalMapped(this, n, positionView, normalToView));
       return this.lightSurface(builder, { n, v }, undefined, fragmentTint);
     }
     // Per vertex: the instance and vertex colours multiply ka and kd there; a texel (of `map`, or `colorNode`)
@@ -574,7 +519,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
         : this.map !== null
           ? (materialReference('map', 'texture') as N).rgb
           : null;
-    const face = this.#shading === 'flat' ? this.#flatFace(builder, geometry) : null;
+    const face = this.#shading === 'flat' ? flatFace(builder, geometry, this.#owner) : null;
     const vertexTint = this.#vertexTint(builder, face !== null && geometry.index === null);
     // The vertex stage cannot tell a front face from a back one: it lights the side(s) the material draws, the
     // back with the normal turned round, and the fragment takes the colour of the side it is on.
@@ -608,10 +553,17 @@ export class ShadingNodeMaterial extends NodeMaterial {
     }
     if (face !== null) {
       // The vertex stage lights the face's centroid with its normal; every vertex that can provoke computes it.
-      const [a, b, c] = face;
-      const view = (modelViewMatrix as N).mul(vec4(a.add(b).add(c).div(3), 1)).xyz;
+      const [a, b, c] = face.corners;
+      const centroid = vec4(a.add(b).add(c).div(3), 1);
+      const view = (modelViewMatrix as N).mul(
+        face.instance === null ? centroid : face.instance.mul(centroid),
+      ).xyz;
       const v = towardsViewer(view);
-      const n = unitOr(normalToView(b.sub(a).cross(c.sub(a))), v);
+      const normal = rescaled(b.sub(a).cross(c.sub(a)));
+      const n = unitOr(
+        normalToView(face.instance === null ? normal : instanceNormal(face.instance, normal)),
+        v,
+      );
       return sided(
         (sign) => ({ n: n.mul(sign), v }),
         view,
@@ -643,46 +595,6 @@ export class ShadingNodeMaterial extends NodeMaterial {
       );
     }
     return tints.length === 0 ? null : tints.reduce((a, b) => a.mul(b));
-  }
-
-  /**
-   * The corners (object space, winding order) of the face a vertex lights in flat shading, or null where flat
-   * shading lights per fragment with the face normal from screen-space derivatives: an indexed geometry not
-   * made by flatShadingGeometry for this backend's provoking vertex, and an instanced, batched, skinned or
-   * morphed mesh (the corners are rest positions; the derivatives see the positions three moved).
-   */
-  #flatFace(builder: N, geometry: BufferGeometry): [N, N, N] | null {
-    const object = builder.object ?? {};
-    if (
-      object.isInstancedMesh === true ||
-      object.isBatchedMesh === true ||
-      object.isSkinnedMesh === true ||
-      geometry.morphAttributes.position !== undefined
-    ) {
-      return null;
-    }
-    if (geometry.index === null) {
-      // A triangle soup: every vertex of a triangle reads the triangle's three corners from the face texture,
-      // so whichever vertex provokes gives the same colour.
-      const texture = faceTexture(geometry, 'position');
-      const first = (vertexIndex as N).div(3).mul(3);
-      const corner = (k: number): N => faceTexel(texture, first.add(k)).xyz;
-      return [corner(0), corner(1), corner(2)];
-    }
-    if (geometry.getAttribute(FLAT_CORNERS[0]) === undefined) return null;
-    // A flatShadingGeometry: each triangle's provoking vertex carries the face's other two corners.
-    const wanted = provokingVertexOf(builder.renderer ?? {});
-    const made = geometry.userData[FLAT_PROVOKING_VERTEX] ?? 'last';
-    if (made !== wanted) {
-      if (!_warnedProvoking.has(geometry)) {
-        _warnedProvoking.add(geometry);
-        console.warn(
-          `${this.#owner}: this flatShadingGeometry was made with provokingVertex '${made}', but this backend's is the ${wanted}: flat shading lights it per fragment with the face normal. Make it with flatShadingGeometry(geometry, { provokingVertex: '${wanted}' })`,
-        );
-      }
-      return null;
-    }
-    return [attribute(FLAT_CORNERS[0], 'vec3'), attribute(FLAT_CORNERS[1], 'vec3'), positionLocal];
   }
 
   /**
