@@ -59,6 +59,21 @@ export class PhongLight extends Object3D {
    */
   constructor({ ambient, diffuse, specular, attenuation }: PhongLightOptions = {}) {
     super();
+    // three's shadow maps are for three's lights: a PhongLight casts none. Setting castShadow says so once
+    // (three's WebGLShadowMap would otherwise warn on every frame) and leaves it false.
+    let warned = false;
+    Object.defineProperty(this, 'castShadow', {
+      get: () => false,
+      set: (value: unknown) => {
+        if (value !== true || warned) return;
+        warned = true;
+        console.warn(
+          'PhongLight.castShadow: a PhongLight casts no shadow (three’s shadow maps need one of three’s lights); put a PointLight with castShadow at its position for a shadow. castShadow stays false.',
+        );
+      },
+      enumerable: true,
+      configurable: true,
+    });
     if (ambient !== undefined) this.ambient = ambient;
     if (diffuse !== undefined) this.diffuse = diffuse;
     if (specular !== undefined) this.specular = specular;
