@@ -5,6 +5,8 @@
  * @module @shadelab/material/webgpu
  */
 export { createOutlineNode } from './createOutlineNode.js';
+export type { LightingSplit } from './nodeLighting.js';
+export type { ShadowTerm, ShadowTerms } from './nodeShadows.js';
 export { OutlineNodeMaterial, type OutlineNodeMaterialOptions } from './OutlineNodeMaterial.js';
 export { provokingVertexOf } from './provokingVertexOf.js';
 export {
