@@ -134,13 +134,16 @@ function maxCounts(a: Counts, b: Counts): Counts {
 
 // ---- Instance matrix extremes ------------------------------------------------------------------------------
 
-/** A box with one colour per face (r = (face + 1)/8): the oracle's face id. */
+/**
+ * A box with one colour per face (r = (face + 1)/8): the oracle's face id. A triangle soup, so that flat shading
+ * lights each face once at its centroid with the instance's normal (by derivatives on an indexed box).
+ */
 const idBox = (() => {
   const g = new BoxGeometry(1, 1, 1);
   const colors = new Float32Array(3 * 24);
   for (let v = 0; v < 24; v++) colors.set([(Math.floor(v / 4) + 1) / 8, 1, 1], 3 * v);
   g.setAttribute('color', new Float32BufferAttribute(colors, 3));
-  return g;
+  return g.toNonIndexed();
 })();
 /** BoxGeometry's face normals, in its vertex order (+x, −x, +y, −y, +z, −z). */
 const FACE_NORMALS = [
