@@ -49,13 +49,7 @@ export interface Instance {
 }
 
 /** What is outlined. 'sphere' is a sphere without normals flagged `userData.isSphere` (normal = position). */
-export type OutlineObject =
-  | 'mesh'
-  | 'sphere'
-  | 'skinned'
-  | 'morphed'
-  | 'instanced'
-  | 'instanced-skinned';
+export type OutlineObject = 'mesh' | 'sphere' | 'skinned' | 'morphed' | 'instanced' | 'instanced-skinned';
 
 export interface OutlineConfig {
   object: OutlineObject;
