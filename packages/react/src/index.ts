@@ -11,6 +11,7 @@
 // The registration of the JSX elements (the package's side effect; see package.json `sideEffects`).
 import './elements.js';
 
+export type { ColorInput } from '@shadelab/material';
 export { AutoDetailSphere, type AutoDetailSphereProps } from './AutoDetailSphere.js';
 export type { ColorProp, ShadelabElement, ShadelabElements } from './elements.js';
 export { LectureCamera, type LectureCameraProps } from './LectureCamera.js';
