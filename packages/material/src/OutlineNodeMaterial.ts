@@ -3,10 +3,8 @@
 // and (as sign(det)·cofactor, like OutlineMaterial's GLSL) to the normal, and pushes the world position out along
 // the unit robust world normal by `thickness`; one colour.
 import {
-  abs,
   cameraViewMatrix,
   diffuseColor,
-  float,
   materialReference,
   max,
   modelWorldMatrix,
@@ -22,6 +20,7 @@ import {
 } from 'three/tsl';
 import { BackSide, Color, Matrix3, NodeMaterial } from 'three/webgpu';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
+import { cofactorTimes, rescale } from './nodeInstance.js';
 import {
   checkThickness,
   OUTLINE_DEFAULTS,
@@ -50,27 +49,6 @@ const objectNormalMatrix = /* @__PURE__ */ uniform(_normalMatrix).onObjectUpdate
 
 /** The world-space offset of each build's vertex (thickness × the unit robust world normal). */
 const _offsets = /* @__PURE__ */ new WeakMap<object, N>();
-
-/** `v` divided by its largest absolute component (zero stays zero): direction kept, magnitude in range. */
-function rescale(v: N): N {
-  const m = max(max(abs(v.x), abs(v.y)), abs(v.z));
-  return select(m.greaterThan(0), v.div(max(m, 1e-30)), vec3(0));
-}
-
-/**
- * sign(det A)·cof(A)·n for the linear part A of `matrix` (a mat4 node), A scaled by its largest entry first so that
- * nothing overflows at a scale of 1e20: OutlineMaterial's `shadingCofactor` (a zero scale gives the flattened
- * surface's normal, or zero).
- */
-function cofactorTimes(matrix: N, n: N): N {
-  const columns = [0, 1, 2].map((i) => matrix.element(i).xyz);
-  const e = columns.map((c: N) => max(max(abs(c.x), abs(c.y)), abs(c.z)));
-  const s = max(max(e[0], e[1]), e[2]);
-  const a = columns.map((c: N) => c.div(max(s, 1e-30)));
-  const k = [a[1].cross(a[2]), a[2].cross(a[0]), a[0].cross(a[1])];
-  const sign = select(a[0].dot(k[0]).lessThan(0), float(-1), float(1));
-  return k[0].mul(n.x).add(k[1].mul(n.y)).add(k[2].mul(n.z)).mul(sign);
-}
 
 /**
  * `OutlineMaterial` for three's `WebGPURenderer` (`three/webgpu`), on its WebGPU and its WebGL2 backend: the

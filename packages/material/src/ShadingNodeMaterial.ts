@@ -6,15 +6,19 @@ import {
   diffuseColor,
   frontFacing,
   instanceColor,
+  instancedMesh,
   lightingContext,
   materialReference,
   max,
   modelViewMatrix,
+  morphReference,
   negateOnBackSide,
   normalLocal,
   positionLocal,
   positionView,
   select,
+  skinning,
+  subBuild,
   uniform,
   varying,
   vec3,
@@ -36,7 +40,8 @@ import {
 } from 'three/webgpu';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { SPHERE_FLAG } from './geometryFlags.js';
-import { faceTexel, faceTexture, flatFace, instanceNormal, rescaled } from './nodeFlat.js';
+import { faceTexel, faceTexture, flatFace } from './nodeFlat.js';
+import { cofactorTimes, instanceMatrixOf, rescale } from './nodeInstance.js';
 import {
   LectureLightingModel,
   type LightingSplit,
@@ -142,7 +147,9 @@ function normalToView(n: N): N {
  * included (the corners moved and placed as three moves the vertices); else (another indexed geometry, a
  * BatchedMesh) per fragment with the face normal from screen-space derivatives (as three's `flatShading`). A geometry without `normal` that is a sphere centred at its origin
  * (`SubdivisionSphereGeometry` or `userData.isSphere`) uses normal = position. Normals go to view space through
- * the robust normal matrix sign(det)·cof(M) (`computeNormalMatrix`), finite for a zero or extreme scale.
+ * the robust normal matrix sign(det)·cof(M) (`computeNormalMatrix`), finite for a zero or extreme scale; an
+ * `InstancedMesh`'s instance matrix turns them as sign(det A)·cof(A) of its linear part A, as `ShadingMaterial`
+ * does (not three's inverse transpose, which a zero or 1e20 instance scale breaks).
  *
  * Lights: the PhongLights of `lights`, else every PhongLight in the rendered scene (three lists them with its
  * own lights, through the light node this entry registers, so adding or removing one rebuilds the material as
@@ -448,6 +455,34 @@ export class ShadingNodeMaterial extends NodeMaterial {
   }
 
   /**
+   * The vertex moved as three's NodeMaterial moves it (morph targets, skinning, the instance matrix, then
+   * `positionNode`), but on an InstancedMesh its normal turned by sign(det A)·cof(A) of the instance's linear part
+   * A, as `ShadingMaterial` turns it (finite for a zero or 1e20 instance scale, outward for a mirrored instance),
+   * not by three's inverse transpose (made from A's column lengths: infinite or NaN there).
+   */
+  override setupPosition(builder: N): N {
+    const { object, geometry } = builder;
+    if (object.isInstancedMesh !== true || object.instanceMatrix?.isInstancedBufferAttribute !== true) {
+      return super.setupPosition(builder);
+    }
+    const morphs = geometry.morphAttributes;
+    if (morphs.position || morphs.normal || morphs.color) (morphReference as N)(object);
+    if (object.isSkinnedMesh === true) (skinning as N)(object);
+    // The object-space normal after morph targets and skinning, before three's instance node turns it.
+    const hasNormal = geometry.hasAttribute('normal') === true;
+    const normal: N = hasNormal ? (normalLocal as N).toVar() : null;
+    if (normal !== null) normal.toStack();
+    (instancedMesh as N)(object);
+    if (normal !== null) {
+      (normalLocal as N).assign(rescale(cofactorTimes(instanceMatrixOf(builder, object), normal)));
+    }
+    if (this.positionNode !== null) {
+      (positionLocal as N).assign((subBuild as N)(this.positionNode, 'POSITION', 'vec3'));
+    }
+    return positionLocal;
+  }
+
+  /**
    * three's `diffuseColor` as three's NodeMaterial builds it (vertex colours, instance and batch colours,
    * opacity, alpha test, opaque alpha), from this material's surface: rgb = the texel of `map` (or `colorNode`)
    * × vertex colour × instance colour, a = `opacity` × texel alpha × vertex alpha × `alphaMap` green (three's
@@ -559,9 +594,9 @@ export class ShadingNodeMaterial extends NodeMaterial {
         face.instance === null ? centroid : face.instance.mul(centroid),
       ).xyz;
       const v = towardsViewer(view);
-      const normal = rescaled(b.sub(a).cross(c.sub(a)));
+      const normal = rescale(b.sub(a).cross(c.sub(a)));
       const n = unitOr(
-        normalToView(face.instance === null ? normal : instanceNormal(face.instance, normal)),
+        normalToView(face.instance === null ? normal : rescale(cofactorTimes(face.instance, normal))),
         v,
       );
       return sided(

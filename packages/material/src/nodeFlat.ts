@@ -4,27 +4,16 @@
 // are read from float textures (one texel a vertex, built once per geometry and attribute version); a
 // flatShadingGeometry's from its corner attributes (and, deformed, the corners' vertex indices into textures).
 import {
-  abs,
   attribute,
-  buffer,
-  float,
-  instancedBufferAttribute,
-  instancedDynamicBufferAttribute,
-  instanceIndex,
   int,
   ivec2,
-  mat4,
-  max,
   OnObjectUpdate,
   positionGeometry,
   reference,
   referenceBuffer,
-  select,
-  storage,
   textureLoad,
   uniform,
   uniformArray,
-  vec3,
   vec4,
   vertexIndex,
 } from 'three/tsl';
@@ -32,14 +21,13 @@ import {
   type BufferAttribute,
   type BufferGeometry,
   DataTexture,
-  DynamicDrawUsage,
   FloatType,
-  InterleavedBufferAttribute as Interleaved,
   type InterleavedBufferAttribute,
   NearestFilter,
   RGBAFormat,
 } from 'three/webgpu';
 import { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX } from './geometryFlags.js';
+import { instanceMatrixOf } from './nodeInstance.js';
 import { provokingVertexOf } from './provokingVertexOf.js';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
@@ -159,7 +147,7 @@ export function flatFace(builder: N, geometry: BufferGeometry, owner: string): F
   }
   if (morphed) corners = corners.map((c, k) => morph(object, geometry, c, indices[k])) as [N, N, N];
   if (skinned) corners = corners.map((c, k) => skin(object, geometry, c, indices[k])) as [N, N, N];
-  return { corners, instance: object.isInstancedMesh === true ? instanceMatrix(builder, object) : null };
+  return { corners, instance: object.isInstancedMesh === true ? instanceMatrixOf(builder, object) : null };
 }
 
 /** Corner `c` (vertex `i`) moved by the mesh's position morph targets, as three's morph node moves a vertex. */
@@ -190,42 +178,4 @@ function skin(mesh: N, geometry: BufferGeometry, c: N, i: N): N {
     .map((k) => bones.element(int(index[k])).mul(weight[k]).mul(bound))
     .reduce((a, b) => a.add(b));
   return bindMatrixInverse.mul(skinned).xyz;
-}
-
-/** An InstancedMesh's instance matrix of the instance being drawn, read as three's instance node reads it. */
-function instanceMatrix(builder: N, mesh: N): N {
-  const matrices = mesh.instanceMatrix;
-  const count = Math.max(matrices.count, 1);
-  if (matrices.isStorageInstancedBufferAttribute === true) {
-    return (storage(matrices, 'mat4', count) as N).element(instanceIndex);
-  }
-  if (count * 64 <= builder.getUniformBufferLimit()) {
-    return (buffer(matrices.array, 'mat4', count) as N).element(instanceIndex);
-  }
-  const read =
-    matrices.usage === DynamicDrawUsage ? instancedDynamicBufferAttribute : instancedBufferAttribute;
-  const [c0, c1, c2, c3] = [0, 4, 8, 12].map((offset) => read(new Interleaved(matrices, 4, offset) as never));
-  return (mat4 as N)(c0, c1, c2, c3);
-}
-
-/** `n` scaled so that its largest component is ±1 (0 stays 0): neither overflows nor underflows. */
-export function rescaled(n: N): N {
-  const m = max(abs(n.x), max(abs(n.y), abs(n.z)));
-  return select(m.greaterThan(0), n.div(max(m, 1e-30)), vec3(0));
-}
-
-/**
- * The object-space normal `n` of a face of an instance with matrix `m` (mat4): sign(det A)·cof(A) n for the
- * instance's linear part A scaled to its largest entry (ShadingMaterial's shadingCofactor): finite for a
- * singular or huge instance matrix, outward under mirroring.
- */
-export function instanceNormal(m: N, n: N): N {
-  const columns = [0, 1, 2].map((k) => m.element(k).xyz);
-  const s = columns.map((a) => max(abs(a.x), max(abs(a.y), abs(a.z)))).reduce((a, b) => max(a, b));
-  const [a0, a1, a2] = columns.map((a) => a.div(max(s, float(1e-30))));
-  const c0 = a1.cross(a2);
-  const c1 = a2.cross(a0);
-  const c2 = a0.cross(a1);
-  const product = c0.mul(n.x).add(c1.mul(n.y)).add(c2.mul(n.z));
-  return rescaled(select(a0.dot(c0).lessThan(0), product.negate(), product));
 }
