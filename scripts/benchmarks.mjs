@@ -28,6 +28,11 @@ export const SOURCES = [
   { name: 'scene', writer: 'bench/scene.bench.mjs', command: 'npm run bench -- scene' },
   { name: 'swap', writer: 'bench/swap.bench.mjs', command: 'npm run bench -- swap' },
   { name: 'webgpu', writer: 'bench/webgpu.bench.mjs', command: 'npm run bench -- webgpu' },
+  {
+    name: 'lecture-refactor',
+    writer: 'bench/lecture-refactor.bench.mjs',
+    command: 'npm run bench -- lecture-refactor',
+  },
   { name: 'lighting', writer: 'bench/lighting.bench.mjs', command: 'npm run bench -- lighting' },
   { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
   { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
@@ -883,6 +888,156 @@ function webgpu(r) {
   ];
 }
 
+const WEBGPU_REALISTIC_TITLE = 'Realistic scene on WebGPURenderer';
+
+/**
+ * Issue 23: the realistic scene on WebGPURenderer's backends, ShadingNodeMaterial in each shading against
+ * MeshPhongNodeMaterial (webgpu.json's `realistic`). @param {any} r @returns {string[]}
+ */
+function webgpuRealistic(r) {
+  const s = r.realistic;
+  if (!s) return [`## ${WEBGPU_REALISTIC_TITLE}`, '', missing('webgpu')];
+  const backends = WEBGPU_BACKENDS.filter((b) => s.perBackend?.[b]);
+  const tables = backends.flatMap((b) => {
+    const pb = s.perBackend[b];
+    const rows = Object.entries(pb.variants).map(([name, v]) => {
+      const row = /** @type {any} */ (v);
+      return [
+        row.vsBaseline ? `${name} (/ phong as it is: ${ratioCell(row.vsBaseline)})` : name,
+        frameCell(row),
+        row.gpuMs ? row.gpuMs.median.toFixed(1) : row.error ? '—' : 'n/a',
+        name === 'MeshPhongNodeMaterial' ? '—' : ratioCell(row.vsMeshPhong),
+        row.vsMeshPhong?.gpu ? row.vsMeshPhong.gpu.toFixed(2) : '—',
+      ];
+    });
+    return [
+      '',
+      `### ${pb.label}`,
+      '',
+      ...table(['variant', 'frame ms', 'GPU ms', '/ MeshPhongNodeMaterial', 'GPU-time ratio'], 'lrrrr', rows),
+    ];
+  });
+  return [
+    `## ${WEBGPU_REALISTIC_TITLE}`,
+    '',
+    fromLine('webgpu', r),
+    '',
+    `Issue 23: \`ShadingNodeMaterial\` in each shading against three's \`MeshPhongNodeMaterial\` (and \`MeshLambertNodeMaterial\`) on both backends of \`WebGPURenderer\`, in the scene an app has (the realistic scene of [Material in a realistic scene](#material-in-a-realistic-scene), drawn by the same module) at ${r.width}×${r.height}. Scene: ${s.scene}. ${s.frames} frames per variant in ${s.rounds} rounds, the variants of both backends interleaved frame by frame (each cycle renders one frame of every variant); ratios are the median of the ratios of frames from the same cycle, and the ratio of the medians in brackets. Frame ms: median (minimum), the render call and the read-back; GPU ms: the median of the backend's timer (see [Material on WebGPURenderer](#material-on-webgpurenderer)). ${r.note ?? ''}`.trim(),
+    ...tables,
+    '',
+    "Issue 23's targets against `MeshPhongNodeMaterial` on the same backend, phong shading ≤ 1.0×, Gouraud and flat cheaper (the median of the ratios of frames from the same cycle; the ratio of the medians in brackets):",
+    '',
+    ...table(
+      ['backend: shading', 'measured', 'GPU-time ratio', 'target', 'result'],
+      'lrrll',
+      Object.entries(s.targets ?? {}).map(([name, t]) => {
+        const x = /** @type {any} */ (t);
+        return [
+          name.replace(/^webgpu:/, 'WebGPU:').replace(/^webgl2:/, 'WebGL2:'),
+          ratioCell(x.ratio),
+          x.ratio?.gpu ? x.ratio.gpu.toFixed(2) : 'n/a',
+          x.target,
+          metCell(x.met),
+        ];
+      }),
+    ),
+    ...realisticShaderOps(s.shaderOps?.webgpu),
+    ...(s.cause ? ['', s.cause] : []),
+  ];
+}
+
+/**
+ * The realistic scene's generated WGSL per variant: statements and calls in the vertex and fragment stages'
+ * main functions. @param {Record<string, { vertex: Record<string, number> | null, fragment: Record<string, number> | null }> | undefined} ops
+ * @returns {string[]}
+ */
+function realisticShaderOps(ops) {
+  if (!ops) return [];
+  const cols = /** @type {const} */ ([
+    'normalize',
+    'length',
+    'dot',
+    'pow',
+    'exp2',
+    'divisions',
+    'derivatives',
+  ]);
+  return [
+    '',
+    "What each variant's WGSL (the WebGPU backend) does in its main functions: statements and branches (`if` blocks) per vertex and per fragment, and the fragment stage's calls:",
+    '',
+    ...table(
+      [
+        'variant',
+        'vertex statements',
+        'vertex branches',
+        'fragment statements',
+        'fragment branches',
+        ...cols,
+      ],
+      `l${'r'.repeat(4 + cols.length)}`,
+      Object.entries(ops).map(([name, o]) => [
+        name,
+        o.vertex?.statements ?? '—',
+        o.vertex?.branches ?? '—',
+        o.fragment?.statements ?? '—',
+        o.fragment?.branches ?? '—',
+        ...cols.map((c) => o.fragment?.[c] ?? '—'),
+      ]),
+    ),
+  ];
+}
+
+const LECTURE_REFACTOR_TITLE = 'Lecture scene before and after issue 23';
+
+/**
+ * Issue 23: the lecture scene with @shadelab/material before its refactor and as checked out, on WebGLRenderer
+ * and WebGPURenderer's backends (lecture-refactor.json). @param {any} r @returns {string[]}
+ */
+function lectureRefactor(r) {
+  /** @param {{ paired: number, median: number } | null | undefined} x */
+  const cell3 = (x) => (x ? `${x.paired.toFixed(3)} (${x.median.toFixed(3)})` : '—');
+  const rows = Object.entries(r.targets ?? {}).map(([name, t]) => {
+    const x = /** @type {any} */ (t);
+    const [backend, shading] = name.split(': ');
+    const pb = r.perBackend?.[backend] ?? {};
+    const s = pb.shadings?.[shading] ?? {};
+    return [
+      `${pb.label ?? backend} (\`${pb.material ?? '?'}\`): ${shading}`,
+      frameCell(s.before),
+      frameCell(s.after),
+      cell3(x.ratio),
+      x.ratio?.gpu ? x.ratio.gpu.toFixed(3) : 'n/a',
+      x.target,
+      metCell(x.met),
+      cell3(s.afterVsStaticBindings),
+    ];
+  });
+  return [
+    `## ${LECTURE_REFACTOR_TITLE}`,
+    '',
+    fromLine('lecture-refactor', r),
+    '',
+    `What issue 23's refactor (one definition of the options and of the lecture's equation, the GLSL as named chunks, the node material's surface) costs the lecture's scene: ${r.scene}. Drawn in the same run and page with the \`@shadelab/material\` of \`${r.before.rev}\` (\`${r.before.commit.slice(0, 7)}\`, before the refactor, bundled from git by the bench and drawn through the page's three.js) and of the run's commit, at ${r.width}×${r.height}. ${r.frames} frames per variant in ${r.rounds} rounds, both builds and every renderer interleaved frame by frame; frame ms: median (minimum); after / before: the median of the ratios of frames from the same cycle (the ratio of the medians in brackets); GPU: the ratio of the GPU-time medians.${r.staticBindings ? ` Static bindings: ${r.staticBindings} (same-cycle ratio; the ratio of the medians in brackets).` : ''} ${r.note ?? ''}`.trim(),
+    '',
+    ...table(
+      [
+        'renderer: shading',
+        'before ms',
+        'after ms',
+        'after / before',
+        'GPU',
+        'target',
+        'result',
+        'after / after with static bindings',
+      ],
+      'lrrrrllr',
+      rows,
+    ),
+    ...(r.cause ? ['', r.cause] : []),
+  ];
+}
+
 const LIGHTING_TITLE = 'The lighting itself';
 
 /**
@@ -1327,7 +1482,7 @@ export function renderBenchmarks(results) {
       '- [Speed against accuracy](#speed-against-accuracy) · [Material frame time](#material-frame-time)',
       '- [Material in a realistic scene](#material-in-a-realistic-scene) · [Lecture scene before and after issue 14](#lecture-scene-before-and-after-issue-14) · [Flat shading without preparation](#flat-shading-without-preparation)',
       '- [Swapped materials in a realistic scene](#swapped-materials-in-a-realistic-scene)',
-      '- [Material on WebGPURenderer](#material-on-webgpurenderer)',
+      '- [Material on WebGPURenderer](#material-on-webgpurenderer) · [Realistic scene on WebGPURenderer](#realistic-scene-on-webgpurenderer) · [Lecture scene before and after issue 23](#lecture-scene-before-and-after-issue-23)',
       '- [The lighting itself](#the-lighting-itself)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
@@ -1344,6 +1499,8 @@ export function renderBenchmarks(results) {
     section('scene', sceneFlat, 'Flat shading without preparation'),
     section('swap', swap, SWAP_TITLE),
     section('webgpu', webgpu, WEBGPU_TITLE),
+    section('webgpu', webgpuRealistic, WEBGPU_REALISTIC_TITLE),
+    section('lecture-refactor', lectureRefactor, LECTURE_REFACTOR_TITLE),
     section('lighting', lighting, LIGHTING_TITLE),
     section('camera-depth', cameraDepth, 'Camera depth precision'),
     section('trackball', trackball, 'Trackball'),
