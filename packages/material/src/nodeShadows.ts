@@ -24,7 +24,7 @@ export interface ShadowTerm {
 }
 
 /** The recorded terms of a build, by light node. */
-export type ShadowTerms = Map<N, ShadowTerm>;
+export type ShadowTerms = Map<unknown, ShadowTerm>;
 
 /**
  * The light nodes of three's lights that shadow this object in this build (as three's `AnalyticLightNode.setup`
