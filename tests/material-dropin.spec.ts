@@ -10,6 +10,7 @@
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { DropinCase, FogKind, GeometryKind, LightSet, RendererKind, RunResult } from './harness/dropin';
+import { openHarness } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -34,17 +35,7 @@ const MAX = 3;
 const BRIGHTNESS = { gouraud: { bias: 1, mean: 2 }, flat: { bias: 1, mean: 6 } } as const;
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
-async function open(page: Page): Promise<string[]> {
-  const problems: string[] = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
-      problems.push(m.text());
-  });
-  await page.goto('/harness/dropin.html');
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
-  return problems;
-}
+const open = (page: Page): Promise<string[]> => openHarness(page, 'dropin');
 
 const label = (c: DropinCase): string => `${c.geometry} ${c.lights} fog=${c.fog} ${c.surface} ${c.shading}`;
 

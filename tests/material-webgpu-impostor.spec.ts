@@ -4,6 +4,7 @@
 // mesh sphere, and its bad-input errors against SphereImpostorMaterial's. Harness: tests/harness/webgpu-impostor.ts.
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
+import { openHarness } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -75,17 +76,7 @@ interface Harness {
 }
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
-async function open(page: Page): Promise<string[]> {
-  const problems: string[] = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
-      problems.push(m.text());
-  });
-  await page.goto('/harness/webgpu-impostor.html');
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
-  return problems;
-}
+const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-impostor');
 
 const VARIANTS: Variant[] = (['phong', 'blinn-phong'] as const).flatMap((lighting) =>
   [0, 4].map((celBands) => ({ lighting, celBands })),

@@ -6,21 +6,12 @@
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { Backend, Instance, OutlineConfig, WebGPUOutlineHarness } from './harness/webgpu-outline';
+import { openHarness } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
-async function open(page: Page): Promise<string[]> {
-  const problems: string[] = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
-      problems.push(m.text());
-  });
-  await page.goto('/harness/webgpu-outline.html');
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
-  return problems;
-}
+const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-outline');
 
 function outline(page: Page, backend: Backend, config: OutlineConfig) {
   return page.evaluate(

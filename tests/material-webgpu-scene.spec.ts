@@ -7,6 +7,7 @@
 import { expect, type Page, test } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { Diff, SceneCase, WebGPUSceneHarness } from './harness/webgpu-scene';
+import { openHarness } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -14,17 +15,7 @@ type Harness = WebGPUSceneHarness;
 const BACKENDS = ['webgpu', 'webgl2'] as const;
 
 /** Opens the harness; returns the page and console errors seen (none are expected unless a test provokes them). */
-async function open(page: Page): Promise<string[]> {
-  const problems: string[] = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => {
-    if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
-      problems.push(m.text());
-  });
-  await page.goto('/harness/webgpu-scene.html');
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
-  return problems;
-}
+const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-scene');
 
 function run<A extends unknown[], R>(page: Page, name: keyof Harness, ...args: A): Promise<R> {
   return page.evaluate(
