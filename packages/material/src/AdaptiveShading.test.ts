@@ -260,6 +260,95 @@ describe('AdaptiveShading: choices', () => {
     expect(seen.length).toBeLessThanOrEqual(2);
   });
 
+  it("update's cache: a still frame computes nothing again; what moved is computed again, as a fresh one would", () => {
+    // No hysteresis, so that the choice of a fresh AdaptiveShading (no last frame) is the oracle.
+    const a = new AdaptiveShading({ maxError: 8, model: FAST, hysteresis: 0 });
+    const sphere = new SubdivisionSphereGeometry({ level: 4 });
+    const big = new Mesh(sphere, new ShadingMaterial());
+    const small = new Mesh(sphere, new ShadingMaterial());
+    big.position.set(-1.2, 0, 0);
+    a.add(big).add(small);
+    const cam = camera(4);
+    small.position.set(1.5, 0, -2);
+    a.update(cam, VIEW);
+    expect(a.stats).toEqual({ units: 2, recomputed: 2, allocated: true });
+    const first = [a.choiceOf(big), a.choiceOf(small)];
+    // Nothing moved: nothing computed, every choice kept.
+    a.update(cam, VIEW);
+    a.update(cam);
+    expect(a.stats).toEqual({ units: 2, recomputed: 0, allocated: false });
+    expect([a.choiceOf(big), a.choiceOf(small)]).toEqual(first);
+    // One object moved far away: only it is computed again, and it gets what a fresh AdaptiveShading gives it.
+    small.position.set(1.5, 0, -150);
+    a.update(cam, VIEW);
+    expect(a.stats).toEqual({ units: 2, recomputed: 1, allocated: true });
+    const fresh = new AdaptiveShading({ maxError: 8, model: FAST, hysteresis: 0 });
+    // Its own meshes: the managed ones wear a's variants and geometries.
+    const [bigF, smallF] = [big, small].map((o) => {
+      const copy = new Mesh(sphere, new ShadingMaterial());
+      copy.position.copy(o.position);
+      return copy;
+    });
+    fresh.add(bigF, { table: a.tableOf(big) as never }).add(smallF, { table: a.tableOf(small) as never });
+    fresh.update(cam, VIEW);
+    expect(a.choiceOf(small)).toEqual(fresh.choiceOf(smallF));
+    expect(a.choiceOf(big)).toEqual(fresh.choiceOf(bigF));
+    expect(a.choiceOf(small)).not.toEqual(first[1]);
+    fresh.dispose();
+    // The camera (its matrix or its projection) or the viewport: everything again.
+    cam.position.x = 0.01;
+    a.update(cam, VIEW);
+    expect(a.stats.recomputed).toBe(2);
+    cam.fov = 40;
+    cam.updateProjectionMatrix();
+    a.update(cam, VIEW);
+    expect(a.stats.recomputed).toBe(2);
+    a.update(cam, { width: 400, height: 300 });
+    expect(a.stats.recomputed).toBe(2);
+    a.update(cam);
+    expect(a.stats.recomputed).toBe(0);
+    // Adding an object spends the allowance again (the new one computed, the others from the cache).
+    const third = new Mesh(sphere, new ShadingMaterial());
+    a.add(third, { table: a.tableOf(small) as never });
+    a.update(cam);
+    expect(a.stats).toEqual({ units: 3, recomputed: 1, allocated: true });
+    a.remove(third);
+    a.update(cam);
+    expect(a.stats).toEqual({ units: 2, recomputed: 0, allocated: true });
+    a.dispose();
+  });
+
+  it("update's cache, instances: flagged matrices or a new count compute every instance again, a still frame none", () => {
+    const n = 200;
+    const a = new AdaptiveShading({ maxError: 8, model: FAST });
+    const im = new InstancedMesh(new SubdivisionSphereGeometry({ level: 3 }), new ShadingMaterial(), n);
+    const m = new Matrix4();
+    for (let i = 0; i < n; i++) im.setMatrixAt(i, m.makeTranslation(i % 10, Math.floor(i / 10), -i));
+    a.add(im);
+    const cam = camera(20);
+    a.update(cam, VIEW);
+    expect(a.stats).toEqual({ units: n, recomputed: n, allocated: true });
+    a.update(cam);
+    expect(a.stats).toEqual({ units: n, recomputed: 0, allocated: false });
+    const before = Array.from({ length: n }, (_, i) => a.choiceOf(im, i));
+    // Written but not flagged: three would not upload it either, and the cache keeps the old choices.
+    im.setMatrixAt(0, m.makeTranslation(0, 0, -400));
+    a.update(cam);
+    expect(a.stats.recomputed).toBe(0);
+    im.instanceMatrix.needsUpdate = true;
+    a.update(cam);
+    expect(a.stats).toEqual({ units: n, recomputed: n, allocated: true });
+    expect(a.choiceOf(im, 0)).not.toEqual(before[0]);
+    // Moving the InstancedMesh itself moves every instance.
+    im.position.x = 1;
+    a.update(cam);
+    expect(a.stats.recomputed).toBe(n);
+    im.count = 100;
+    a.update(cam);
+    expect(a.stats).toEqual({ units: 100, recomputed: 100, allocated: true });
+    a.dispose();
+  });
+
   it('draws only the material variants: one per shading, shared, with the source options', () => {
     const a = new AdaptiveShading({ maxError: 32, model: FAST });
     const source = new ShadingMaterial({ ka: 0.2, kd: 0.7, ks: 0.3, shininess: 16 });

@@ -97,6 +97,28 @@ interface Entry {
   slotOf: Int32Array;
   matrixVersion: number;
   colorVersion: number;
+  // The cache of `update`: each unit's costs and over-budget pixels, and what they were computed from.
+  /** Per unit (1 for a Mesh, one per instance): costs per candidate. */
+  unitCosts: Float64Array[];
+  /** Per unit: over-budget pixels per candidate. */
+  unitOvers: Float64Array[];
+  /** Per unit: the drawn pixels (the floor of the frame's allowance). */
+  unitDrawn: Float64Array;
+  /** The object's matrixWorld the units were computed with. */
+  worldKey: Float64Array;
+  /** The instance matrices' version (and count) the units were computed with; −1: never. */
+  unitsVersion: number;
+  unitsCount: number;
+}
+
+/** What the last {@link AdaptiveShading.update} did: how much the cache saved. */
+export interface AdaptiveUpdateStats {
+  /** Units chosen for: one per Mesh, one per instance of each InstancedMesh. */
+  readonly units: number;
+  /** Units whose projected size, costs and over-budget pixels were computed again (the others came from the cache). */
+  readonly recomputed: number;
+  /** Whether the frame's allowance was spent again (`false`: nothing moved, every choice was kept as it was). */
+  readonly allocated: boolean;
 }
 
 const _viewport = /* @__PURE__ */ new Vector4();
@@ -145,6 +167,11 @@ export class AdaptiveShading {
   readonly #tables = new WeakMap<BufferGeometry, Map<string, ShadingErrorTable>>();
   readonly #made = new Set<BufferGeometry>();
   #size: { width: number; height: number } | null = null;
+  /** The camera's matrixWorld and projectionMatrix and the viewport's size at the last update. */
+  readonly #cameraKey = new Float64Array(34).fill(Number.NaN);
+  /** Objects were added, removed or resized since the last allocation. */
+  #stale = true;
+  #stats: AdaptiveUpdateStats = { units: 0, recomputed: 0, allocated: false };
 
   /**
    * @param options - the budget and the tuning.
@@ -245,8 +272,15 @@ export class AdaptiveShading {
       slotOf: new Int32Array(0),
       matrixVersion: -1,
       colorVersion: -1,
+      unitCosts: [],
+      unitOvers: [],
+      unitDrawn: new Float64Array(0),
+      worldKey: new Float64Array(16).fill(Number.NaN),
+      unitsVersion: -1,
+      unitsCount: -1,
     };
     this.#entries.set(object, entry);
+    this.#stale = true;
     if (instanced) this.#resize(entry, instanced.count);
     return this;
   }
@@ -256,6 +290,7 @@ export class AdaptiveShading {
     const e = this.#entries.get(object);
     if (!e) return this;
     this.#entries.delete(object);
+    this.#stale = true;
     object.material = e.source;
     object.geometry = e.geometry;
     if (e.instanced) {
@@ -290,10 +325,26 @@ export class AdaptiveShading {
     return e ? (e.groups.filter((g) => g !== null && g.count > 0) as InstancedMesh[]) : [];
   }
 
+  /** What the last `update` did (units, how many were computed again, whether the choices were made again). */
+  get stats(): AdaptiveUpdateStats {
+    return this.#stats;
+  }
+
   /**
-   * Choose for every managed object and instance, for `camera` and the viewport (the renderer's current
-   * viewport, or a size in physical pixels; remembered for later calls). Call before `renderer.render`.
-   * Updates the objects' world matrices and the camera's first.
+   * Choose for every managed object and instance, for `camera` and the viewport. Call before `renderer.render`.
+   * Updates the camera's and the objects' world matrices first.
+   *
+   * The viewport is the size of the picture in physical pixels (what the projected sizes are measured in): pass
+   * the `WebGLRenderer` (its current viewport: the canvas's drawing-buffer size, pixel ratio included, or what
+   * `setViewport` set) or `{ width, height }` in physical pixels (CSS pixels × `devicePixelRatio`). It is
+   * remembered: give it at least once, and again when it changes (`update(camera)` reuses the last one).
+   *
+   * Cached: each object's (and each instance's) projected size, costs and over-budget pixels are computed
+   * again only when the camera (its `matrixWorld` or `projectionMatrix`), the viewport, the object's
+   * `matrixWorld` or, for an InstancedMesh, its `instanceMatrix.version` (bumped by `needsUpdate = true`) or
+   * count changed; the frame's allowance is spent again only when one of them did, or an object was added or
+   * removed. A still scene costs a comparison of matrices per object. `stats` says what the last call did.
+   * @throws TypeError when no viewport was ever given.
    */
   update(camera: Camera, viewport?: WebGLRenderer | { width: number; height: number }): void {
     if (viewport !== undefined) {
@@ -309,6 +360,14 @@ export class AdaptiveShading {
       );
     }
     camera.updateMatrixWorld();
+    const key = this.#cameraKey;
+    let cameraMoved = !same(key, 0, camera.matrixWorld.elements);
+    cameraMoved = !same(key, 16, camera.projectionMatrix.elements) || cameraMoved;
+    if (key[32] !== size.width || key[33] !== size.height) {
+      key[32] = size.width;
+      key[33] = size.height;
+      cameraMoved = true;
+    }
     const screen = Math.max(0, size.width * size.height) || 0;
     const p = camera.projectionMatrix.elements;
     const focal = (size.height / 2) * Math.abs(p[5]);
@@ -316,32 +375,61 @@ export class AdaptiveShading {
     _view.copy(camera.matrixWorld).invert();
     const { maxError, overFraction: fraction, hysteresis } = this.parameters;
 
-    const units: AllocationUnit[] = [];
-    const owners: { entry: Entry; instance: number }[] = [];
-    let drawn = 0;
+    let moved = this.#stale;
+    let units = 0;
+    let recomputed = 0;
     for (const e of this.#entries.values()) {
       this.#sync(e);
       const o = e.object;
       o.updateWorldMatrix(true, false);
       if (e.instanced) this.#adoptInstances(e);
       const n = e.instanced ? e.count : 1;
+      units += n;
+      const worldMoved = !same(e.worldKey, 0, o.matrixWorld.elements);
+      const version = e.instanced ? e.instanced.instanceMatrix.version : 0;
+      if (!cameraMoved && !worldMoved && e.unitsVersion === version && e.unitsCount === n) continue;
+      moved = true;
+      recomputed += n;
+      e.unitsVersion = version;
+      e.unitsCount = n;
+      if (e.unitCosts.length !== n) {
+        e.unitCosts = new Array(n);
+        e.unitOvers = new Array(n);
+        e.unitDrawn = new Float64Array(n);
+      }
       for (let i = 0; i < n; i++) {
         if (e.instanced) {
           _instance.fromArray(e.instanced.instanceMatrix.array, 16 * i);
           _world.multiplyMatrices(o.matrixWorld, _instance);
         } else _world.copy(o.matrixWorld);
         const unit = this.#unit(e, _world, camera, size.height, focal, ortho, screen, maxError);
-        drawn += unit.drawn;
-        units.push({
-          costs: unit.costs,
-          overs: unit.overs,
+        e.unitCosts[i] = unit.costs;
+        e.unitOvers[i] = unit.overs;
+        e.unitDrawn[i] = unit.drawn;
+      }
+    }
+    this.#stats = { units, recomputed, allocated: moved };
+    if (!moved) {
+      for (const e of this.#entries.values()) if (e.instanced) this.#flush(e);
+      return;
+    }
+    this.#stale = false;
+    const all: AllocationUnit[] = [];
+    const owners: { entry: Entry; instance: number }[] = [];
+    let drawn = 0;
+    for (const e of this.#entries.values()) {
+      for (let i = 0; i < e.unitCosts.length; i++) {
+        drawn += e.unitDrawn[i];
+        all.push({
+          costs: e.unitCosts[i],
+          overs: e.unitOvers[i],
           previous: e.instanced ? e.groupOf[i] : e.choice,
         });
         owners.push({ entry: e, instance: i });
       }
     }
     const allowance = fraction * Math.min(drawn, screen);
-    const choice = allocateShading(units, allowance, hysteresis);
+    const choice = allocateShading(all, allowance, hysteresis);
     for (let u = 0; u < owners.length; u++) {
       const { entry, instance } = owners[u];
       if (entry.instanced) this.#move(entry, instance, choice[u]);
@@ -589,6 +677,8 @@ export class AdaptiveShading {
   /** The number of instances changed: every instance starts again in the reference group. */
   #resize(e: Entry, count: number): void {
     const im = e.instanced as InstancedMesh;
+    this.#stale = true;
+    e.unitsCount = -1;
     for (const g of e.groups) {
       if (!g) continue;
       im.remove(g);
@@ -684,6 +774,18 @@ export class AdaptiveShading {
       dirty[1] = -1;
     }
   }
+}
+
+/** Whether `key[at … at + 16)` equals `m`; copies `m` there when not. */
+function same(key: Float64Array, at: number, m: ArrayLike<number>): boolean {
+  let equal = true;
+  for (let i = 0; i < 16; i++) {
+    if (key[at + i] !== m[i]) {
+      key[at + i] = m[i];
+      equal = false;
+    }
+  }
+  return equal;
 }
 
 function markRange(g: InstancedMesh, from: number, to: number): void {

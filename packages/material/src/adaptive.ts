@@ -10,6 +10,7 @@ export {
   type AdaptiveChoice,
   AdaptiveShading,
   type AdaptiveShadingOptions,
+  type AdaptiveUpdateStats,
 } from './AdaptiveShading.js';
 export {
   type CostedShading,
