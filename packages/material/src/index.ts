@@ -6,6 +6,7 @@
  * @mergeModuleWith <project>
  */
 export { computeNormalMatrix } from './computeNormalMatrix.js';
+export { explainShade, type LightExplanation, type ShadeExplanation } from './explainShade.js';
 export { eyeOf } from './eyeOf.js';
 export {
   type FlatShadingGeometryOptions,

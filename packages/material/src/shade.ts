@@ -90,8 +90,8 @@ export function threeDistanceFalloff(t: number, distance: number, decay: number)
   return falloff;
 }
 
-/** GLSL's smoothstep (three's spot cone). */
-function smoothstep(e0: number, e1: number, x: number): number {
+/** GLSL's smoothstep (three's spot cone). Internal (explainShade.ts shares it): not re-exported. */
+export function smoothstep(e0: number, e1: number, x: number): number {
   const t = Math.min(Math.max((x - e0) / (e1 - e0), 0), 1);
   return t * t * (3 - 2 * t);
 }
@@ -162,8 +162,8 @@ export function celSpecular(power: number): number {
   return power >= 0.5 ? 1 : 0;
 }
 
-/** three's factor of a light's colour (`BRDF_Lambert`): see {@link ShadeThreeLight}. */
-const RECIPROCAL_PI = 1 / Math.PI;
+/** three's factor of a light's colour (`BRDF_Lambert`): see {@link ShadeThreeLight}. Internal: not re-exported. */
+export const RECIPROCAL_PI = 1 / Math.PI;
 
 const AXIS_Z: Vec3Like = [0, 0, 1];
 const WHITE: Vec3Like = [1, 1, 1];
