@@ -2,6 +2,7 @@
  * Where the state lives outside the page: the URL hash (`#s=<json>`, shareable) and localStorage (kept across
  * reloads). Both are untrusted on the way in and go through the strict {@link parseState}.
  */
+import { parseEmbedFlag } from './embed';
 import { defaultState, type ParseResult, type PlaygroundState, parseState, serializeState } from './schema';
 
 const STORAGE_KEY = 'shadelab.state';
@@ -45,16 +46,21 @@ export function readUrlState(): ParseResult | null {
   return text === null ? null : parseState(text);
 }
 
-/** URL first (a shared link wins), then localStorage, then the lecture's scene. */
+/**
+ * URL first (a shared link wins), then localStorage, then the lecture's scene. An embed (`?embed`) reads only the
+ * URL: a slide shows the state its link gives, or the lecture's scene, never what this browser saved.
+ */
 export function loadInitialState(): InitialState {
   const refused: string[] = [];
+  const embed = parseEmbedFlag(window.location.search);
+  if (embed.error) refused.push(embed.error);
   const fromUrl = readHash();
   if (fromUrl !== null) {
     const result = parseState(fromUrl);
     if (result.ok) return { state: result.state, source: 'url', refused };
     refused.push(`The state in the URL was refused: ${result.error}`);
   }
-  const stored = readStorage(STORAGE_KEY);
+  const stored = embed.embed ? null : readStorage(STORAGE_KEY);
   if (stored !== null) {
     const result = parseState(stored);
     if (result.ok) return { state: result.state, source: 'storage', refused };
@@ -63,13 +69,13 @@ export function loadInitialState(): InitialState {
   return { state: defaultState(), source: 'default', refused };
 }
 
-/** Writes the state to the URL (replacing the history entry) and to localStorage. */
+/** Writes the state to the URL (replacing the history entry) and to localStorage (not from an embed). */
 export function saveState(state: PlaygroundState) {
   const text = serializeState(state);
   const params = new URLSearchParams();
   params.set(HASH_KEY, text);
   window.history.replaceState(null, '', `${window.location.pathname}${window.location.search}#${params}`);
-  writeStorage(STORAGE_KEY, text);
+  if (!parseEmbedFlag(window.location.search).embed) writeStorage(STORAGE_KEY, text);
 }
 
 /** The shareable link to the current state. */
