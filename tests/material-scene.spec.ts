@@ -1,6 +1,7 @@
 import { createHash } from 'node:crypto';
 import { expect, type Page, test } from '@playwright/test';
-import { activeGlsl, withoutUseFog } from './glsl-active';
+import { activeGlsl } from '../playground/src/learn/compiledShader';
+import { withoutUseFog } from './glsl-active';
 import type { ProgramSource, SceneConfig, SceneInstance, SceneStats } from './harness/material';
 
 // ShadingMaterial in an ordinary three.js scene (issue 14, phase 1): three's program parameters (instancing,
@@ -67,7 +68,7 @@ test('a scene without the new features compiles the same programs as before (act
   expect(programs.length).toBe(74);
   // One line per scene: the cache key (three's parameters and the material's defines; the only difference
   // allowed is `useFog`, true by default like MeshPhongMaterial's, which compiles to nothing without
-  // scene.fog) and the hashes of the code the GPU compiles (the preprocessor's active lines, see glsl-active.ts).
+  // scene.fog) and the hashes of the code the GPU compiles (the preprocessor's active lines, see playground/src/learn/compiledShader.ts).
   const table = programs
     .map(
       (p) =>
