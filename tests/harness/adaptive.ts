@@ -1,26 +1,38 @@
 // Harness for tests/adaptive.spec.ts (issue 25): AdaptiveShading's honesty against the full-detail Phong picture
-// of the same scene (a field of subdivision spheres and a field of torus knots, perspective and orthographic,
-// one white DirectionalLight of intensity π: Id = Is = 1, the error model's default light), and 1,000 moving
-// instances counted in renderer.info and in their groups' attribute versions.
-import { ShadingMaterial } from '@shadelab/material';
+// of the same scene (a field of subdivision spheres, a field of torus knots and a field of a loaded glTF model,
+// perspective and orthographic, one white DirectionalLight of intensity π: Id = Is = 1, the error model's default
+// light), and 1,000 moving instances counted in renderer.info and in their groups' attribute versions.
+// The model: three meshes built in code (a lathed vase, a torus, a bumpy icosphere: three's geometries with
+// MeshStandardMaterials), exported with three's GLTFExporter (binary GLB, nothing downloaded), loaded back with
+// GLTFLoader and given ShadingMaterials by swapMaterials, as an app would load one.
+import { ShadingMaterial, swapMaterials } from '@shadelab/material';
 import { AdaptiveShading } from '@shadelab/material/adaptive';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   type BufferGeometry,
   type Camera,
   DirectionalLight,
+  Group,
+  IcosahedronGeometry,
   InstancedMesh,
+  LatheGeometry,
   Matrix4,
   Mesh,
+  MeshStandardMaterial,
+  type Object3D,
   OrthographicCamera,
   PerspectiveCamera,
   Scene,
+  TorusGeometry,
   TorusKnotGeometry,
+  Vector2,
   WebGLRenderer,
 } from 'three';
+import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { readCanvas } from './lib/pixels';
 
-export type Field = 'spheres' | 'knots';
+export type Field = 'spheres' | 'knots' | 'model';
 export type CameraKind = 'perspective' | 'orthographic';
 
 export interface HonestyReport {
@@ -60,10 +72,82 @@ function light(): DirectionalLight {
   return l;
 }
 
-const geometries: Record<Field, BufferGeometry> = {
+const geometries: Record<Exclude<Field, 'model'>, BufferGeometry> = {
   spheres: new SubdivisionSphereGeometry({ base: 'icosahedron', level: 4 }),
   knots: new TorusKnotGeometry(0.8, 0.28, 96, 12),
 };
+
+/** The model as a tool would write it: three meshes of three's geometries, about one unit across together. */
+function modelSource(): Group {
+  const group = new Group();
+  group.name = 'model';
+  const profile = Array.from({ length: 12 }, (_, i) => {
+    const t = i / 11;
+    return new Vector2(0.05 + 0.35 * Math.sin(Math.PI * t) + 0.1 * t, 1.1 * t - 0.55);
+  });
+  const vase = new Mesh(
+    new LatheGeometry(profile, 32),
+    new MeshStandardMaterial({ color: 0xb07050, roughness: 0.4 }),
+  );
+  vase.name = 'vase';
+  vase.position.x = -0.55;
+  const ring = new Mesh(
+    new TorusGeometry(0.32, 0.11, 16, 48),
+    new MeshStandardMaterial({ color: 0x6080c0, roughness: 0.3 }),
+  );
+  ring.name = 'ring';
+  ring.position.set(0.4, 0.3, 0);
+  ring.rotation.x = 0.8;
+  const bumps = new IcosahedronGeometry(0.3, 3);
+  const p = bumps.getAttribute('position');
+  for (let i = 0; i < p.count; i++) {
+    const k = 1 + 0.08 * Math.sin(9 * p.getX(i)) * Math.cos(7 * p.getY(i));
+    p.setXYZ(i, p.getX(i) * k, p.getY(i) * k, p.getZ(i) * k);
+  }
+  bumps.computeVertexNormals();
+  const rock = new Mesh(bumps, new MeshStandardMaterial({ color: 0x90a060, roughness: 0.6 }));
+  rock.name = 'rock';
+  rock.position.set(0.4, -0.35, 0);
+  group.add(vase, ring, rock);
+  return group;
+}
+
+/** The loaded model: the GLB's scene, as GLTFLoader gives it (cloned per field slot, then swapped). */
+const loaded = await new GLTFLoader().parseAsync(
+  (await new GLTFExporter().parseAsync(modelSource(), { binary: true })) as ArrayBuffer,
+  '',
+);
+
+/** The meshes GLTFLoader gave back (their names, vertex counts): what the test checks was loaded. */
+function loadedModel(): { name: string; vertices: number; material: string }[] {
+  const out: { name: string; vertices: number; material: string }[] = [];
+  loaded.scene.traverse((o) => {
+    if ((o as Mesh).isMesh) {
+      const m = o as Mesh;
+      out.push({
+        name: m.name,
+        vertices: m.geometry.getAttribute('position').count,
+        material: (m.material as { type: string }).type,
+      });
+    }
+  });
+  return out;
+}
+
+/** One slot of a field: a mesh of `kind`, or a clone of the loaded model with ShadingMaterials swapped in. */
+function item(kind: Field, material: ShadingMaterial): { object: Object3D; meshes: Mesh[] } {
+  if (kind !== 'model') {
+    const m = new Mesh(geometries[kind], material);
+    return { object: m, meshes: [m] };
+  }
+  const clone = loaded.scene.clone(true);
+  swapMaterials(clone);
+  const meshes: Mesh[] = [];
+  clone.traverse((o) => {
+    if ((o as Mesh).isMesh) meshes.push(o as Mesh);
+  });
+  return { object: clone, meshes };
+}
 
 /** A field of 5 × 4 × 3 objects receding in depth, apart (no overlap on screen from the front). */
 function field(kind: Field): { scene: Scene; meshes: Mesh[] } {
@@ -74,13 +158,13 @@ function field(kind: Field): { scene: Scene; meshes: Mesh[] } {
   for (let z = 0; z < 3; z++) {
     for (let y = 0; y < 4; y++) {
       for (let x = 0; x < 5; x++) {
-        const m = new Mesh(geometries[kind], material);
+        const { object: m, meshes: parts } = item(kind, material);
         const spread = 1 + z * 1.6;
         m.position.set((x - 2) * 2.6 * spread, (y - 1.5) * 2.6 * spread, -z * 14);
         m.rotation.set(0.3 * x, 0.5 * y, 0.2 * z);
-        m.scale.setScalar(1 - 0.2 * ((x + y) % 3));
+        m.scale.setScalar((1 - 0.2 * ((x + y) % 3)) * (kind === 'model' ? 1.6 : 1));
         scene.add(m);
-        meshes.push(m);
+        meshes.push(...parts);
       }
     }
   }
@@ -98,9 +182,13 @@ function camera(kind: CameraKind): Camera {
   return c;
 }
 
-function honesty(kind: Field, cameraKind: CameraKind, budget: number): HonestyReport {
+function honesty(kind: Field, cameraKind: CameraKind, budget: number, zoom = 1): HonestyReport {
   const { scene, meshes } = field(kind);
   const cam = camera(cameraKind);
+  if (cam instanceof OrthographicCamera) {
+    cam.zoom = zoom;
+    cam.updateProjectionMatrix();
+  }
   renderer.render(scene, cam);
   const reference = readCanvas(renderer, W, H);
   const adaptive = new AdaptiveShading({ maxError: budget });
@@ -188,11 +276,12 @@ function instances(frames: number): InstancesReport {
 declare global {
   interface Window {
     adaptiveHarness: {
-      honesty(field: Field, camera: CameraKind, budget: number): HonestyReport;
+      honesty(field: Field, camera: CameraKind, budget: number, zoom?: number): HonestyReport;
+      loadedModel(): { name: string; vertices: number; material: string }[];
       instances(frames: number): InstancesReport;
     };
   }
 }
 
-window.adaptiveHarness = { honesty, instances };
+window.adaptiveHarness = { honesty, instances, loadedModel };
 document.body.dataset.ready = '1';
