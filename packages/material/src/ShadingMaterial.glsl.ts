@@ -11,6 +11,9 @@
 //   FLAT_DERIVATIVES                               flat shading of a plain indexed geometry: per-fragment lighting
 //                                                  with the face normal from screen-space derivatives
 //   SHADING_EMISSIVE                               emissive ≠ black (added after the lighting)
+//   SHADING_OUTPUT_<NAME>                          output ≠ 'color': one term, the attenuation or the normal
+//                                                  (see outputChunks.glsl.ts)
+//   SHADING_MODEL_NORMALS                          normalMatrix 'model': normals × M, the lecture's wrong way
 //   SHADING_THREE_LIGHTS (SHADING_LIGHT_CUTOFF, SHADING_INVERSE_SQUARE, SHADING_VIEW_SPACE)  three's lights
 // three's DOUBLE_SIDED / FLIP_SIDED (side): a back face is lit with its flipped normal (gl_FrontFacing).
 // and by three's program parameters (USE_INSTANCING, USE_SKINNING, USE_FOG, NUM_CLIPPING_PLANES, …: see
@@ -21,11 +24,12 @@
 // has no side effects on import (it tree-shakes, and nothing is written into three's globals), and two copies of
 // it in one app (two versions, one three) never compile one another's chunks under a shared `shadelab_` name.
 import * as lighting from './lightingChunks.glsl.js';
+import * as output from './outputChunks.glsl.js';
 import * as shading from './shadingChunks.glsl.js';
 import * as shadows from './shadowChunks.glsl.js';
 
 /** The chunks by name (what `#include <name>` is to three's ShaderChunk). */
-const include = { ...lighting, ...shading, ...shadows };
+const include = { ...lighting, ...output, ...shading, ...shadows };
 
 /** Vertex stage. */
 export const vertexShader = /* glsl */ `
@@ -37,8 +41,10 @@ export const vertexShader = /* glsl */ `
 #include <logdepthbuf_pars_vertex>
 #include <clipping_planes_pars_vertex>
 ${include.sceneFeatures}
+${include.outputFeatures}
 ${include.surfaceVertexPars}
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
+${include.modelNormalsVertex}
 ${include.instanceChunk}
 ${include.shadowFeatures}
 ${include.shadowVertexPars}
@@ -77,6 +83,7 @@ export const fragmentShader = /* glsl */ `
 #include <fog_pars_fragment>
 #include <clipping_planes_pars_fragment>
 ${include.sceneFeatures}
+${include.outputFeatures}
 ${include.surfaceFragmentPars}
 ${include.shadowFeatures}
 ${include.shadowFragmentPars}

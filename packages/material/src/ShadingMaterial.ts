@@ -29,11 +29,15 @@ import { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } f
 import {
   checkCelBands,
   checkLighting,
+  checkNormalMatrix,
+  checkOutput,
   checkPhongLights,
   checkShading,
+  type NormalMatrixMode,
   SHADING_DEFAULTS,
   type Shading,
   type ShadingOptions,
+  type ShadingOutput,
 } from './options.js';
 import { PhongLight } from './PhongLight.js';
 import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
@@ -225,6 +229,8 @@ export class ShadingMaterial extends ShaderMaterial {
   #shading: Shading = 'phong';
   #lighting: Lighting = 'phong';
   #celBands = 0;
+  #output: ShadingOutput = SHADING_DEFAULTS.output;
+  #normalMatrix: NormalMatrixMode = SHADING_DEFAULTS.normalMatrix;
   #shininess = 32;
   #lights: readonly PhongLight[] = Object.freeze([]);
   // The PhongLights that light the last draw: the list when it is not empty, else the scene's.
@@ -280,6 +286,8 @@ export class ShadingMaterial extends ShaderMaterial {
     alphaMap = null,
     normalMap = null,
     normalScale = new Vector2(1, 1),
+    output = SHADING_DEFAULTS.output,
+    normalMatrix = SHADING_DEFAULTS.normalMatrix,
   }: ShadingMaterialOptions = {}) {
     super({
       vertexShader,
@@ -317,6 +325,8 @@ export class ShadingMaterial extends ShaderMaterial {
     this.shading = shading;
     this.lighting = lighting;
     this.celBands = celBands;
+    this.output = output;
+    this.normalMatrix = normalMatrix;
     this.ka = ka;
     this.kd = kd;
     this.ks = ks;
@@ -418,6 +428,33 @@ export class ShadingMaterial extends ShaderMaterial {
   }
   set celBands(value: number) {
     this.#celBands = checkCelBands(OWNER, value);
+    this.#syncDefines();
+  }
+
+  /**
+   * What the material draws: `'color'`, or `'ambient'`, `'diffuse'`, `'specular'`, `'attenuation'` or
+   * `'normal'` alone, a debugging aid (exactly what each shows: {@link ShadingOutput}). A define
+   * (`SHADING_OUTPUT_<NAME>`), only when not `'color'`: changing it recompiles. @default 'color'
+   */
+  get output(): ShadingOutput {
+    return this.#output;
+  }
+  set output(value: ShadingOutput) {
+    this.#output = checkOutput(OWNER, value);
+    this.#syncDefines();
+  }
+
+  /**
+   * How normals go to world space: `'inverse-transpose'` (the normal matrix, right) or `'model'` (the model
+   * matrix itself, the lecture's wrong way under a non-uniform scale), a teaching aid (see
+   * {@link NormalMatrixMode}). A define (`SHADING_MODEL_NORMALS`), only when `'model'`: changing it
+   * recompiles. @default 'inverse-transpose'
+   */
+  get normalMatrix(): NormalMatrixMode {
+    return this.#normalMatrix;
+  }
+  set normalMatrix(value: NormalMatrixMode) {
+    this.#normalMatrix = checkNormalMatrix(OWNER, value);
     this.#syncDefines();
   }
 
@@ -564,6 +601,8 @@ export class ShadingMaterial extends ShaderMaterial {
     if (this.#viewSpace) defines.SHADING_VIEW_SPACE = '';
     const e = this.#emissive;
     if (e.r > 0 || e.g > 0 || e.b > 0) defines.SHADING_EMISSIVE = '';
+    if (this.#output !== 'color') defines[`SHADING_OUTPUT_${this.#output.toUpperCase()}`] = '';
+    if (this.#normalMatrix === 'model') defines.SHADING_MODEL_NORMALS = '';
     const old = this.defines ?? {};
     const keys = Object.keys(defines);
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);
@@ -725,6 +764,8 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#shading = source.shading;
     this.#lighting = source.lighting;
     this.#celBands = source.celBands;
+    this.#output = source.output;
+    this.#normalMatrix = source.normalMatrix;
     this.#shininess = source.shininess;
     this.#lights = source.phongLights;
     this.#active = this.#lights;

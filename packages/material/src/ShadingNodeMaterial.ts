@@ -3,6 +3,7 @@
 import {
   batchColor,
   cameraViewMatrix,
+  colorSpaceToWorking,
   diffuseColor,
   frontFacing,
   instanceColor,
@@ -34,6 +35,7 @@ import {
   Matrix3,
   NodeMaterial,
   type NormalMapTypes,
+  SRGBColorSpace,
   TangentSpaceNormalMap,
   type Texture,
   Vector2,
@@ -54,10 +56,14 @@ import { removeShadowed, shadowingLightNodes, shadowTerms, unshadowed } from './
 import {
   checkCelBands,
   checkLighting,
+  checkNormalMatrix,
+  checkOutput,
   checkPhongLights,
   checkShading,
+  type NormalMatrixMode,
   SHADING_DEFAULTS,
   type Shading,
+  type ShadingOutput,
 } from './options.js';
 import type { PhongLight } from './PhongLight.js';
 import type { ShadingMaterialOptions } from './ShadingMaterial.js';
@@ -123,9 +129,25 @@ const robustNormalMatrix = /* @__PURE__ */ uniform(_robustNormalMatrix).onObject
   if (object) computeNormalMatrix(object.matrixWorld, _robustNormalMatrix);
 });
 
+/** The 3 × 3 part of the drawn object's world matrix M (`normalMatrix: 'model'`, the lecture's wrong way). */
+const _modelMatrix3 = /* @__PURE__ */ new Matrix3();
+const modelMatrix3 = /* @__PURE__ */ uniform(_modelMatrix3).onObjectUpdate(({ object }) => {
+  if (object) _modelMatrix3.setFromMatrix4(object.matrixWorld);
+});
+
 /** An object-space normal in view space, unnormalised (zero where the world matrix flattens it away). */
-function normalToView(n: N): N {
+function normalToViewRobust(n: N): N {
   return (cameraViewMatrix as N).mul(vec4((robustNormalMatrix as N).mul(n), 0)).xyz;
+}
+
+/** An object-space normal in view space through M instead of the normal matrix (`normalMatrix: 'model'`). */
+function normalToViewByModel(n: N): N {
+  return (cameraViewMatrix as N).mul(vec4((modelMatrix3 as N).mul(n), 0)).xyz;
+}
+
+/** A unit view-space normal as three's MeshNormalMaterial packs it (n·0.5 + 0.5). */
+function packNormal(n: N): N {
+  return n.mul(0.5).add(0.5);
 }
 
 /**
@@ -189,6 +211,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
   #shading: Shading = SHADING_DEFAULTS.shading;
   #lighting: Lighting = SHADING_DEFAULTS.lighting;
   #celBands: number = SHADING_DEFAULTS.celBands;
+  #output: ShadingOutput = SHADING_DEFAULTS.output;
+  #normalMatrix: NormalMatrixMode = SHADING_DEFAULTS.normalMatrix;
   #lights: readonly PhongLight[] = Object.freeze([]);
   readonly #ka = new Color(...SHADING_DEFAULTS.ka);
   readonly #kd = new Color(...SHADING_DEFAULTS.kd);
@@ -255,12 +279,16 @@ export class ShadingNodeMaterial extends NodeMaterial {
     alphaMap = null,
     normalMap = null,
     normalScale = new Vector2(1, 1),
+    output = SHADING_DEFAULTS.output,
+    normalMatrix = SHADING_DEFAULTS.normalMatrix,
   }: ShadingNodeMaterialOptions = {}) {
     super();
     this.lights = true;
     this.shading = shading;
     this.lighting = lighting;
     this.celBands = celBands;
+    this.output = output;
+    this.normalMatrix = normalMatrix;
     this.ka = ka;
     this.kd = kd;
     this.ks = ks;
@@ -372,6 +400,34 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const checked = checkCelBands(this.#owner, value);
     if (checked !== this.#celBands) this.needsUpdate = true;
     this.#celBands = checked;
+  }
+
+  /**
+   * What the material draws: `'color'`, or `'ambient'`, `'diffuse'`, `'specular'`, `'attenuation'` or
+   * `'normal'` alone, a debugging aid (exactly what each shows: {@link ShadingOutput}). Built only when not
+   * `'color'` (a branch when three builds the material): changing it recompiles. @default 'color'
+   */
+  get output(): ShadingOutput {
+    return this.#output;
+  }
+  set output(value: ShadingOutput) {
+    const checked = checkOutput(this.#owner, value);
+    if (checked !== this.#output) this.needsUpdate = true;
+    this.#output = checked;
+  }
+
+  /**
+   * How normals go to world space: `'inverse-transpose'` (the normal matrix, right) or `'model'` (the model
+   * matrix itself, the lecture's wrong way under a non-uniform scale), a teaching aid (see
+   * {@link NormalMatrixMode}). Built only when `'model'`: changing it recompiles. @default 'inverse-transpose'
+   */
+  get normalMatrix(): NormalMatrixMode {
+    return this.#normalMatrix;
+  }
+  set normalMatrix(value: NormalMatrixMode) {
+    const checked = checkNormalMatrix(this.#owner, value);
+    if (checked !== this.#normalMatrix) this.needsUpdate = true;
+    this.#normalMatrix = checked;
   }
 
   /** ka, ambient reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.6, 0.35, 0.2) */
@@ -514,11 +570,23 @@ export class ShadingNodeMaterial extends NodeMaterial {
         `${this.#owner}: normalMap needs a per-fragment normal (shading 'phong'); ${this.#shading} shading ignores it`,
       );
     }
+    const lit = this.#lit(builder);
+    // The data outputs are written as is, as three's MeshNormalNodeMaterial writes its normal (decoded from sRGB
+    // here so that the output conversion gives the value back); the terms leave the emissive out.
+    if (this.#output === 'normal' || this.#output === 'attenuation') {
+      return (colorSpaceToWorking as N)(vec4(lit, 1), SRGBColorSpace).rgb;
+    }
+    if (this.#output !== 'color') return lit;
     const emissive: N =
       this.emissiveMap !== null
         ? this.#emissiveNode.mul((materialReference('emissiveMap', 'texture') as N).rgb)
         : this.#emissiveNode;
-    return this.#lit(builder).add(emissive);
+    return lit.add(emissive);
+  }
+
+  /** three's fog, on the colour only (the term, attenuation and normal outputs are not fogged). */
+  override setupFog(builder: N, outputNode: N): N {
+    return this.#output === 'color' ? super.setupFog(builder, outputNode) : outputNode;
   }
 
   /** The lit colour of the variant: phong or flat by derivatives per fragment, gouraud and flat per vertex. */
@@ -536,13 +604,16 @@ export class ShadingNodeMaterial extends NodeMaterial {
     // Per fragment, diffuseColor.rgb (texel × vertex colour × instance colour) multiplies ka and kd.
     const fragmentTint = { tint: (diffuseColor as N).rgb };
     const localNormal: N = hasNormal ? normalLocal : positionLocal;
+    const normalToView = this.#normalMatrix === 'model' ? normalToViewByModel : normalToViewRobust;
+    const packed = this.#output === 'normal';
     if (this.#shading === 'phong') {
       const v = onStack(towardsViewer(positionView));
       // Unit vertex normals interpolated (zero where the matrix flattens the surface away); a back face
       // (DoubleSide, BackSide) is lit with its normal turned round, as three's normalView does.
       let n: N = unitOr(negateOnBackSide(varying(unitOr(normalToView(localNormal), vec3(0)))), v);
       // A normal map perturbs that normal (as ShadingMaterial does: not three's normalView).
-      if (this.normalMap !== null) n = onStack(normalMapped(this, n, positionView, normalToView));
+      if (this.normalMap !== null) n = onStack(normalMapped(this, n, positionView, normalToViewRobust));
+      if (packed) return packNormal(n);
       return this.lightSurface(builder, { n, v }, undefined, fragmentTint);
     }
     // Per vertex: the instance and vertex colours multiply ka and kd there; a texel (of `map`, or `colorNode`)
@@ -563,7 +634,13 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const shadowing = shadowingLightNodes(builder, (node) => node instanceof PhongLightNode);
     const sided = (surface: (sign: number) => Surface, view: N, interpolate: (node: N) => N): N => {
       const double = this.side === DoubleSide;
-      const front = surface(double || this.side !== BackSide ? 1 : -1);
+      const frontSign = double || this.side !== BackSide ? 1 : -1;
+      if (packed) {
+        // The normal output: the side's unit normal, packed per vertex and interpolated.
+        const front = interpolate(packNormal(surface(frontSign).n));
+        return double ? select(frontFacing, front, interpolate(packNormal(surface(-1).n))) : front;
+      }
+      const front = surface(frontSign);
       const specular = texel !== null ? vec3(0).toVar() : undefined;
       if (double) {
         front.back = vec3(0).toVar();
@@ -608,6 +685,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     // The derivatives' normal faces the viewer: the visible side's, whichever it is.
     const v = onStack(towardsViewer(positionView));
     const n = unitOr((positionView as N).dFdx().cross((positionView as N).dFdy()), v);
+    if (packed) return packNormal(n);
     return this.lightSurface(builder, { n, v }, undefined, fragmentTint);
   }
 
@@ -658,6 +736,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
     this.#shading = source.shading;
     this.#lighting = source.lighting;
     this.#celBands = source.celBands;
+    this.#output = source.output;
+    this.#normalMatrix = source.normalMatrix;
     this.#lights = source.phongLights;
     this.#ka.copy(source.ka);
     this.#kd.copy(source.kd);

@@ -15,7 +15,16 @@ export {
 } from './flatShadingGeometry.js';
 export { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
 export { linearToSrgb8, linearToSrgb8Channel } from './linearToSrgb8.js';
-export { MAX_CEL_BANDS, SHADINGS, type Shading, type ShadingOptions } from './options.js';
+export {
+  MAX_CEL_BANDS,
+  NORMAL_MATRIX_MODES,
+  type NormalMatrixMode,
+  SHADING_OUTPUTS,
+  SHADINGS,
+  type Shading,
+  type ShadingOptions,
+  type ShadingOutput,
+} from './options.js';
 export { PhongLight, type PhongLightOptions } from './PhongLight.js';
 export { ShadingMaterial, type ShadingMaterialOptions } from './ShadingMaterial.js';
 export {

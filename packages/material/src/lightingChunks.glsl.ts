@@ -5,6 +5,7 @@
 // Statement chunks rather than a function of their own: a PhongLight program then compiles exactly the code it
 // compiled before (tests/material-scene.spec.ts compares the active lines of every lecture program).
 
+import { directLightCount, outputFactors, outputNormal } from './outputChunks.glsl.js';
 import { shadowedLight, shadowLightMacros } from './shadowChunks.glsl.js';
 
 /**
@@ -33,7 +34,7 @@ const lightFactors = /* glsl */ `
   diffuse = min(floor(diffuse * float(CEL_BANDS)), float(CEL_BANDS - 1)) / float(CEL_BANDS - 1);
   spec = step(0.5, spec);
 #endif
-`;
+${outputFactors}`;
 
 /**
  * The light's term from its factors and `kdId` = kd·Id (× tint), `ksIs` = ks·Is: their sum, or, with a texture on
@@ -81,21 +82,28 @@ const phongLights = /* glsl */ `${Array.from(
 /**
  * One kind of three's direct lights, in its unrolled loop (as three's own loops, which three unrolls: a shadow
  * map array needs a constant index): `toLight` sets the unit direction `l` (and `t`, `t2`) when the light has a
- * position, `colour` is its colour × falloff; a shadow-casting light's term is shadowed (see shadowChunks.glsl.ts).
+ * position, `colour` is its colour and `falloff` (none: 1) its falloff; a shadow-casting light's term is shadowed
+ * (see shadowChunks.glsl.ts). The attenuation output's term is the falloff (over the direct lights' count).
  */
 function threeLightLoop(
   kind: 'Dir' | 'Point' | 'Spot',
   count: string,
   toLight: string,
-  colour: string,
+  color: string,
+  falloff?: string,
 ): string {
+  const colour = falloff === undefined ? color : `${color} * ${falloff}`;
   return /* glsl */ `
 #if ${count} > 0
   #pragma unroll_loop_start
   for ( int i = 0; i < ${count}; i ++ ) {
     ${toLight}
     SHADING_SHADOW_BEGIN
+#ifdef SHADING_OUTPUT_ATTENUATION
+    term = vec3( ${falloff ?? '1.0'} ) / float( SHADING_DIRECT_LIGHTS );
+#else
     term = threeDirect( n, v, l, ${colour} );
+#endif
 ${shadowedLight(kind)}
     c += term;
   }
@@ -155,18 +163,23 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
   for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
 #endif
   c *= shadingKa * shadingTint;
+#ifdef SHADING_NO_AMBIENT
+  c = vec3( 0.0 );
+#endif
 ${threeLightLoop('Dir', 'NUM_DIR_LIGHTS', 'l = directionalLights[ i ].direction;', 'directionalLights[ i ].color')}
 ${threeLightLoop(
   'Point',
   'NUM_POINT_LIGHTS',
   'l = threeToLight( pointLights[ i ].position, p, n, t, t2 );',
-  'pointLights[ i ].color * threeFalloff( t, t2, pointLights[ i ].distance, pointLights[ i ].decay )',
+  'pointLights[ i ].color',
+  'threeFalloff( t, t2, pointLights[ i ].distance, pointLights[ i ].decay )',
 )}
 ${threeLightLoop(
   'Spot',
   'NUM_SPOT_LIGHTS',
   'l = threeToLight( spotLights[ i ].position, p, n, t, t2 );',
-  'spotLights[ i ].color * getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * threeFalloff( t, t2, spotLights[ i ].distance, spotLights[ i ].decay )',
+  'spotLights[ i ].color',
+  'getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * threeFalloff( t, t2, spotLights[ i ].distance, spotLights[ i ].decay )',
 )}
   return c;
 }
@@ -197,6 +210,7 @@ vec3 shadingTint = vec3( 1.0 ); // instance colour: multiplies ka and kd
 vec3 shadingSpecular = vec3( 0.0 ); // the ks part of the last shadeColor (which then returns the ka/kd part)
 #endif
 
+${directLightCount}
 #ifdef USE_ATTENUATION
 #define LIGHT_ATTENUATION(i) lightAttenuation[i]
 #else
@@ -218,6 +232,11 @@ ${lightFactors}
   diffuse *= att;
   spec *= att;
 #endif
+#if defined( SHADING_OUTPUT_ATTENUATION ) && defined( USE_ATTENUATION )
+  return vec3( att / float( SHADING_DIRECT_LIGHTS ) );
+#elif defined( SHADING_OUTPUT_ATTENUATION )
+  return vec3( 1.0 / float( SHADING_DIRECT_LIGHTS ) );
+#endif
 ${lightReturn}}
 ${threeLights}
 vec3 shadeColor(vec3 p, vec3 normal) {
@@ -230,10 +249,14 @@ vec3 shadeColor(vec3 p, vec3 normal) {
   float n2 = dot(normal, normal);
   vec3 n = n2 > 0.0 ? normal * inversesqrt(n2) : v;
   v = e2 > 0.0 ? v : n;
+${outputNormal}
 #ifdef SHADING_TINT
   vec3 color = ambientTerm * shadingTint;
 #else
   vec3 color = ambientTerm;
+#endif
+#ifdef SHADING_NO_AMBIENT
+  color = vec3( 0.0 );
 #endif
 ${phongLights}
 #ifdef SHADING_THREE_LIGHTS

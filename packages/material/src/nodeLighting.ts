@@ -15,6 +15,7 @@ import {
 } from 'three/tsl';
 import { AnalyticLightNode, Color, type Light, LightingModel, NodeUpdateType, Vector3 } from 'three/webgpu';
 import type { ShadowTerms } from './nodeShadows.js';
+import type { ShadingOutput } from './options.js';
 import { PhongLight } from './PhongLight.js';
 import { type Lighting, MIN_ATTENUATION_DENOMINATOR } from './shade.js';
 
@@ -139,10 +140,32 @@ export interface LightingVariant {
   readonly phongLights: readonly PhongLight[];
   readonly lighting: Lighting;
   readonly celBands: number;
+  /** What is drawn: the colour, or one term (see `ShadingOutput`; the normal is not lit, so not built here). */
+  readonly output: ShadingOutput;
+}
+
+/** Whether `node` is one of the direct lights the attenuation output averages over. */
+function isDirectLight(node: N): boolean {
+  const light = node.light ?? {};
+  return (
+    node instanceof PhongLightNode ||
+    light.isDirectionalLight === true ||
+    light.isPointLight === true ||
+    light.isSpotLight === true
+  );
 }
 
 /** The lecture's equation as three's lighting model: one direct() per light, ambient through indirect(). */
 export class LectureLightingModel extends LightingModel {
+  /** How many direct lights light the material (found in start(), before their direct() calls). */
+  #directLights = 0;
+
+  /** Whether the output keeps the ambient term (the colour and the ambient output). */
+  get #ambient(): boolean {
+    const { output } = this.material;
+    return output === 'color' || output === 'ambient';
+  }
+
   constructor(
     private readonly material: LightingVariant,
     private readonly surface: Surface,
@@ -165,23 +188,27 @@ export class LectureLightingModel extends LightingModel {
       (node) => !(node instanceof PhongLightNode) || !listed || _lightNodes.get(node.phongLight) === node,
     );
     const hemispheres = nodes.filter((node) => node.light?.isHemisphereLight === true);
+    this.#directLights = nodes.filter(isDirectLight).length;
     lightsNode.setupLights(
       builder,
       nodes.filter((node) => !hemispheres.includes(node)),
     );
     const { n, back } = this.surface;
     const { ka } = this.uniforms;
+    const ambient = this.#ambient;
     // The ambient lights' irradiance is the same on both sides; the hemispheres' is not.
-    back?.addAssign(builder.context.irradiance.mul(ka).mul(RECIPROCAL_PI));
+    if (ambient) back?.addAssign(builder.context.irradiance.mul(ka).mul(RECIPROCAL_PI));
     for (const node of hemispheres) {
       // Registered for its per-frame update (colours, direction); its own setup is not built.
       builder.addNode(node);
       const direction = (cameraViewMatrix as N).mul(vec4(node.lightDirectionNode, 0)).xyz;
       const weight = n.dot(direction).mul(0.5);
       builder.context.irradiance.addAssign(mix(node.groundColorNode, node.colorNode, weight.add(0.5)));
-      back?.addAssign(
-        mix(node.groundColorNode, node.colorNode, weight.negate().add(0.5)).mul(ka).mul(RECIPROCAL_PI),
-      );
+      if (ambient) {
+        back?.addAssign(
+          mix(node.groundColorNode, node.colorNode, weight.negate().add(0.5)).mul(ka).mul(RECIPROCAL_PI),
+        );
+      }
     }
     this.indirect(builder);
   }
@@ -204,13 +231,28 @@ export class LectureLightingModel extends LightingModel {
       att = float(1).div(max(abc.x.add(abc.y.mul(t)).add(abc.z.mul(t).mul(t)), MIN_ATTENUATION_DENOMINATOR));
       id = node.diffuse;
       is = node.specular;
-      ambient = ka.mul(node.ambient);
-      reflectedLight.indirectDiffuse.addAssign(ambient);
+      if (this.#ambient) {
+        ambient = ka.mul(node.ambient);
+        reflectedLight.indirectDiffuse.addAssign(ambient);
+      }
     } else {
       // three's lights: Id = Is = colour × intensity / π × three's falloff (as three's materials receive them).
       l = data.lightDirection;
       id = data.lightColor.mul(RECIPROCAL_PI);
       is = id;
+    }
+    const { output } = this.material;
+    // The attenuation output: this light's factor (a PhongLight's att; three's: its colour's falloff × cone ×
+    // shadow, as the ratio of the light's colour to its unshadowed base colour), over the direct lights' count.
+    let attenuation: N = null;
+    if (output === 'attenuation') {
+      let factor: N = att;
+      if (data.phong === undefined) {
+        const base: N = data.lightNode?.baseColorNode || data.lightNode?.colorNode;
+        factor =
+          base == null ? float(1) : data.lightColor.dot(vec3(1)).div(max((base as N).dot(vec3(1)), 1e-30));
+      }
+      attenuation = vec3(factor.div(Math.max(this.#directLights, 1)));
     }
     const ndl = n.dot(l);
     const h = this.material.lighting === 'blinn-phong' ? l.add(v) : null;
@@ -239,13 +281,20 @@ export class LectureLightingModel extends LightingModel {
         diffuse = min(diffuse.mul(bands).floor(), bands - 1).div(bands - 1);
         spec = select(spec.greaterThanEqual(0.5), float(1), float(0));
       }
+      // The term outputs leave the other terms out.
+      if (output === 'ambient' || output === 'specular') diffuse = float(0);
+      if (output === 'ambient' || output === 'diffuse') spec = float(0);
       return [diffuse, spec];
     };
     // A shadow-casting light of three's, lit in the vertex stage: its term is also recorded apart.
     const shadow = data.lightNode === undefined ? undefined : this.surface.shadows?.get(data.lightNode);
-    const [diffuse, spec] = side(1);
-    const diffuseTerm = kd.mul(id).mul(diffuse.mul(att));
-    const specularTerm = ks.mul(is).mul(spec.mul(att));
+    // One side's diffuse and specular terms (the attenuation output: its factor, as the diffuse term).
+    const terms = (sign: number): [N, N] => {
+      if (attenuation !== null) return [attenuation, vec3(0)];
+      const [diffuse, spec] = side(sign);
+      return [kd.mul(id).mul(diffuse.mul(att)), ks.mul(is).mul(spec.mul(att))];
+    };
+    const [diffuseTerm, specularTerm] = terms(1);
     reflectedLight.directDiffuse.addAssign(diffuseTerm);
     // The ks part: with the lighting split (a texel per fragment after vertex lighting), into its own variable.
     (this.specular ?? reflectedLight.directSpecular).addAssign(specularTerm);
@@ -257,9 +306,7 @@ export class LectureLightingModel extends LightingModel {
       }
     }
     if (back !== undefined) {
-      const [backDiffuse, backSpec] = side(-1);
-      const backDiffuseTerm = kd.mul(id).mul(backDiffuse.mul(att));
-      const backSpecularTerm = ks.mul(is).mul(backSpec.mul(att));
+      const [backDiffuseTerm, backSpecularTerm] = terms(-1);
       if (backSpecular === undefined) back.addAssign(backDiffuseTerm.add(backSpecularTerm));
       else {
         back.addAssign(backDiffuseTerm);
@@ -278,6 +325,7 @@ export class LectureLightingModel extends LightingModel {
 
   override indirect(builder: N): void {
     // three's ambient and hemisphere lights: Ia = their irradiance / π.
+    if (!this.#ambient) return;
     const { irradiance, reflectedLight } = builder.context;
     reflectedLight.indirectDiffuse.addAssign(irradiance.mul(this.uniforms.ka).mul(RECIPROCAL_PI));
   }

@@ -39,7 +39,7 @@ export const sceneFeatures = /* glsl */ `
  *   with three's derivative tangent frame (`getTangentFrame`; a `tangent` attribute is not used).
  */
 export const surfaceVertexPars = /* glsl */ `
-#if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES )
+#if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES ) && ! defined( SHADING_OUTPUT_DATA )
 #define SHADING_SPLIT
 #endif
 #include <uv_pars_vertex>
@@ -50,7 +50,7 @@ out float vShadingAlpha;
 
 /** Fragment declarations of the surface (see {@link surfaceVertexPars}). */
 export const surfaceFragmentPars = /* glsl */ `
-#if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES )
+#if defined( USE_MAP ) && ! defined( SHADING_PHONG ) && ! defined( FLAT_DERIVATIVES ) && ! defined( SHADING_OUTPUT_DATA )
 #define SHADING_SPLIT
 #endif
 #if defined( USE_MAP ) || defined( USE_ALPHAMAP ) || defined( USE_ALPHATEST ) || ! defined( OPAQUE )
@@ -122,7 +122,7 @@ export const surfaceFragment = /* glsl */ `
 
 /** Fragment stage: emissive (× emissiveMap, three's chunk) added to the lit colour, outside the lighting. */
 export const emissiveFragment = /* glsl */ `
-#if defined( SHADING_EMISSIVE ) || defined( USE_EMISSIVEMAP )
+#if ( defined( SHADING_EMISSIVE ) || defined( USE_EMISSIVEMAP ) ) && ! defined( SHADING_OUTPUT_TERM )
   vec3 totalEmissiveRadiance = emissive;
   #include <emissivemap_fragment>
   color += totalEmissiveRadiance;
@@ -273,9 +273,11 @@ export const clippingFragment = /* glsl */ `
  * undefined) is a step at that depth: no fog before it, all fog beyond.
  */
 export const outputFragment = /* glsl */ `
+#ifndef SHADING_OUTPUT_DATA
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
-#ifdef USE_FOG
+#endif
+#if defined( USE_FOG ) && ! defined( SHADING_OUTPUT_TERM )
 #ifdef FOG_EXP2
   float fogFactor = 1.0 - exp( - fogDensity * fogDensity * vFogDepth * vFogDepth );
 #else

@@ -54,6 +54,8 @@ export const SHADING_MATERIAL_OPTION_KEYS = [
   'alphaMap',
   'normalMap',
   'normalScale',
+  'output',
+  'normalMatrix',
 ] as const satisfies readonly (keyof ShadingMaterialOptions)[];
 // An option missing from the list is a type error here.
 const _complete: [

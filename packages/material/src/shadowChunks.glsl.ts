@@ -49,7 +49,7 @@ const each = (f: (kind: ShadowKind) => string): string => KINDS.map(f).join('');
  * records the terms), with `SHADING_INTERPOLATION` (`flat` or nothing) for the recorded terms' varyings.
  */
 export const shadowFeatures = /* glsl */ `
-#if defined( USE_SHADOWMAP ) && defined( SHADING_THREE_LIGHTS )
+#if defined( USE_SHADOWMAP ) && defined( SHADING_THREE_LIGHTS ) && ! defined( SHADING_OUTPUT_NORMAL )
 #define SHADING_SHADOWS
 #if defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES )
 #define SHADING_SHADOW_FACTOR

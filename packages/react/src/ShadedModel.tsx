@@ -7,10 +7,13 @@ import { useSwapMaterials } from './useSwapMaterials.js';
 /** Every ShadingMaterial option, to tell them from the object's props (`@shadelab/material`'s complete list). */
 const OPTION_KEYS = SHADING_MATERIAL_OPTION_KEYS;
 
-/** Props of {@link ShadedModel}: the object, the ShadingMaterial options, and R3F's props of the object. */
+/**
+ * Props of {@link ShadedModel}: the object, the ShadingMaterial options, and R3F's props of the object (but its
+ * `normalMatrix`, which three computes: the prop is the material option).
+ */
 export interface ShadedModelProps
   extends ShadingMaterialOptions,
-    Omit<ThreeElements['group'], 'args' | 'ref' | 'children' | 'object'> {
+    Omit<ThreeElements['group'], 'args' | 'ref' | 'children' | 'object' | 'normalMatrix'> {
   /** The model (a `useGLTF` scene, any Object3D): rendered as a `<primitive>`, its materials swapped. */
   object: Object3D;
   /** Placed inside the object, as `<primitive>` children are. */
