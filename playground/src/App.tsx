@@ -6,6 +6,9 @@ import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/lay
 import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
+import { AttenuationTool } from './learn/attenuationTool';
+import { EmbedStrip } from './learn/embedStrip';
+import { ProfileTool } from './learn/profileTool';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -225,6 +228,8 @@ export function App() {
             ))}
           </ol>
         )}
+        <ProfileTool viewerRef={viewerRef} state={state} />
+        <AttenuationTool viewerRef={viewerRef} state={state} />
         <div className="messages" aria-live="polite">
           {context === 'lost' && (
             <p className="message warn" data-testid="context-message">
@@ -281,6 +286,7 @@ export function App() {
         // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.
         <LightControls key={i} index={i} state={state} update={update} onGizmo={toggleGizmo} />
       ))}
+      <EmbedStrip state={state} update={update} />
     </div>
   );
 }
