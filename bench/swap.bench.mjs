@@ -11,8 +11,10 @@
 // - what each variant's material is (options, defines, compiled program), and how the swapped material's program
 //   differs from the one built by hand.
 //
-// - the by-hand material also with the lecture's Phong lighting (reflection vector) in place of the Blinn-Phong
-//   the swap carries over, which tells what the half vector costs (`--by-hand-lighting ''` leaves it out).
+// - the by-hand material also with the lecture's Phong lighting (reflection vector, three's exponent / 4, as
+//   `toShadingMaterial(m, { lighting: 'phong' })` carries it over) in place of the Blinn-Phong the swap carries over
+//   (half vector, three's exponent), which tells what the half vector costs and what the cheaper option looks like
+//   (`--by-hand-lighting ''` leaves it out).
 // Ratios carry the quartiles of the same-cycle ratios besides their median (how much one cycle strays).
 //
 //   node bench/swap.bench.mjs [--json PATH] [--frames 30] [--rounds 10] [--by-hand phong[,gouraud,flat]]

@@ -16,6 +16,7 @@ import {
   type ShadingMaterialOptions,
   type SwappedMaterials,
   swapMaterials,
+  toShadingMaterial,
 } from '@shadelab/material';
 import {
   Color,
@@ -36,7 +37,8 @@ export type SwapVariant =
   | { kind: 'swapped'; shading: Shading; specular?: number }
   /**
    * A ShadingMaterial made with `new ShadingMaterial(…)` from the options the swap carried over (its phong
-   * scene's), with `lighting` in place of the carried one when given.
+   * scene's), with `lighting` in place of the carried one when given (and the shininess the swap carries over
+   * for that lighting).
    */
   | { kind: 'by-hand'; shading: Shading; lighting?: Lighting };
 
@@ -131,11 +133,14 @@ function sceneOf(variant: SwapVariant): Built {
     swappedMaterial(b);
   } else {
     const options = carriedOver();
-    const material = new ShadingMaterial({
-      ...options,
-      shading: variant.shading,
-      lighting: variant.lighting ?? options.lighting,
-    });
+    if (variant.lighting !== undefined) {
+      // The other lighting, with the shininess the swap carries over for it.
+      const other = toShadingMaterial(phongMaterial(), { lighting: variant.lighting });
+      options.lighting = other.lighting as Lighting;
+      options.shininess = other.shininess;
+      other.dispose();
+    }
+    const material = new ShadingMaterial({ ...options, shading: variant.shading });
     const s = buildRealisticScene(material, undefined, width / height);
     b = { ...s, material };
   }

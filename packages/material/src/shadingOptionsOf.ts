@@ -3,6 +3,7 @@
 // the Material properties copied, and the one conversion both run.
 import { Color, type Material, type Texture, Vector2 } from 'three';
 import type { ShadingMaterialOptions } from './ShadingMaterial.js';
+import type { Lighting } from './shade.js';
 
 /**
  * Minimum roughness three's punctual lights use (`lights_physical_pars_fragment`: "punctual lights need a
@@ -32,6 +33,16 @@ export function ggxShininess(roughness: number): number {
  */
 export function specularScale(shininess: number): number {
   return (shininess + 2) / 8;
+}
+
+/**
+ * The shininess that gives the lecture's `lighting` the highlight of a Blinn-Phong exponent s: s itself for
+ * `'blinn-phong'` ((n·h)^s), s/4 for `'phong'` ((v·r)^(s/4)): in the plane of the light and the eye the angle
+ * between v and r is twice the angle between n and h, and cos(2θ)^(s/4) ≈ (1 − 2θ²)^(s/4) ≈ e^(−sθ²/2) ≈ cos(θ)^s,
+ * so the two lobes have one peak and one width. Both peak at 1 where l = v = n, so ks is the same.
+ */
+export function lobeShininess(blinnShininess: number, lighting: Lighting): number {
+  return lighting === 'phong' ? blinnShininess / 4 : blinnShininess;
 }
 
 /** Every option of `ShadingMaterial`'s constructor, in documentation order. */
@@ -165,16 +176,17 @@ export function celBandsOf(gradientMap: unknown): number {
 
 /**
  * The mapping from a three.js mesh material to the lecture's equation (the rules are stated on
- * `toShadingMaterial`), or null when `material` is not one of the six convertible materials.
+ * `toShadingMaterial`), or null when `material` is not one of the six convertible materials. `lighting` is the
+ * lighting the material will draw with (the shininess is carried over for it: {@link lobeShininess}).
  */
-export function shadingOptionsOf(material: Material): CarriedOver | null {
+export function shadingOptionsOf(material: Material, lighting: Lighting = 'blinn-phong'): CarriedOver | null {
   const kind = kindOf(material);
   if (kind === null) return null;
   const m = material as ThreeMaterialLike;
   const color = colorOf(m.color);
   const map = textureOf(m.map);
   const options: ShadingMaterialOptions = {
-    lighting: 'blinn-phong',
+    lighting,
     celBands: 0,
     shading: m.flatShading === true ? 'flat' : 'phong',
     ka: color,
@@ -201,7 +213,7 @@ export function shadingOptionsOf(material: Material): CarriedOver | null {
     options.normalMap = null;
   } else if (kind === 'phong') {
     const shininess = Math.max(numberOf(m.shininess, 30), 0);
-    options.shininess = shininess;
+    options.shininess = lobeShininess(shininess, lighting);
     options.ks = colorOf(m.specular).multiplyScalar(specularScale(shininess));
   } else if (kind === 'toon') {
     options.celBands = celBandsOf(m.gradientMap);
@@ -228,7 +240,7 @@ export function shadingOptionsOf(material: Material): CarriedOver | null {
       .multiply(new Color(1 - dielectric.r, 1 - dielectric.g, 1 - dielectric.b));
     options.ka = diffuse;
     options.kd = diffuse;
-    options.shininess = shininess;
+    options.shininess = lobeShininess(shininess, lighting);
     options.ks = f0.multiplyScalar(specularScale(shininess));
   }
   const properties: Record<string, unknown> = {};
@@ -297,7 +309,10 @@ export function convertWith<M extends Material, O extends object>(
 ): M {
   const source = checkMaterial(kind.owner, material);
   const own = definedOptions(`${kind.owner}: options`, overrides);
-  const carried = shadingOptionsOf(source);
+  const carried = shadingOptionsOf(
+    source,
+    (own as { lighting?: unknown }).lighting === 'phong' ? 'phong' : 'blinn-phong',
+  );
   if (carried === null) {
     throw new TypeError(`${kind.owner}: cannot convert material ${unsupportedReason(source)}`);
   }

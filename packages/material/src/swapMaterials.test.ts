@@ -247,6 +247,30 @@ describe('swapMaterials: update', () => {
     }
   });
 
+  it('a new lighting carries each original’s highlight over for it (phong: exponent / 4), unless a shininess is given', () => {
+    const root = new Group().add(
+      new Mesh(geometry, new MeshPhongMaterial({ shininess: 40 })),
+      new Mesh(geometry, new MeshStandardMaterial({ roughness: 0.5 })),
+    );
+    const swap = swapMaterials(root);
+    expect(swap.materials.map((m) => [m.lighting, m.shininess])).toEqual([
+      ['blinn-phong', 40],
+      ['blinn-phong', 30],
+    ]);
+    swap.update({ lighting: 'phong' });
+    expect(swap.materials.map((m) => [m.lighting, m.shininess])).toEqual([
+      ['phong', 10],
+      ['phong', 7.5],
+    ]);
+    swap.update({ shading: 'gouraud' });
+    expect(swap.materials.map((m) => m.shininess)).toEqual([10, 7.5]);
+    swap.update({ lighting: 'blinn-phong', shininess: 12 });
+    expect(swap.materials.map((m) => [m.lighting, m.shininess])).toEqual([
+      ['blinn-phong', 12],
+      ['blinn-phong', 12],
+    ]);
+  });
+
   it('a bad value throws before any material is changed, naming the parameter', () => {
     const root = new Group().add(
       new Mesh(geometry, new MeshPhongMaterial()),

@@ -2,11 +2,13 @@
 // which objects and materials are swapped, what is skipped and why, restore() and update().
 import type { Material, Object3D } from 'three';
 import type { ShadingMaterial, ShadingMaterialOptions } from './ShadingMaterial.js';
+import type { Lighting } from './shade.js';
 import {
   definedOptions,
   kindOf,
   type ShadingMaterialKind,
   setOptions,
+  shadingOptionsOf,
   unsupportedReason,
 } from './shadingOptionsOf.js';
 
@@ -33,7 +35,9 @@ export interface SwappedMaterials<M extends Material = ShadingMaterial, O = Shad
   /**
    * Sets these options on every material the swap made (live editing: shading, lighting, celBands, ...). The
    * options are checked first: a bad value throws (a TypeError or RangeError naming the parameter) before any
-   * material is changed. After `restore()` it still checks, and changes nothing.
+   * material is changed. After `restore()` it still checks, and changes nothing. A new `lighting` without a
+   * `shininess` also carries each original's highlight over for that lighting (`'phong'`: three's exponent / 4;
+   * `'blinn-phong'`: three's exponent), as the swap did.
    */
   update(options: O): void;
   /**
@@ -169,7 +173,15 @@ export function swapWith<M extends Material, O extends object>(
       const checked = definedOptions(`${owner}: update options`, next);
       kind.make(checked as O).dispose();
       if (restored) return;
-      for (const material of materials) setOptions(material, checked, kind.optionKeys);
+      const lighting = (checked as { lighting?: Lighting }).lighting;
+      for (const [original, material] of made) {
+        setOptions(material, checked, kind.optionKeys);
+        // A new lighting without a shininess: the original's highlight, carried over for that lighting.
+        if (lighting !== undefined && !('shininess' in checked)) {
+          const shininess = shadingOptionsOf(original, lighting)?.options.shininess;
+          if (shininess !== undefined) (material as unknown as { shininess: number }).shininess = shininess;
+        }
+      }
     },
     restore(): void {
       if (restored) return;

@@ -141,7 +141,7 @@ describe('toShadingMaterial: what each of three’s materials becomes, field by 
     expectDecorated(made, source);
   });
 
-  it('MeshPhongMaterial: ks = specular × (shininess + 2)/8, shininess, lighting blinn-phong', () => {
+  it('MeshPhongMaterial: ks = specular × (shininess + 2)/8, shininess, lighting blinn-phong (phong: shininess / 4)', () => {
     const { material: source, maps } = withMaps(
       decorate(new MeshPhongMaterial({ color: colour, shininess: 62, specular: new Color(0.2, 0.4, 0.8) })),
     );
@@ -155,6 +155,9 @@ describe('toShadingMaterial: what each of three’s materials becomes, field by 
     expect(made.lighting).toBe('blinn-phong');
     expectMaps(made, maps);
     expectDecorated(made, source);
+    const phong = toShadingMaterial(source, { lighting: 'phong' });
+    expect([phong.lighting, phong.shininess]).toEqual(['phong', 62 / 4]);
+    expect(phong.ks.equals(made.ks)).toBe(true);
   });
 
   it('MeshStandardMaterial: kd = colour × (1 − metalness) × 0.96, F0 = mix(0.04, colour, metalness) × (s + 2)/8', () => {
@@ -164,6 +167,7 @@ describe('toShadingMaterial: what each of three’s materials becomes, field by 
     const made = toShadingMaterial(source);
     const s = 2 / 0.25 ** 2 - 2; // α = 0.5² = 0.25: 30
     expect(made.shininess).toBeCloseTo(s, 12);
+    expect(toShadingMaterial(source, { lighting: 'phong' }).shininess).toBeCloseTo(s / 4, 12);
     const channels = colour.toArray();
     made.kd.toArray().forEach((c, i) => {
       expect(c).toBeCloseTo(channels[i] * 0.75 * 0.96, 12);
@@ -237,7 +241,12 @@ describe('toShadingMaterial options', () => {
       lights: [light],
       normalScale: new Vector2(3, 3),
     });
-    expect([made.shading, made.lighting, made.celBands, made.shininess]).toEqual(['gouraud', 'phong', 4, 30]);
+    expect([made.shading, made.lighting, made.celBands, made.shininess]).toEqual([
+      'gouraud',
+      'phong',
+      4,
+      30 / 4,
+    ]);
     expect(made.ks.toArray()).toEqual([0.25, 0.25, 0.25]);
     expect(made.phongLights).toEqual([light]);
     expect(made.normalScale.toArray()).toEqual([3, 3]);

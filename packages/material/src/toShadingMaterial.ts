@@ -22,16 +22,18 @@ export const SHADING_MATERIAL: ShadingMaterialKind<ShadingMaterial, ShadingMater
  *   `clippingPlanes` (the same array), `clipIntersection`, `clipShadows`, `depthTest`, `depthWrite`,
  *   `depthFunc`, the blending (`blending`, `blendSrc` … `premultipliedAlpha`), `colorWrite`, `visible`, the
  *   polygon offset, `alphaToCoverage` and `dithering`. `lighting` is `'blinn-phong'` (three's specular is
- *   Blinn-Phong's n·h).
+ *   Blinn-Phong's n·h) with three's exponent s as the shininess. Given `options.lighting: 'phong'`, the shininess
+ *   is s/4, whose (v·r)^(s/4) has the same peak and width as (n·h)^s (in the plane of l and v, the angle of v to r
+ *   is twice that of n to h): cheaper, and brighter than three's towards grazing views.
  * - **MeshBasic** (unlit): ka = kd = ks = 0; `emissive` = colour and `emissiveMap` = `map`, so the picture is
  *   colour × texel, before fog and tone mapping, as three draws it; `map` stays for its alpha. Vertex and
  *   instance colours multiply ka and kd only, so a MeshBasic's vertex colours are lost (their alpha is kept).
  * - **MeshLambert**: ka = kd = colour, ks = 0.
- * - **MeshPhong**: ka = kd = colour, shininess = three's shininess, ks = specular × (shininess + 2)/8: three's
- *   `BRDF_BlinnPhong` (F·(s/2 + 1)/(4π)·(n·h)^s times n·l) and the lecture's ks·Is·(n·h)^s with Is = colour/π
- *   are then equal where l = v = n; elsewhere three's term also has n·l and Schlick's Fresnel.
+ * - **MeshPhong**: ka = kd = colour, three's shininess s carried over as above, ks = specular × (s + 2)/8: three's
+ *   `BRDF_BlinnPhong` (F·(s/2 + 1)/(4π)·(n·h)^s times n·l) and the lecture's ks·Is·(n·h)^s (or ks·Is·(v·r)^(s/4))
+ *   with Is = colour/π are then equal where l = v = n; elsewhere three's term also has n·l and Schlick's Fresnel.
  * - **MeshStandard / MeshPhysical**: α = max(roughness, 0.045)² (three's), shininess = 2/α² − 2 (the
- *   Blinn-Phong lobe of GGX's width and peak), ks = F0 × (shininess + 2)/8 with three's
+ *   Blinn-Phong lobe of GGX's width and peak; carried over as above), ks = F0 × (shininess + 2)/8 with three's
  *   F0 = mix(dielectric, colour, metalness), dielectric = 0.04 (Physical: min(((ior − 1)/(ior + 1))² ×
  *   specularColor, 1) × specularIntensity); ka = kd = colour × (1 − metalness) × (1 − dielectric) (three's
  *   diffuse contribution after its Fresnel mix at normal incidence). The highlight equals three's `BRDF_GGX`
