@@ -4,7 +4,8 @@
  * `<sphereImpostorMaterial>`, `<sphereImpostor>`, `<autoDetailSphere>`), and it gives the components
  * `<Trackball>` (with the `useTrackball` hook), `<LectureCamera>`, `<AutoDetailSphere>` and `<ShadedModel>`
  * (with the `useSwapMaterials` hook: a loaded model's materials swapped for ShadingMaterials), and
- * `useAdaptiveShading` (the cheapest shading and detail under an error budget, every frame).
+ * `<Adaptive maxError>` (with the `useAdaptiveShading` hook: the cheapest shading and detail under an error budget,
+ * every frame).
  * @module @shadelab/react
  * @mergeModuleWith <project>
  */
@@ -12,6 +13,7 @@
 import './elements.js';
 
 export type { ColorInput } from '@shadelab/material';
+export { Adaptive, type AdaptiveProps } from './Adaptive.js';
 export { AutoDetailSphere, type AutoDetailSphereProps } from './AutoDetailSphere.js';
 export type { ColorProp, ShadelabElement, ShadelabElements } from './elements.js';
 export { LectureCamera, type LectureCameraProps } from './LectureCamera.js';
