@@ -33,7 +33,7 @@ export function AttenuationTool({
       </button>
       {open && (
         <section
-          style={{ ...LEARN_PANEL, bottom: 28 }}
+          style={{ ...LEARN_PANEL, bottom: 28, maxHeight: 'calc(50% - 32px)' }}
           aria-label="Attenuation curve"
           data-testid="attenuation-panel"
         >

@@ -53,6 +53,7 @@ export function EmbedStrip({ state, update }: { state: PlaygroundState; update: 
       <label>
         shading
         <select
+          aria-label="shading"
           value={m.shading}
           onChange={(e) =>
             update((d) => {
@@ -70,6 +71,7 @@ export function EmbedStrip({ state, update }: { state: PlaygroundState; update: 
       <label>
         lighting
         <select
+          aria-label="lighting"
           value={m.lighting}
           onChange={(e) =>
             update((d) => {
@@ -87,6 +89,7 @@ export function EmbedStrip({ state, update }: { state: PlaygroundState; update: 
       <label>
         cel
         <select
+          aria-label="cel bands"
           value={m.celBands}
           onChange={(e) =>
             update((d) => {

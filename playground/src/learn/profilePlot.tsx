@@ -74,22 +74,22 @@ export default function ProfilePlot({
         </Axes>
       </svg>
       <figcaption style={{ fontSize: 11, lineHeight: 1.35, color: '#ccc' }}>
-        <span style={{ display: 'flex', gap: 10 }}>
+        <span style={{ display: 'flex', flexWrap: 'wrap', columnGap: 10 }}>
           {series.map(({ shading, breaks }) => (
             <span key={shading} style={{ color: COLORS[shading] }}>
               ━ {LABELS[shading]}
-              {shading !== 'phong' && ` (${breaks.length} slope jumps ▮)`}
+              {shading !== 'phong' && `: ${breaks.length} slope jumps ▮`}
             </span>
           ))}
         </span>
         Luma (Rec. 709 weights on the 8-bit sRGB codes) of each shading&apos;s draw of this view, read back
-        from the canvas. <b>Mach bands</b>: the eye responds to changes of intensity and exaggerates every
-        place where the <i>slope</i> of intensity jumps, so it sees a brighter band on the bright side of such
-        an edge and a darker one on the dark side. Flat shading gives every facet one value: a staircase, and
-        bands at every facet edge. Gouraud interpolates the vertices&apos; colours: the intensity is
-        continuous, but its slope still jumps at every triangle edge, and the eye still sees (fainter) bands.
-        Phong evaluates the equation per pixel with the interpolated normal: the slope varies smoothly and the
-        bands are gone.
+        from the canvas; ▮ marks where a slope jumps by {BREAK} or more per pixel². <b>Mach bands</b>: the eye
+        responds to changes of intensity and exaggerates every place where the <i>slope</i> of intensity
+        jumps, so it sees a brighter band on the bright side of such an edge and a darker one on the dark
+        side. Flat shading gives every facet one value: a staircase, and bands at every facet edge. Gouraud
+        interpolates the vertices&apos; colours: the intensity is continuous, but its slope still jumps at
+        every triangle edge, and the eye still sees (fainter) bands. Phong evaluates the equation per pixel
+        with the interpolated normal: the slope varies smoothly and the bands are gone.
       </figcaption>
     </figure>
   );

@@ -24,8 +24,9 @@ const FOLLOW_MS = 200;
 export const LEARN_BUTTON = {
   position: 'absolute',
   right: 8,
-  width: 120,
+  width: 132,
   padding: '3px 6px',
+  whiteSpace: 'nowrap',
   background: '#2a2f36',
   color: '#ddd',
   border: '1px solid #444',
@@ -37,13 +38,13 @@ export const LEARN_BUTTON = {
 export const LEARN_PANEL = {
   position: 'absolute',
   right: 8,
-  width: 'min(340px, calc(100% - 16px))',
+  width: 'min(320px, calc(100% - 16px))',
+  zIndex: 1,
   padding: 6,
   background: '#181c20ee',
   border: '1px solid #444',
   borderRadius: 4,
   boxSizing: 'border-box',
-  maxHeight: 'calc(50% - 40px)',
   overflow: 'auto',
 } as const;
 
