@@ -51,11 +51,6 @@ interface Harness {
     scale: readonly [number, number, number],
   ): Promise<{ compared: number; differing: number; max: number }>;
 }
-declare global {
-  interface Window {
-    harness: Harness;
-  }
-}
 
 const RENDERERS: readonly RendererKind[] = ['gl', 'webgpu', 'webgl2'];
 const SHADINGS: readonly Shading[] = ['flat', 'gouraud', 'phong'];
@@ -77,9 +72,13 @@ test.afterEach(() => {
 });
 
 test('WebGPURenderer runs its WebGPU backend (not a silent fallback) and its WebGL2 backend', async () => {
-  const webgpu = await page.evaluate(() => window.harness.backendInfo('webgpu'));
+  const webgpu = await page.evaluate(() =>
+    (window as never as { harness: Harness }).harness.backendInfo('webgpu'),
+  );
   expect(webgpu).toEqual({ isWebGPUBackend: true, isWebGLBackend: false });
-  const webgl2 = await page.evaluate(() => window.harness.backendInfo('webgl2'));
+  const webgl2 = await page.evaluate(() =>
+    (window as never as { harness: Harness }).harness.backendInfo('webgl2'),
+  );
   expect(webgl2).toEqual({ isWebGPUBackend: false, isWebGLBackend: true });
 });
 
@@ -88,12 +87,10 @@ for (const renderer of RENDERERS) {
     for (const shading of SHADINGS) {
       test(`${renderer}, ${lights === 'phong' ? 'two attenuated PhongLights' : "three's five lights"}, ${shading}: each term view = shade() with the other terms zeroed, attenuation = the mean falloff, ambient + diffuse + specular = colour`, async () => {
         for (const lighting of LIGHTINGS) {
-          const r = await page.evaluate(([a, b, c, d]) => window.harness.terms(a, b, c, d), [
-            renderer,
-            shading,
-            lighting,
-            lights,
-          ] as const);
+          const r = await page.evaluate(
+            ([a, b, c, d]) => (window as never as { harness: Harness }).harness.terms(a, b, c, d),
+            [renderer, shading, lighting, lights] as const,
+          );
           for (const [output, stats] of Object.entries(r.checks)) {
             const label = `${lighting} ${output}: ${JSON.stringify(stats)}`;
             expect(stats.covered, label).toBeGreaterThan(1000);
@@ -112,7 +109,7 @@ for (const renderer of RENDERERS) {
     for (const shading of SHADINGS) {
       const cpu = await page.evaluate(
         ([r, s, scale]) =>
-          window.harness.check({
+          (window as never as { harness: Harness }).harness.check({
             renderer: r,
             shading: s,
             lighting: 'phong',
@@ -125,11 +122,10 @@ for (const renderer of RENDERERS) {
       expect(cpu.compared, `${shading}: ${JSON.stringify(cpu)}`).toBeGreaterThan(300);
       expect(cpu.max, `${shading}: ${JSON.stringify(cpu)}`).toBeLessThanOrEqual(2);
       if (shading === 'gouraud') continue; // packed per vertex and interpolated: not three's per-pixel normal
-      const three = await page.evaluate(([r, s, scale]) => window.harness.normalOracle(r, s, scale), [
-        renderer,
-        shading,
-        STRETCHED,
-      ] as const);
+      const three = await page.evaluate(
+        ([r, s, scale]) => (window as never as { harness: Harness }).harness.normalOracle(r, s, scale),
+        [renderer, shading, STRETCHED] as const,
+      );
       expect(three.compared, `${shading}: ${JSON.stringify(three)}`).toBeGreaterThan(1000);
       expect(three.coverageDiffers, `${shading}: ${JSON.stringify(three)}`).toBe(0);
       expect(three.max, `${shading}: ${JSON.stringify(three)}`).toBeLessThanOrEqual(2);
@@ -142,7 +138,7 @@ for (const renderer of RENDERERS) {
         const label = `${shading} ${output}`;
         const cpu = await page.evaluate(
           ([r, s, o, scale]) =>
-            window.harness.check({
+            (window as never as { harness: Harness }).harness.check({
               renderer: r,
               shading: s,
               lighting: 'phong',
@@ -156,7 +152,8 @@ for (const renderer of RENDERERS) {
         expect(cpu.compared, `${label}: ${JSON.stringify(cpu)}`).toBeGreaterThan(300);
         expect(cpu.max, `${label}: ${JSON.stringify(cpu)}`).toBeLessThanOrEqual(2);
         const stretched = await page.evaluate(
-          ([r, s, o, scale]) => window.harness.modelAgainstInverse(r, s, o, scale),
+          ([r, s, o, scale]) =>
+            (window as never as { harness: Harness }).harness.modelAgainstInverse(r, s, o, scale),
           [renderer, shading, output, STRETCHED] as const,
         );
         // Most of the surface leans: the two pictures differ by far more than rounding.
@@ -165,7 +162,8 @@ for (const renderer of RENDERERS) {
         );
         expect(stretched.max, label).toBeGreaterThan(20);
         const uniform = await page.evaluate(
-          ([r, s, o]) => window.harness.modelAgainstInverse(r, s, o, [0.8, 0.8, 0.8]),
+          ([r, s, o]) =>
+            (window as never as { harness: Harness }).harness.modelAgainstInverse(r, s, o, [0.8, 0.8, 0.8]),
           [renderer, shading, output] as const,
         );
         expect(uniform.max, `${label} uniform: ${JSON.stringify(uniform)}`).toBeLessThanOrEqual(1);

@@ -24,6 +24,7 @@ import {
   Matrix3,
   Mesh,
   MeshNormalMaterial,
+  type Object3D,
   PerspectiveCamera,
   PointLight,
   Raycaster,
@@ -190,7 +191,7 @@ function materialOf(c: Case): Material {
 let gl: WebGLRenderer | null = null;
 
 /** Draws `material` on `mesh` with `lights` into a linear target; RGBA8, rows bottom-up. */
-async function draw(renderer: RendererKind, mesh: Mesh, lights: readonly Light[]): Promise<Uint8Array> {
+async function draw(renderer: RendererKind, mesh: Mesh, lights: readonly Object3D[]): Promise<Uint8Array> {
   const scene = new Scene();
   scene.add(mesh, ...lights);
   if (renderer === 'gl') {
@@ -218,7 +219,7 @@ async function draw(renderer: RendererKind, mesh: Mesh, lights: readonly Light[]
   return pixels;
 }
 
-function lightsOf(kind: Lights): { lights: Light[]; shade: (ShadeLight | ShadeThreeLight)[] } {
+function lightsOf(kind: Lights): { lights: Object3D[]; shade: (ShadeLight | ShadeThreeLight)[] } {
   return kind === 'phong' ? phongLights() : threeLights();
 }
 
@@ -247,7 +248,7 @@ function attenuationAt(p: number[], lights: readonly (ShadeLight | ShadeThreeLig
         factors.push(1);
         continue;
       }
-      const q = new Vector3(...(light.position ?? [0, 0, 0]));
+      const q = new Vector3().fromArray(Array.from(light.position ?? [0, 0, 0]));
       const t = q.distanceTo(new Vector3(...p));
       let f = threeDistanceFalloff(t, light.distance ?? 0, light.decay ?? 2);
       if (light.type === 'spot') {
@@ -258,12 +259,12 @@ function attenuationAt(p: number[], lights: readonly (ShadeLight | ShadeThreeLig
         f *= smoothstep(
           light.coneCos ?? 0,
           light.penumbraCos ?? 0,
-          l.dot(new Vector3(...(light.direction ?? [0, 1, 0]))),
+          l.dot(new Vector3().fromArray(Array.from(light.direction ?? [0, 1, 0]))),
         );
       }
       factors.push(f);
     } else {
-      const t = new Vector3(...light.position).distanceTo(new Vector3(...p));
+      const t = new Vector3().fromArray(Array.from(light.position)).distanceTo(new Vector3(...p));
       const { a, b, c } = light.attenuation ?? { a: 1, b: 0, c: 0 };
       factors.push(1 / Math.max(a + b * t + c * t * t, 1e-6));
     }
@@ -525,10 +526,5 @@ async function backendInfo(backend: Backend) {
 }
 
 const harness = { backendInfo, check, terms, normalOracle, modelAgainstInverse };
-declare global {
-  interface Window {
-    harness: typeof harness;
-  }
-}
-window.harness = harness;
+(window as unknown as { harness: typeof harness }).harness = harness;
 document.body.dataset.ready = '1';
