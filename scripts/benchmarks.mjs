@@ -34,6 +34,7 @@ export const SOURCES = [
     command: 'npm run bench -- lecture-refactor',
   },
   { name: 'lighting', writer: 'bench/lighting.bench.mjs', command: 'npm run bench -- lighting' },
+  { name: 'adaptive', writer: 'bench/adaptive.bench.mjs', command: 'npm run bench -- adaptive' },
   { name: 'camera-depth', writer: 'bench/camera-depth.bench.mjs', command: 'npm run bench -- camera-depth' },
   { name: 'trackball', writer: 'bench/trackball.bench.mjs', command: 'npm run bench -- trackball' },
   {
@@ -1459,6 +1460,83 @@ function rasterisers(r) {
   ];
 }
 
+const ADAPTIVE_TITLE = 'Adaptive shading under an error budget';
+
+/**
+ * Issue 25: AdaptiveShading in the realistic scene (published and deeper view) against all-Phong and
+ * MeshPhongMaterial in the same run, the measured error of each picture beside its frame time. @param {any} r
+ * @returns {string[]}
+ */
+function adaptive(r) {
+  /** @param {{ paired: number, median: number }} x */
+  const cell = (x) => `${x.paired.toFixed(3)} (${x.median.toFixed(3)})`;
+  /** @param {number} x */
+  const pct = (x) => `${(100 * x).toFixed(2)} %`;
+  /** @param {Record<string, number> | undefined} c */
+  const choices = (c) =>
+    c
+      ? Object.entries(c)
+          .sort((a, b) => b[1] - a[1])
+          .map(([k, n]) => `${k}: ${int(n)}`)
+          .join(', ')
+      : '—';
+  const out = [
+    `## ${ADAPTIVE_TITLE}`,
+    '',
+    fromLine('adaptive', r),
+    '',
+    `Issue 25: \`AdaptiveShading\` (\`@shadelab/material/adaptive\`) in the realistic scene: ${r.scene}. ${r.frames} cycles after a warm-up, each rendering one frame of every variant in turn (adaptive: its \`update(camera, renderer)\` included, cached with the camera still), a 1×1 \`readPixels\` after each; ratios are the median of the same-cycle ratios (the ratio of the medians in brackets), of the wall time and of the CPU time of the browser's processes. Error: ${r.error}. ${r.note ?? ''}`.trim(),
+  ];
+  for (const view of Object.keys(r.results ?? {})) {
+    const v = r.results[view];
+    out.push(
+      '',
+      `### ${view === 'published' ? 'Published view' : 'Deeper view'}`,
+      '',
+      `${r.views?.[view] ?? view}.`,
+      '',
+      ...table(
+        [
+          'variant',
+          'wall ms: median (min)',
+          'wall / all-Phong',
+          'CPU / all-Phong',
+          'wall / MeshPhongMaterial',
+          'error p99',
+          'max',
+          '> 8',
+          '> 32',
+        ],
+        'lrrrrrrrr',
+        Object.entries(v.rows).map(([name, x]) => {
+          const row = /** @type {any} */ (x);
+          return [
+            name,
+            `${ms(row.frameMs.median)} (${ms(row.frameMs.min)})`,
+            cell(row.vsAllPhong),
+            cell(row.cpuVsAllPhong),
+            cell(row.vsMeshPhong),
+            String(row.error.p99),
+            String(row.error.max),
+            pct(row.error.over8),
+            pct(row.error.over32),
+          ];
+        }),
+      ),
+      '',
+    );
+    for (const [name, t] of Object.entries(v.targets)) {
+      const target = /** @type {any} */ (t);
+      const row = v.rows[name];
+      out.push(
+        `- ${name}: **${target.ratio.toFixed(3)}** × all-Phong, target ${target.target}: ${target.met ? 'met' : '**not met**'} (CPU ${target.cpuRatio.toFixed(3)}). Measured error p99 ${target.honest.p99}, ${pct(target.honest.overBudget)} of the drawn pixels over ${target.honest.budget} (${target.honest.withinBudget ? 'within' : '**outside**'} the budget). Choices: ${choices(row.choices)}. Error tables and scene built in ${ms(row.tableAndBuildMs)} ms; \`update\` when everything moved (camera nudged, nothing cached): ${ms(row.updateMovedMs.median)} ms.`,
+      );
+    }
+  }
+  if (r.why) out.push('', r.why);
+  return out;
+}
+
 // ── The page ───────────────────────────────────────────────────────────────────────────────────────────────
 
 /**
@@ -1483,7 +1561,7 @@ export function renderBenchmarks(results) {
       '- [Material in a realistic scene](#material-in-a-realistic-scene) · [Lecture scene before and after issue 14](#lecture-scene-before-and-after-issue-14) · [Flat shading without preparation](#flat-shading-without-preparation)',
       '- [Swapped materials in a realistic scene](#swapped-materials-in-a-realistic-scene)',
       '- [Material on WebGPURenderer](#material-on-webgpurenderer) · [Realistic scene on WebGPURenderer](#realistic-scene-on-webgpurenderer) · [Lecture scene before and after issue 23](#lecture-scene-before-and-after-issue-23)',
-      '- [The lighting itself](#the-lighting-itself)',
+      '- [The lighting itself](#the-lighting-itself) · [Adaptive shading under an error budget](#adaptive-shading-under-an-error-budget)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
       '- [Rasteriser variation](#rasteriser-variation)',
@@ -1502,6 +1580,7 @@ export function renderBenchmarks(results) {
     section('webgpu', webgpuRealistic, WEBGPU_REALISTIC_TITLE),
     section('lecture-refactor', lectureRefactor, LECTURE_REFACTOR_TITLE),
     section('lighting', lighting, LIGHTING_TITLE),
+    section('adaptive', adaptive, ADAPTIVE_TITLE),
     section('camera-depth', cameraDepth, 'Camera depth precision'),
     section('trackball', trackball, 'Trackball'),
     section('size', sizes, 'Package sizes'),

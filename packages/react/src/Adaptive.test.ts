@@ -27,17 +27,17 @@ extend({ Group });
 
 /** Catches what its children throw at render. */
 class Boundary extends Component<
-  { children: ReactNode; onError: (e: unknown) => void },
+  { children?: ReactNode; onError: (e: unknown) => void },
   { failed: boolean }
 > {
-  state = { failed: false };
+  override state = { failed: false };
   static getDerivedStateFromError() {
     return { failed: true };
   }
-  componentDidCatch(error: unknown) {
+  override componentDidCatch(error: unknown) {
     this.props.onError(error);
   }
-  render() {
+  override render() {
     return this.state.failed ? null : this.props.children;
   }
 }
