@@ -7,6 +7,7 @@ import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
 import { AttenuationTool } from './learn/attenuationTool';
+import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
 import { ProfileTool } from './learn/profileTool';
 import { ParityPanel } from './parity/ParityPanel';
@@ -269,7 +270,7 @@ export function App() {
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>{' '}
-          · <ModelPicker model={model} />
+          · <ModelPicker model={model} /> · <CopyCodeButtons state={state} />
         </p>
       </main>
       <SidePanel

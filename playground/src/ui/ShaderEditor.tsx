@@ -1,16 +1,22 @@
 import { useEffect, useRef, useState } from 'react';
 import type { ShaderCheck, ShaderDiagnostic, ShaderSource } from '../engine/ShaderProbe';
+import type { ShaderVariant } from '../engine/viewer/shaderEditing';
 import { loadShaderEdit, saveShaderEdit } from '../state/persist';
 
+/** What the view shows of the generated GLSL: the lines this scene compiles, or the material's whole source. */
+type View = 'compiled' | 'full';
+
 interface Props {
-  /** The current variant: its key and its generated GLSL. */
-  variant: ShaderSource & { key: string; defines: Record<string, unknown> };
+  /** The current variant: its key, its generated GLSL and that GLSL as this scene compiles it. */
+  variant: ShaderVariant;
   tryShader: (source: ShaderSource) => ShaderCheck;
   clearShader: () => void;
 }
 
 /**
- * The generated GLSL of the current variant, editable. Every keystroke is saved (localStorage, per variant)
+ * The generated GLSL of the current variant, editable. By default it shows the program as this scene compiles
+ * it (the material's source without its inactive `#if` branches: learn/compiledShaderGl.ts), with a toggle for
+ * the full source; either is a valid program to edit. Every keystroke is saved (localStorage, per variant)
  * so an edit is never lost; after a pause it is compiled off-screen, and only a program that compiles
  * replaces the rendered one. Errors are listed with their line in the edited text.
  */
@@ -20,6 +26,9 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
   const [edited, setEdited] = useState(() => loadShaderEdit(variant.key) !== null);
   const [diagnostics, setDiagnostics] = useState<ShaderDiagnostic[]>([]);
   const [status, setStatus] = useState('generated program');
+  const [view, setView] = useState<View>('compiled');
+  /** The view the text shows (the full source when the compiled one could not be made). */
+  const [shown, setShown] = useState<View>('full');
   const timer = useRef(0);
   const tryRef = useRef(tryShader);
   tryRef.current = tryShader;
@@ -35,16 +44,25 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
     }
   };
 
-  // A new variant (shading, lighting, bands, lights …): show its program, or the user's saved edit of it.
-  // biome-ignore lint/correctness/useExhaustiveDependencies: reload only when the variant changes.
+  /** The generated program in `wanted` view, and the view it really is. */
+  const generated = (wanted: View): [ShaderSource, View] => {
+    const compiled = wanted === 'compiled' ? variant.compiled?.() : null;
+    if (compiled) return [compiled, 'compiled'];
+    return [{ vertexShader: variant.vertexShader, fragmentShader: variant.fragmentShader }, 'full'];
+  };
+
+  // A new variant (shading, lighting, bands, lights …) or view: show its program, or the user's saved edit of it.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: reload only when the variant or the view changes.
   useEffect(() => {
     const saved = loadShaderEdit(variant.key);
-    setSource(saved ?? { vertexShader: variant.vertexShader, fragmentShader: variant.fragmentShader });
+    const [text, as] = generated(view);
+    setSource(saved ?? text);
+    setShown(as);
     setEdited(saved !== null);
     setDiagnostics([]);
     setStatus(saved ? 'edited program' : 'generated program');
     if (saved) compile(saved);
-  }, [variant.key, variant.vertexShader, variant.fragmentShader]);
+  }, [variant.key, variant.vertexShader, variant.fragmentShader, view]);
 
   useEffect(() => () => window.clearTimeout(timer.current), []);
 
@@ -61,7 +79,9 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
   const reset = () => {
     window.clearTimeout(timer.current);
     saveShaderEdit(variant.key, null);
-    setSource({ vertexShader: variant.vertexShader, fragmentShader: variant.fragmentShader });
+    const [text, as] = generated(view);
+    setSource(text);
+    setShown(as);
     setEdited(false);
     setDiagnostics([]);
     setStatus('generated program');
@@ -90,6 +110,16 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
         <button type="button" onClick={reset} disabled={!edited}>
           reset to generated
         </button>
+        <label title={edited ? 'reset to generated to switch the view' : undefined}>
+          <input
+            type="checkbox"
+            data-testid="shader-full"
+            checked={view === 'full'}
+            disabled={edited}
+            onChange={(e) => setView(e.target.checked ? 'full' : 'compiled')}
+          />{' '}
+          full source
+        </label>
         <span data-testid="shader-status" className="shader-status">
           {status}
         </span>
@@ -105,6 +135,14 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
       <textarea
         aria-label={`${stage === 'vertexShader' ? 'vertex' : 'fragment'} shader GLSL`}
         data-testid="shader-text"
+        data-view={edited ? 'edited' : shown}
+        title={
+          edited
+            ? 'your edit of the program'
+            : shown === 'compiled'
+              ? "as compiled for this scene: the material's source without its inactive #if branches"
+              : "the material's full source; three puts this scene's #defines in front of it"
+        }
         spellCheck={false}
         value={source[stage]}
         onChange={(e) => onEdit(e.target.value)}

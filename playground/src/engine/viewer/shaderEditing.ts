@@ -4,7 +4,19 @@
  */
 import type { ShadingMaterial } from '@shadelab/material';
 import type * as THREE from 'three';
+import { compiledSources } from '../../learn/compiledShaderGl';
 import { type ShaderCheck, ShaderProbe, type ShaderSource, tagLines } from '../ShaderProbe';
+
+/** The current variant for the GLSL view: its key, defines, generated GLSL and that GLSL as this scene compiles it. */
+export type ShaderVariant = ShaderSource & {
+  key: string;
+  defines: Record<string, unknown>;
+  /**
+   * The generated GLSL with only the lines compiled for this scene (inactive `#if` branches and the conditionals
+   * removed); null when it could not be compiled. Computed on the first call (one off-screen compile), then kept.
+   */
+  compiled?: () => ShaderSource | null;
+};
 
 /** A key naming the compiled variant (its defines), so per-variant shader edits are kept apart. */
 export function variantKey(material: ShadingMaterial): string {
@@ -22,6 +34,8 @@ export class ShaderEditing {
   private generated: ShaderSource = { vertexShader: '', fragmentShader: '' };
   /** The variant last reported by {@link variantChanged}. */
   private reported = '';
+  /** The last "as compiled" text, for the variant and generated GLSL it was computed from. */
+  private compiledCache: { of: string; text: ShaderSource | null } | null = null;
 
   private readonly material: ShadingMaterial;
 
@@ -32,6 +46,7 @@ export class ShaderEditing {
       readonly material: ShadingMaterial;
       readonly mesh: THREE.Mesh;
       readonly camera: THREE.Camera;
+      readonly scene?: THREE.Scene;
       requestRender(): void;
     },
   ) {
@@ -65,14 +80,24 @@ export class ShaderEditing {
     return true;
   }
 
-  /** The current variant's key and its generated GLSL (before any edit). */
-  source(): ShaderSource & { key: string; defines: Record<string, unknown> } {
+  /** The current variant's key and its generated GLSL (before any edit), and how this scene compiles it. */
+  source(): ShaderVariant {
     return {
       ...this.generated,
       key: variantKey(this.material),
       defines: { ...(this.material.defines ?? {}) },
+      compiled: this.compiled,
     };
   }
+
+  /** The generated GLSL as this scene compiles it (see {@link ShaderVariant.compiled}). */
+  private readonly compiled = (): ShaderSource | null => {
+    const of = `${variantKey(this.material)}\n${this.generated.vertexShader}\n${this.generated.fragmentShader}`;
+    if (this.compiledCache?.of !== of) {
+      this.compiledCache = { of, text: compiledSources(this.viewer, this.material, this.generated) };
+    }
+    return this.compiledCache.text;
+  };
 
   /**
    * Compiles an edited program for the current variant off-screen first; only a program that compiles and
