@@ -570,18 +570,18 @@ export class ShadingNodeMaterial extends NodeMaterial {
         `${this.#owner}: normalMap needs a per-fragment normal (shading 'phong'); ${this.#shading} shading ignores it`,
       );
     }
-    const lit = this.#lit(builder);
-    // The data outputs are written as is, as three's MeshNormalNodeMaterial writes its normal (decoded from sRGB
-    // here so that the output conversion gives the value back); the terms leave the emissive out.
-    if (this.#output === 'normal' || this.#output === 'attenuation') {
-      return (colorSpaceToWorking as N)(vec4(lit, 1), SRGBColorSpace).rgb;
+    if (this.#output !== 'color') {
+      const lit = this.#lit(builder);
+      // The data outputs are written as is, as three's MeshNormalNodeMaterial writes its normal (decoded from
+      // sRGB here so that the output conversion gives the value back); the terms leave the emissive out.
+      const data = this.#output === 'normal' || this.#output === 'attenuation';
+      return data ? (colorSpaceToWorking as N)(vec4(lit, 1), SRGBColorSpace).rgb : lit;
     }
-    if (this.#output !== 'color') return lit;
     const emissive: N =
       this.emissiveMap !== null
         ? this.#emissiveNode.mul((materialReference('emissiveMap', 'texture') as N).rgb)
         : this.#emissiveNode;
-    return lit.add(emissive);
+    return this.#lit(builder).add(emissive);
   }
 
   /** three's fog, on the colour only (the term, attenuation and normal outputs are not fogged). */
