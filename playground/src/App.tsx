@@ -10,6 +10,7 @@ import { AttenuationTool } from './learn/attenuationTool';
 import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
 import { ProfileTool } from './learn/profileTool';
+import { ProbeLauncher } from './learn/probeLauncher';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -265,6 +266,7 @@ export function App() {
           ))}
         </div>
         <Stats feed={feed} />
+        <ProbeLauncher viewerRef={viewerRef} state={state} />
         <p className="hint">
           Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>

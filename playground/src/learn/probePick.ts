@@ -1,0 +1,339 @@
+/**
+ * Probing a pixel: the ray through its centre meets the front-most ShadingMaterial surface (the sphere, or a part
+ * of the picked scene), and `explainShade` evaluates the lecture's equation there as the material's shading does
+ * on the GPU: per fragment at the hit point with the interpolated normal (Phong shading), per vertex and blended by
+ * the barycentric weights (Gouraud), once per face at its centroid with the face normal (flat).
+ */
+import {
+  computeNormalMatrix,
+  explainShade,
+  eyeOf,
+  fogFactor,
+  type ShadeExplanation,
+  type ShadeLight,
+  type ShadeMaterial,
+  type ShadeThreeLight,
+  type ShadingMaterial,
+} from '@shadelab/material';
+import * as THREE from 'three';
+import { barycentric, blend, displayed8, ndcOfPixel, pixelOfNdc, type V3 } from './probeMath';
+
+/** One vertex of a Gouraud-shaded triangle: where it is lit and its colour (linear, unclamped). */
+export interface ProbeVertex {
+  readonly point: V3;
+  readonly normal: V3;
+  readonly color: V3;
+  readonly explanation: ShadeExplanation;
+}
+
+/** A probe that met a surface. */
+export interface ProbeHit {
+  readonly hit: true;
+  readonly pixel: [number, number];
+  readonly mesh: THREE.Mesh;
+  readonly material: ShadingMaterial;
+  readonly instanceId: number | null;
+  /** The ray's point on the surface (world). */
+  readonly point: V3;
+  /** The same point in the mesh's (or the instance's) own space: what the probe follows when the view moves. */
+  readonly local: V3;
+  /** Where the equation was evaluated (the hit point, a Gouraud vertex, a flat face's centroid) and its label. */
+  readonly at: V3;
+  readonly atLabel: string;
+  /** The lecture's terms there (its `n` is the normal lit with). */
+  readonly explanation: ShadeExplanation;
+  /** Gouraud: the triangle's vertices and the weights that blend their colours at the pixel. */
+  readonly gouraud: { readonly vertices: readonly ProbeVertex[]; readonly weights: V3 } | null;
+  /** Flat: the face's centroid and normal (per fragment when the geometry has no prepared corners). */
+  readonly flat: { readonly centroid: V3; readonly normal: V3; readonly perFragment: boolean } | null;
+  /** The pixel's linear colour (unclamped), and the 8-bit sRGB colour the canvas should hold (after fog). */
+  readonly linear: V3;
+  readonly srgb8: V3;
+  /** three's fog factor at the point; null without fog. */
+  readonly fog: number | null;
+  /** What the probe does not reproduce here (a texture's texel, a deformed normal, a term view). */
+  readonly notes: readonly string[];
+}
+
+/** A probe that met no shaded surface, and why. */
+export interface ProbeMiss {
+  readonly hit: false;
+  readonly pixel: [number, number];
+  readonly reason: string;
+}
+
+export type ProbeResult = ProbeHit | ProbeMiss;
+
+const isShading = (m: unknown): m is ShadingMaterial =>
+  (m as { isShadingMaterial?: boolean } | null)?.isShadingMaterial === true;
+const MARKER = /^light marker/;
+const raycaster = new THREE.Raycaster();
+const v3 = (v: THREE.Vector3): V3 => [v.x, v.y, v.z];
+
+/** The mesh's world matrix, times the instance's matrix for an InstancedMesh. */
+function modelOf(mesh: THREE.Mesh, instanceId: number | null): THREE.Matrix4 {
+  const model = mesh.matrixWorld.clone();
+  if (instanceId !== null && (mesh as THREE.InstancedMesh).isInstancedMesh) {
+    const instance = new THREE.Matrix4();
+    (mesh as THREE.InstancedMesh).getMatrixAt(instanceId, instance);
+    model.multiply(instance);
+  }
+  return model;
+}
+
+/** The PhongLights on the material and three's lights in the scene, as `shade` takes them. */
+function lightsOf(material: ShadingMaterial, scene: THREE.Scene): (ShadeLight | ShadeThreeLight)[] {
+  const at = new THREE.Vector3();
+  const lights: (ShadeLight | ShadeThreeLight)[] = material.phongLights.map((l) => ({
+    position: v3(l.getWorldPosition(at)),
+    ambient: l.ambient.toArray(),
+    diffuse: l.diffuse.toArray(),
+    specular: l.specular.toArray(),
+    attenuation: l.attenuation,
+  }));
+  scene.traverseVisible((object) => {
+    const light = object as THREE.Light;
+    if (!light.isLight || (object as { isPhongLight?: boolean }).isPhongLight) return;
+    const world = light.getWorldPosition(new THREE.Vector3());
+    const color = light.color.clone().multiplyScalar(light.intensity).toArray();
+    if ((light as THREE.AmbientLight).isAmbientLight) lights.push({ type: 'ambient', color });
+    else if ((light as THREE.HemisphereLight).isHemisphereLight) {
+      const ground = (light as THREE.HemisphereLight).groundColor.clone().multiplyScalar(light.intensity);
+      lights.push({
+        type: 'hemisphere',
+        color,
+        groundColor: ground.toArray(),
+        direction: v3(world.normalize()),
+      });
+    } else {
+      const target = (light as THREE.DirectionalLight).target?.getWorldPosition(new THREE.Vector3());
+      const direction = target ? v3(world.clone().sub(target).normalize()) : undefined;
+      if ((light as THREE.DirectionalLight).isDirectionalLight)
+        lights.push({ type: 'directional', color, direction });
+      else {
+        const point = light as THREE.PointLight;
+        const base = { color, position: v3(world), distance: point.distance, decay: point.decay };
+        const spot = light as THREE.SpotLight;
+        if (spot.isSpotLight) {
+          const [coneCos, penumbraCos] = [Math.cos(spot.angle), Math.cos(spot.angle * (1 - spot.penumbra))];
+          lights.push({ type: 'spot', ...base, direction, coneCos, penumbraCos });
+        } else if (point.isPointLight) lights.push({ type: 'point', ...base });
+      }
+    }
+  });
+  return lights;
+}
+
+/** The material as `shade` takes it. */
+function shadeMaterialOf(m: ShadingMaterial): ShadeMaterial {
+  return {
+    ka: m.ka.toArray(),
+    kd: m.kd.toArray(),
+    ks: m.ks.toArray(),
+    shininess: m.shininess,
+    lighting: m.lighting,
+    celBands: m.celBands,
+    emissive: m.emissive.toArray(),
+  };
+}
+
+/** Whether a world point survives the material's clipping planes (three drops the negative side). */
+const unclipped = (material: THREE.Material, point: THREE.Vector3) =>
+  (material.clippingPlanes ?? []).every((plane) => plane.distanceToPoint(point) >= 0);
+
+/**
+ * Probes device pixel (`x`, `y`) (y from the top) of a `width` × `height` canvas showing `scene` through `camera`:
+ * the front-most visible ShadingMaterial surface under the pixel's centre, explained as its shading lights it.
+ */
+export function probePixel(
+  scene: THREE.Scene,
+  camera: THREE.Camera,
+  x: number,
+  y: number,
+  width: number,
+  height: number,
+): ProbeResult {
+  const pixel: [number, number] = [x, y];
+  const [nx, ny] = ndcOfPixel(x, y, width, height);
+  raycaster.setFromCamera(new THREE.Vector2(nx, ny), camera);
+  const candidates: THREE.Object3D[] = [];
+  scene.traverseVisible((o) => {
+    const mesh = o as THREE.Mesh;
+    if (mesh.isMesh && (isShading(mesh.material) || MARKER.test(mesh.name))) candidates.push(mesh);
+  });
+  const found = raycaster
+    .intersectObjects(candidates, false)
+    .find((h) => unclipped((h.object as THREE.Mesh).material as THREE.Material, h.point));
+  if (!found?.face) {
+    return { hit: false, pixel, reason: 'No object under this pixel: the probe is off the object.' };
+  }
+  const mesh = found.object as THREE.Mesh;
+  if (!isShading(mesh.material)) {
+    return { hit: false, pixel, reason: `The ${mesh.name} hides the surface at this pixel.` };
+  }
+  return explainHit(scene, camera, mesh, mesh.material, found, pixel);
+}
+
+function explainHit(
+  scene: THREE.Scene,
+  camera: THREE.Camera,
+  mesh: THREE.Mesh,
+  material: ShadingMaterial,
+  found: THREE.Intersection,
+  pixel: [number, number],
+): ProbeHit {
+  const notes: string[] = [];
+  const instanceId = found.instanceId ?? null;
+  const model = modelOf(mesh, instanceId);
+  const inverse = model.clone().invert();
+  const geometry = mesh.geometry;
+  const { a, b, c } = found.face!;
+  const corners = [a, b, c].map((i) => mesh.getVertexPosition(i, new THREE.Vector3()));
+  const [pa, pb, pc] = corners as [THREE.Vector3, THREE.Vector3, THREE.Vector3];
+  const local = found.point.clone().applyMatrix4(inverse);
+  const weights = barycentric(v3(local), v3(pa), v3(pb), v3(pc));
+  const modelNormals = (material as { normalMatrix?: string }).normalMatrix === 'model';
+  const normalMatrix = modelNormals
+    ? new THREE.Matrix3().setFromMatrix4(model)
+    : computeNormalMatrix(model, new THREE.Matrix3());
+  // The face as drawn: its object-space winding normal against the ray (three's front face), then the side.
+  const faceNormal = pb.clone().sub(pa).cross(pc.clone().sub(pa));
+  const rayLocal = raycaster.ray.direction.clone().applyMatrix3(new THREE.Matrix3().setFromMatrix4(inverse));
+  const front = faceNormal.dot(rayLocal) < 0;
+  const side = material.side;
+  const sign = side === THREE.BackSide || (side === THREE.DoubleSide && !front) ? -1 : 1;
+  // The object normals: the normal attribute, or the position (a sphere without one: analytic normals).
+  const normals = geometry.getAttribute('normal');
+  const objectNormal = (i: number, p: THREE.Vector3) =>
+    normals ? new THREE.Vector3().fromBufferAttribute(normals, i) : p.clone();
+  // The tint: instance colour × vertex colour (three's USE_COLOR when vertexColors is on).
+  const instanceColor = new THREE.Color(1, 1, 1);
+  if (instanceId !== null && (mesh as THREE.InstancedMesh).instanceColor)
+    (mesh as THREE.InstancedMesh).getColorAt(instanceId, instanceColor);
+  const colors = material.vertexColors ? geometry.getAttribute('color') : undefined;
+  const tints = [a, b, c].map((i): V3 => {
+    const t = v3(new THREE.Vector3(instanceColor.r, instanceColor.g, instanceColor.b));
+    if (colors) for (let k = 0; k < 3; k++) t[k]! *= colors.getComponent(i, k);
+    return t;
+  });
+  if (material.map) notes.push('The texture’s texel tints ka and kd on the GPU; the probe does not read it.');
+  if (material.normalMap && material.shading === 'phong') notes.push('The normal map is not applied here.');
+  if ((mesh as THREE.SkinnedMesh).isSkinnedMesh || mesh.morphTargetInfluences?.length)
+    notes.push('Skinned or morphed: positions are deformed here, normals are not.');
+  const output = (material as { output?: string }).output;
+  if (output && output !== 'color') notes.push(`The term view “${output}” is on: the GPU shows that term.`);
+
+  const eye = eyeOf(camera, new THREE.Vector4()).toArray();
+  const shadeMaterial = shadeMaterialOf(material);
+  const lights = lightsOf(material, scene);
+  const explain = (position: V3, normal: V3, tint: V3) =>
+    explainShade({ position, normal, eye, tint }, shadeMaterial, lights);
+  const toWorld = (p: THREE.Vector3) => v3(p.clone().applyMatrix4(model));
+  const worldNormal = (n: THREE.Vector3) => v3(n.clone().applyMatrix3(normalMatrix).multiplyScalar(sign));
+  const point = v3(found.point);
+
+  let at = point;
+  let atLabel = 'the hit point';
+  let explanation: ShadeExplanation;
+  let linear: V3;
+  let gouraud: ProbeHit['gouraud'] = null;
+  let flat: ProbeHit['flat'] = null;
+  if (material.shading === 'flat') {
+    const perFragment = geometry.index !== null && !geometry.getAttribute('flatCornerA');
+    const normal = worldNormal(faceNormal);
+    if (!perFragment) {
+      at = toWorld(pa.clone().add(pb).add(pc).divideScalar(3));
+      atLabel = 'the face’s centroid';
+    }
+    explanation = explain(at, normal, tints[2]!);
+    if (Math.min(...weights) < 1e-9)
+      notes.push('The pixel’s centre is on an edge: the GPU’s fill rule may draw the neighbouring face.');
+    flat = {
+      centroid: toWorld(pa.clone().add(pb).add(pc).divideScalar(3)),
+      normal: explanation.n,
+      perFragment,
+    };
+    linear = explanation.sum;
+  } else if (material.shading === 'gouraud') {
+    const vertices = [a, b, c].map((index, i): ProbeVertex => {
+      const p = corners[i]!;
+      const e = explain(toWorld(p), worldNormal(objectNormal(index, p)), tints[i]!);
+      return { point: toWorld(p), normal: e.n, color: e.sum, explanation: e };
+    });
+    const k = weights.indexOf(Math.max(...weights));
+    at = vertices[k]!.point;
+    atLabel = `vertex ${k + 1} (the largest weight)`;
+    explanation = vertices[k]!.explanation;
+    gouraud = { vertices, weights };
+    linear = blend([vertices[0]!.color, vertices[1]!.color, vertices[2]!.color], weights);
+  } else {
+    // Phong shading: the unit vertex normals (world) blended, the tint blended, lit at the hit point.
+    const unit = [a, b, c].map((index, i): V3 => {
+      const n = objectNormal(index, corners[i]!).applyMatrix3(normalMatrix);
+      const length = n.length();
+      return length > 0 ? v3(n.divideScalar(length)) : [0, 0, 0];
+    });
+    const n = blend(unit as [V3, V3, V3], weights).map((x) => x * sign) as V3;
+    const tint = blend(tints as [V3, V3, V3], weights);
+    explanation = explain(point, n, tint);
+    linear = explanation.sum;
+  }
+  let fog: number | null = null;
+  const sceneFog = scene.fog;
+  if (sceneFog && material.fog) {
+    const depth = -found.point.clone().applyMatrix4(camera.matrixWorldInverse).z;
+    const params = (sceneFog as THREE.FogExp2).isFogExp2
+      ? { density: (sceneFog as THREE.FogExp2).density }
+      : { near: (sceneFog as THREE.Fog).near, far: (sceneFog as THREE.Fog).far };
+    fog = fogFactor(params, depth);
+  }
+  const srgb8 = displayed8(
+    linear,
+    fog === null ? undefined : { color: sceneFog!.color.toArray(), factor: fog },
+  );
+  return {
+    hit: true,
+    pixel,
+    mesh,
+    material,
+    instanceId,
+    point,
+    local: v3(local),
+    at,
+    atLabel,
+    explanation,
+    gouraud,
+    flat,
+    linear,
+    srgb8,
+    fog,
+    notes,
+  };
+}
+
+/**
+ * Where a followed point is now: the device pixel of `local` (in `mesh`'s, or its instance's, own space) after the
+ * view moved; null when it left the canvas or is behind the camera.
+ */
+export function pixelOfFollowed(
+  camera: THREE.Camera,
+  mesh: THREE.Mesh,
+  instanceId: number | null,
+  local: V3,
+  width: number,
+  height: number,
+): [number, number] | null {
+  const world = new THREE.Vector3(...local).applyMatrix4(modelOf(mesh, instanceId));
+  const view = world.clone().applyMatrix4(camera.matrixWorldInverse);
+  if ((camera as THREE.PerspectiveCamera).isPerspectiveCamera && view.z >= 0) return null;
+  const ndc = world.project(camera);
+  return pixelOfNdc(ndc.x, ndc.y, width, height);
+}
+
+/** The canvas's pixel (`x`, `y`), y from the top, as 8-bit RGB: what the GPU drew last (the buffer is kept). */
+export function readCanvasPixel(renderer: THREE.WebGLRenderer, x: number, y: number): V3 {
+  const gl = renderer.getContext();
+  const out = new Uint8Array(4);
+  gl.readPixels(x, gl.drawingBufferHeight - 1 - y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  return [out[0]!, out[1]!, out[2]!];
+}

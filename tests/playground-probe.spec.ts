@@ -1,0 +1,186 @@
+import { expect, type Page, test } from '@playwright/test';
+import { open, picture, settle, stateUrl } from './playground-helpers';
+
+// Issue 24's pixel probe: Alt+click on the object opens a panel with the lecture's equation at that pixel
+// (explainShade, as the shading evaluates it) beside the GPU's pixel read back from the canvas. The probe's 8-bit
+// colour must agree with the GPU's within 1/255 for every shading × lighting, on the sphere and on picked scenes.
+// One page for the whole file (each state is loaded through the URL's hash, without a reload), many probes.
+
+test.describe.configure({ mode: 'serial' });
+
+const SHADINGS = ['flat', 'gouraud', 'phong'] as const;
+/** The lightings: Phong, Blinn-Phong and cel (4 bands, on Blinn-Phong). */
+const LIGHTINGS = [
+  { name: 'phong', material: { lighting: 'phong' } },
+  { name: 'blinn-phong', material: { lighting: 'blinn-phong' } },
+  { name: 'cel', material: { lighting: 'blinn-phong', celBands: 4 } },
+] as const;
+
+let page: Page;
+let clicks = 0;
+
+test.beforeAll(async ({ browser }) => {
+  page = await browser.newPage({ viewport: { width: 800, height: 600 } });
+  await open(page);
+});
+test.afterAll(async () => {
+  await page.close();
+});
+
+/** Loads a state through the hash (the app takes it without a reload) and waits until the page rests. */
+async function show(state: object): Promise<void> {
+  await page.evaluate((hash) => {
+    location.hash = hash;
+  }, stateUrl(state).slice(1));
+  await settle(page, 250);
+}
+
+interface Probed {
+  cpu: number[] | null;
+  gpu: number[] | null;
+  miss: string | null;
+  text: string;
+}
+
+/** Alt+clicks the canvas at (fx, fy) (fractions of its size) and reads the probe panel once it has probed. */
+async function probeAt(fx: number, fy: number): Promise<Probed> {
+  const canvas = page.getByTestId('viewport');
+  const box = (await canvas.boundingBox())!;
+  const position = { x: Math.floor(box.width * fx) + 0.5, y: Math.floor(box.height * fy) + 0.5 };
+  await canvas.click({ modifiers: ['Alt'], position });
+  clicks++;
+  const panel = page.getByTestId('probe-panel');
+  await expect(panel).toHaveAttribute('data-probed', String(clicks));
+  return panel.evaluate((element) => {
+    const rgb = (id: string) =>
+      element.querySelector(`[data-testid="${id}"]`)?.getAttribute('data-rgb')?.split(',').map(Number) ??
+      null;
+    return {
+      cpu: rgb('probe-cpu'),
+      gpu: rgb('probe-gpu'),
+      miss: element.querySelector('[data-testid="probe-miss"]')?.textContent ?? null,
+      text: element.textContent ?? '',
+    };
+  });
+}
+
+/** The probe hit, and its colour is the GPU's within 1/255 on every channel. */
+function expectAgrees(probed: Probed, where: string): void {
+  expect(probed.miss, `${where}: a hit`).toBeNull();
+  expect(probed.cpu, `${where}: the probe's colour`).not.toBeNull();
+  expect(probed.gpu, `${where}: the GPU's pixel`).not.toBeNull();
+  const delta = Math.max(...probed.cpu!.map((c, i) => Math.abs(c - probed.gpu![i]!)));
+  expect(delta, `${where}: probe ${probed.cpu} vs GPU ${probed.gpu}`).toBeLessThanOrEqual(1);
+}
+
+/** Points on the default sphere (scale 2, 1, 2 from (0, 0, 3)): centre, highlight side, rim, lower left. */
+const SPHERE_POINTS = [
+  [0.5, 0.5],
+  [0.42, 0.38],
+  [0.8, 0.52],
+  [0.3, 0.55],
+] as const;
+
+for (const shading of SHADINGS) {
+  test(`the sphere, ${shading} shading: the probe agrees with the GPU pixel for every lighting`, async () => {
+    for (const lighting of LIGHTINGS) {
+      await show({ material: { shading, ...lighting.material } });
+      for (const [fx, fy] of SPHERE_POINTS) {
+        const probed = await probeAt(fx, fy);
+        expectAgrees(probed, `sphere ${shading} × ${lighting.name} at (${fx}, ${fy})`);
+        if (shading === 'gouraud') expect(probed.text).toContain('weight');
+        if (shading === 'flat') expect(probed.text).toContain('centroid');
+        if (lighting.name === 'cel') expect(probed.text).toContain('cel band');
+        expect(probed.text).toContain(lighting.name === 'phong' ? 'v·r' : 'n·h');
+      }
+    }
+  });
+}
+
+/** Picked scenes: instanced spheres (instance colours), three's lights with fog and clipping. */
+const SCENES = [
+  {
+    scene: 'instanced',
+    points: [
+      [0.5, 0.5],
+      [0.3, 0.4],
+      [0.62, 0.55],
+    ],
+  },
+  {
+    // Off the canvas's middle column: there a pixel's centre lies on the floor's edge at x = 0, a tie that the
+    // GPU's fill rule breaks (the panel says so) and a flat-shaded probe may not.
+    scene: 'lights',
+    points: [
+      [0.3, 0.5],
+      [0.7, 0.6],
+      [0.53, 0.55],
+    ],
+  },
+] as const;
+
+for (const { scene, points } of SCENES) {
+  for (const shading of SHADINGS) {
+    test(`the ${scene} scene, ${shading} shading: the probe agrees with the GPU pixel for every lighting`, async () => {
+      for (const lighting of LIGHTINGS) {
+        await show({ scene, material: { shading, ...lighting.material } });
+        let hits = 0;
+        for (const [fx, fy] of points) {
+          const probed = await probeAt(fx, fy);
+          if (probed.miss) continue; // between the instances
+          hits++;
+          expectAgrees(probed, `${scene} ${shading} × ${lighting.name} at (${fx}, ${fy})`);
+        }
+        expect(hits, `${scene} ${shading} × ${lighting.name}: probes that hit`).toBeGreaterThan(0);
+      }
+    });
+  }
+}
+
+test('a probe off the object says so; the arrows toggle', async () => {
+  const close = page.getByRole('button', { name: 'close the probe' });
+  if (await close.count()) await close.click(); // the panel of the tests before, with its arrows
+  await expect(page.getByTestId('probe-panel')).toHaveCount(0);
+  await show({});
+  const before = await picture(page);
+  const same = async (expected: string, what: string) =>
+    expect((await picture(page)) === expected, what).toBe(true);
+  const off = await probeAt(0.02, 0.03);
+  expect(off.miss).toMatch(/off the object/);
+  expect(off.cpu).toBeNull();
+  await same(before, 'a probe off the object draws no arrows');
+
+  const probed = await probeAt(0.45, 0.45);
+  expectAgrees(probed, 'sphere, default state');
+  const withArrows = await picture(page);
+  expect(withArrows === before, 'the arrows are drawn').toBe(false);
+  await page.getByTestId('probe-arrows').uncheck();
+  await settle(page, 250);
+  await same(before, 'arrows off: the picture without the probe');
+  await page.getByTestId('probe-arrows').check();
+  await settle(page, 250);
+  await same(withArrows, 'arrows on again');
+});
+
+test('the probe follows the trackball while the panel is open, and still agrees with the GPU', async () => {
+  await show({ material: { shading: 'gouraud' } });
+  const first = await probeAt(0.5, 0.45);
+  expectAgrees(first, 'before the drag');
+  const pixel = await page.getByTestId('probe-pixel').textContent();
+  const canvas = page.getByTestId('viewport');
+  const box = (await canvas.boundingBox())!;
+  await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.56, box.y + box.height * 0.5, { steps: 4 });
+  await page.mouse.up();
+  await settle(page, 250);
+  await expect(page.getByTestId('probe-pixel')).not.toHaveText(pixel ?? '');
+  const after = await page.getByTestId('probe-panel').evaluate((element) => ({
+    cpu: element.querySelector('[data-testid="probe-cpu"]')?.getAttribute('data-rgb'),
+    gpu: element.querySelector('[data-testid="probe-gpu"]')?.getAttribute('data-rgb'),
+  }));
+  const [cpu, gpu] = [after.cpu!.split(',').map(Number), after.gpu!.split(',').map(Number)];
+  expect(Math.max(...cpu.map((c, i) => Math.abs(c - gpu[i]!)))).toBeLessThanOrEqual(1);
+  await page.getByRole('button', { name: 'close the probe' }).click();
+  await expect(page.getByTestId('probe-panel')).toHaveCount(0);
+});
