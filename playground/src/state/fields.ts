@@ -5,7 +5,7 @@
  * (`ui/panelFields.ts`) are derived from it: adding an option is one row here.
  */
 import type { DepthModeRequest, ProjectionType } from '@shadelab/camera';
-import { LIGHTINGS, MAX_CEL_BANDS, SHADINGS } from '@shadelab/material';
+import { LIGHTINGS, MAX_CEL_BANDS, NORMAL_MATRIX_MODES, SHADING_OUTPUTS, SHADINGS } from '@shadelab/material';
 import { SPHERE_BASES } from '@shadelab/sphere';
 import type { BallMapping } from '@shadelab/trackball';
 
@@ -183,6 +183,15 @@ export const STATE_FIELDS = {
     kd: rgb([0.8, 0.35, 0.15], 'kd'),
     ks: rgb([1, 1, 1], 'ks'),
     shininess: num(50, { min: 0, max: 1e4 }, { label: 'shininess', step: 1 }),
+    /** What the material draws: the lit colour, or one term of the lecture's equation alone (a term view). */
+    output: choice(SHADING_OUTPUTS, 'color', { label: 'output' }, '@shadelab/material SHADING_OUTPUTS'),
+    /** How normals go to world space: (M⁻¹)ᵀ, or M itself (the lecture's wrong way, a teaching aid). */
+    normalMatrix: choice(
+      NORMAL_MATRIX_MODES,
+      'inverse-transpose',
+      { label: 'normal matrix', options: { '(M⁻¹)ᵀ': 'inverse-transpose', 'M (wrong)': 'model' } },
+      '@shadelab/material NORMAL_MATRIX_MODES',
+    ),
   },
   lights: row<StateOf<typeof LIGHT_FIELDS>[]>(
     { type: 'list', item: LIGHT_FIELDS, max: MAX_LIGHTS },
