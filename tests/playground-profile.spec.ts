@@ -105,6 +105,8 @@ test('a zero-length line does nothing; outside profile mode a drag turns the tra
   const button = page.getByRole('button', { name: 'intensity profile' });
   await button.click();
   await expect(button).toHaveAttribute('aria-pressed', 'true');
+  await expect(page.getByTestId('profile-overlay')).toBeVisible();
+  await settle(page);
   const box = (await page.getByTestId('viewport').boundingBox())!;
   const [x, y] = [box.x + box.width * 0.5, box.y + box.height * 0.5];
   const count = await frames(page);

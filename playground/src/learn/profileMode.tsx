@@ -1,0 +1,136 @@
+/**
+ * Profile mode (loaded when the mode is first turned on): an overlay over the canvas takes the pointer, so a drag
+ * draws a line instead of turning the trackball; on release the line's pixels are read back from the view drawn
+ * in flat, Gouraud and Phong shading (`profileSample.ts`) and plotted (`profilePlot.tsx`). A zero-length line
+ * (both ends in one pixel) does nothing. The profile is read again after every change of the view (trackball
+ * keys, panel edits) while the mode is on.
+ */
+import { type PointerEvent, type RefObject, useEffect, useState } from 'react';
+import type { Viewer } from '../engine/viewer/Viewer';
+import type { PlaygroundState } from '../state/schema';
+import { type CanvasPoint, linePixels } from './profileLine';
+import ProfilePlot from './profilePlot';
+import { type ProfileSamples, sampleProfile } from './profileSample';
+import { LEARN_PANEL } from './profileTool';
+
+/** A segment on the canvas, drawing-buffer pixels. */
+type Segment = { from: CanvasPoint; to: CanvasPoint };
+type Profile = { pixels: [number, number][]; samples: ProfileSamples };
+
+/** Quiet time after a change of the view before the profile is read again, ms. */
+const FOLLOW_MS = 200;
+
+/** Why the profile cannot be read in this state, or null when it can. */
+function unavailable(state: PlaygroundState, viewer: Viewer | null): string | null {
+  if (state.view !== 'single' || state.renderer !== 'webgl') {
+    return 'The profile reads the single view in WebGL mode: choose view "single sphere" and renderer "WebGL".';
+  }
+  if (viewer && viewer.material.fragmentShader !== viewer.getShaderSource().fragmentShader) {
+    return 'A GLSL edit is running; each shading compiles its own program, which would drop it. Reset the edit to read a profile.';
+  }
+  return null;
+}
+
+/** The overlay, the line and the plot's panel (see the module comment). */
+export default function ProfileMode({
+  viewerRef,
+  state,
+}: {
+  viewerRef: RefObject<Viewer | null>;
+  state: PlaygroundState;
+}) {
+  const [segment, setSegment] = useState<Segment | null>(null);
+  const [dragging, setDragging] = useState<Segment | null>(null);
+  const [profile, setProfile] = useState<Profile | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  const blocked = unavailable(state, viewerRef.current);
+
+  // Read the profile of the committed line, again after every change of the view (once the app applied it: its
+  // effect runs after this child's, hence the delay).
+  // biome-ignore lint/correctness/useExhaustiveDependencies: a new state is a new view to read, though unread here.
+  useEffect(() => {
+    if (!segment || blocked) return;
+    const timer = window.setTimeout(() => {
+      const viewer = viewerRef.current;
+      if (!viewer) return;
+      const pixels = linePixels(segment.from, segment.to, viewer.canvas.width, viewer.canvas.height);
+      if (!pixels) return;
+      try {
+        setProfile({ pixels, samples: sampleProfile(viewer, pixels) });
+        setError(null);
+      } catch (e) {
+        setError(e instanceof Error ? e.message : String(e));
+      }
+    }, FOLLOW_MS);
+    return () => window.clearTimeout(timer);
+  }, [segment, state, blocked, viewerRef]);
+
+  const canvas = viewerRef.current?.canvas;
+  const [bw, bh] = canvas ? [canvas.width, canvas.height] : [1, 1];
+  /** The pointer's position in the canvas's drawing-buffer pixels. */
+  const at = (e: PointerEvent<SVGSVGElement>): CanvasPoint => {
+    const box = e.currentTarget.getBoundingClientRect();
+    return [((e.clientX - box.left) * bw) / box.width, ((e.clientY - box.top) * bh) / box.height];
+  };
+  const onDown = (e: PointerEvent<SVGSVGElement>) => {
+    if (e.button !== 0) return;
+    e.currentTarget.setPointerCapture(e.pointerId);
+    const p = at(e);
+    setDragging({ from: p, to: p });
+  };
+  const onMove = (e: PointerEvent<SVGSVGElement>) => dragging && setDragging({ ...dragging, to: at(e) });
+  const onUp = (e: PointerEvent<SVGSVGElement>) => {
+    if (!dragging) return;
+    const line = { ...dragging, to: at(e) };
+    setDragging(null);
+    // A zero-length line (both ends in one pixel) does nothing: the last profile stays.
+    if (linePixels(line.from, line.to, bw, bh)) setSegment(line);
+  };
+  const shown = dragging ?? segment;
+
+  return (
+    <>
+      {!blocked && (
+        <svg
+          data-testid="profile-overlay"
+          viewBox={`0 0 ${bw} ${bh}`}
+          preserveAspectRatio="none"
+          aria-label="Profile mode: drag a line across the view"
+          style={{
+            position: 'absolute',
+            inset: 0,
+            width: '100%',
+            height: '100%',
+            cursor: 'crosshair',
+            touchAction: 'none',
+          }}
+          onPointerDown={onDown}
+          onPointerMove={onMove}
+          onPointerUp={onUp}
+          onPointerCancel={() => setDragging(null)}
+        >
+          {shown && (
+            <line
+              data-testid="profile-line"
+              x1={shown.from[0]}
+              y1={shown.from[1]}
+              x2={shown.to[0]}
+              y2={shown.to[1]}
+              stroke="#fff"
+              strokeDasharray="4 3"
+              vectorEffect="non-scaling-stroke"
+            />
+          )}
+        </svg>
+      )}
+      <section
+        style={{ ...LEARN_PANEL, top: 64, maxHeight: 'calc(50% - 68px)' }}
+        aria-label="Mach bands: intensity profile"
+        data-testid="profile-panel"
+      >
+        {blocked ?? error ?? (!profile && 'Drag a line across the view: its intensity profile appears here.')}
+        {!blocked && profile && <ProfilePlot pixels={profile.pixels} samples={profile.samples} />}
+      </section>
+    </>
+  );
+}
