@@ -9,13 +9,15 @@
 //   ```ts partial         needs the context in the `<!-- context … -->` comment right above the fence
 //   ```ts partial=NAME    needs the context in a `<!-- context=NAME … -->` comment anywhere in the same file
 //   ```ts run=SCENE       complete, and run in Chromium by tests/snippets.spec.ts, its picture checked as SCENE
+//   ```ts picture=NAME    complete, and run in Chromium by tests/snippets.spec.ts, its canvas compared pixel for
+//                         pixel with images/NAME.png beside its Markdown (the image the Markdown shows)
 //   ```ts file=PATH       a file of an app the Markdown builds (src/scene.ts): checked at PATH beside the other
 //                         file= blocks of the same Markdown, so that relative imports between them resolve
 // A context is code (imports, `declare const` lines) put before the block for the type check only.
 // See DEVELOPERS.md, "Code in docs". tests/snippets.spec.ts and tests/pack.spec.ts import `collectBlocks`.
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { dirname, join, relative, resolve } from 'node:path';
+import { dirname, join, posix, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -47,6 +49,7 @@ const LANGUAGES = /** @type {const} */ ({
  * @property {number} indent columns of indentation removed from each line
  * @property {string | true | undefined} partial `true` for `partial`, NAME for `partial=NAME`
  * @property {string | undefined} run SCENE of `run=SCENE`
+ * @property {string | undefined} picture NAME of `picture=NAME`: its canvas is images/NAME.png beside the Markdown
  * @property {string | undefined} path PATH of `file=PATH`: the block is that file of an app (relative, with `/`)
  * @property {string} heading the nearest Markdown heading above the block ('' if none)
  * @property {Context | undefined} context the context it is checked with
@@ -125,6 +128,7 @@ export function extractBlocks(text, file) {
           indent: pad.length,
           partial: undefined,
           run: undefined,
+          picture: undefined,
           path: undefined,
           heading,
           context: undefined,
@@ -134,6 +138,8 @@ export function extractBlocks(text, file) {
           if (key === 'partial' && value === undefined) block.partial = true;
           else if (key === 'partial' && value) block.partial = value;
           else if (key === 'run' && value) block.run = value;
+          else if (key === 'picture' && value && /^[a-z0-9]+(-[a-z0-9]+)*$/.test(value))
+            block.picture = value;
           else if (
             key === 'file' &&
             value &&
@@ -143,13 +149,19 @@ export function extractBlocks(text, file) {
             block.path = value;
           else
             problems.push(
-              `${file}:${i + 1}: unknown mark '${word}' in \`\`\`${info.trim()} (allowed: partial, partial=NAME, run=SCENE, file=PATH)`,
+              `${file}:${i + 1}: unknown mark '${word}' in \`\`\`${info.trim()} (allowed: partial, partial=NAME, run=SCENE, picture=NAME in lower-case-with-dashes, file=PATH)`,
             );
         }
         if (block.run && block.partial)
           problems.push(
             `${file}:${i + 1}: a run=${block.run} block is run as it stands: it cannot be partial`,
           );
+        if (block.picture && (block.partial || block.path))
+          problems.push(
+            `${file}:${i + 1}: a picture=${block.picture} block is run as it stands: it cannot be partial or a file=`,
+          );
+        if (block.picture && blocks.some((b) => b.picture === block.picture))
+          problems.push(`${file}:${i + 1}: a second picture=${block.picture} in this file`);
         if (block.partial === true) {
           if (pending && pendingEnd === i) block.context = pending;
           else
@@ -325,9 +337,16 @@ export function checkBlocks(blocks, outDir) {
   return { errors, output };
 }
 
+/**
+ * The image a `picture=NAME` block's canvas must equal, relative to the root: images/NAME.png in its Markdown's
+ * folder, which the Markdown shows as `![…](images/NAME.png)`.
+ * @param {Block & { picture: string }} block
+ */
+export const pictureFile = (block) => posix.join(posix.dirname(block.file), 'images', `${block.picture}.png`);
+
 /** @param {Block} b */
 export const describeBlock = (b) =>
-  `${b.file}:${b.line} \`\`\`${b.lang}${b.partial === true ? ' partial' : b.partial ? ` partial=${b.partial}` : ''}${b.run ? ` run=${b.run}` : ''}${b.path ? ` file=${b.path}` : ''}`;
+  `${b.file}:${b.line} \`\`\`${b.lang}${b.partial === true ? ' partial' : b.partial ? ` partial=${b.partial}` : ''}${b.run ? ` run=${b.run}` : ''}${b.picture ? ` picture=${b.picture}` : ''}${b.path ? ` file=${b.path}` : ''}`;
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
   const args = process.argv.slice(2);
@@ -354,10 +373,11 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
     );
     process.exit(1);
   }
-  const runs = blocks.filter((b) => b.run).length;
+  const runs = blocks.filter((b) => b.run || b.picture).length;
+  const pictures = blocks.filter((b) => b.picture).length;
   const partial = blocks.filter((b) => b.partial).length;
   console.log(
     `${blocks.length} code blocks in ${markdown.size} Markdown files type-check against the built packages ` +
-      `(${partial} partial with their context, ${runs} also run by tests/snippets.spec.ts)`,
+      `(${partial} partial with their context, ${runs} also run by tests/snippets.spec.ts, ${pictures} of them drawing a picture of the docs)`,
   );
 }

@@ -5,7 +5,7 @@ import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
-import { checkBlocks, collectBlocks, extractBlocks, root } from './snippets.mjs';
+import { checkBlocks, collectBlocks, extractBlocks, pictureFile, root } from './snippets.mjs';
 
 const FIXTURE = `# Fixture
 
@@ -89,6 +89,27 @@ describe('extractBlocks', () => {
     expect(() =>
       extractBlocks('<!-- context\ndeclare const a: 1;\n-->\n```ts partial run=lecture\na;\n```\n', 'e.md'),
     ).toThrow('e.md:4: a run=lecture block is run as it stands');
+  });
+
+  test('picture=NAME: a complete block whose canvas is images/NAME.png beside its Markdown; refused partial, twice or misnamed', () => {
+    const [block] = extractBlocks('# Shading\n\n```ts picture=flat-shading\na;\n```\n', 'docs/concepts.md');
+    expect([block.picture, block.run, block.partial, block.heading]).toEqual([
+      'flat-shading',
+      undefined,
+      undefined,
+      'Shading',
+    ]);
+    expect(pictureFile({ ...block, picture: 'flat-shading' })).toBe('docs/images/flat-shading.png');
+    expect(pictureFile({ ...block, file: 'README.md', picture: 'x' })).toBe('images/x.png');
+    expect(() =>
+      extractBlocks('<!-- context\ndeclare const a: 1;\n-->\n```ts partial picture=p\na;\n```\n', 'g.md'),
+    ).toThrow('g.md:4: a picture=p block is run as it stands: it cannot be partial');
+    expect(() => extractBlocks('```ts picture=p\na;\n```\n\n```ts picture=p\nb;\n```\n', 'h.md')).toThrow(
+      'h.md:5: a second picture=p in this file',
+    );
+    expect(() => extractBlocks('```ts picture=Bad_Name\na;\n```\n', 'i.md')).toThrow(
+      "i.md:1: unknown mark 'picture=Bad_Name'",
+    );
   });
 });
 
