@@ -144,9 +144,10 @@ vec3 shadingRescale( vec3 v ) {
 mat3 shadingScaledCofactor( mat3 a, out float s, out bool mirrored ) {
   vec3 e = max( max( abs( a[ 0 ] ), abs( a[ 1 ] ) ), abs( a[ 2 ] ) );
   s = max( max( e.x, e.y ), e.z );
-  vec3 a0 = a[ 0 ] / s;
-  vec3 a1 = a[ 1 ] / s;
-  vec3 a2 = a[ 2 ] / s;
+  float r = 1.0 / s; // one division, not nine (per vertex)
+  vec3 a0 = a[ 0 ] * r;
+  vec3 a1 = a[ 1 ] * r;
+  vec3 a2 = a[ 2 ] * r;
   mat3 c = mat3( cross( a1, a2 ), cross( a2, a0 ), cross( a0, a1 ) );
   mirrored = dot( a0, c[ 0 ] ) < 0.0;
   return c;
