@@ -184,3 +184,31 @@ test('the probe follows the trackball while the panel is open, and still agrees 
   await page.getByRole('button', { name: 'close the probe' }).click();
   await expect(page.getByTestId('probe-panel')).toHaveCount(0);
 });
+
+test('the open panel fits the view at 1280 × 800 and 1920 × 1080, below the object', async () => {
+  for (const [width, height] of [
+    [1280, 800],
+    [1920, 1080],
+  ] as const) {
+    await page.setViewportSize({ width, height });
+    await show({ material: { shading: 'gouraud', celBands: 3 } });
+    const probed = await probeAt(0.5, 0.45);
+    expectAgrees(probed, `${width} × ${height}`);
+    if (process.env['SHADELAB_PROBE_SHOT'])
+      await page.screenshot({ path: `${process.env['SHADELAB_PROBE_SHOT']}-${width}.png` });
+    const canvas = (await page.getByTestId('viewport').boundingBox())!;
+    const panel = (await page.getByTestId('probe-panel').boundingBox())!;
+    expect(panel.x).toBeGreaterThanOrEqual(canvas.x);
+    expect(panel.x + panel.width).toBeLessThanOrEqual(canvas.x + canvas.width + 0.5);
+    expect(panel.y + panel.height).toBeLessThanOrEqual(canvas.y + canvas.height + 0.5);
+    expect(panel.y, 'the upper 60 % of the view (the object) stays uncovered').toBeGreaterThanOrEqual(
+      canvas.y + 0.6 * canvas.height,
+    );
+    const page_ = await page.evaluate(() => ({
+      overflowX: document.documentElement.scrollWidth > window.innerWidth,
+      overflowY: document.documentElement.scrollHeight > window.innerHeight,
+    }));
+    expect(page_).toEqual({ overflowX: false, overflowY: false });
+  }
+  await page.setViewportSize({ width: 800, height: 600 });
+});

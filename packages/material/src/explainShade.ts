@@ -45,9 +45,11 @@ export interface LightExplanation {
   readonly specularFactor: number;
   /** The cel band of max(l·n, 0): 0 (darkest) … celBands − 1; null when cel is off or the light has no l. */
   readonly band: number | null;
-  /** Ia, Id and Is as the equation uses them (linear RGB; three's lights: colour × intensity / π). */
+  /** Ia, the ambient intensity as the equation uses it (linear RGB; three's ambient and hemisphere lights: irradiance / π). */
   readonly ia: Vec3;
+  /** Id, the diffuse intensity as the equation uses it (linear RGB; three's lights: colour × intensity / π). */
   readonly id: Vec3;
+  /** Is, the specular intensity as the equation uses it (linear RGB; three's lights: colour × intensity / π). */
   readonly is: Vec3;
   /** The ambient term ka·Ia (× the sample's tint), linear RGB. */
   readonly ambient: Vec3;

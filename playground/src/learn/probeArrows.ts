@@ -29,7 +29,7 @@ export function arrowsOf(hit: ProbeHit): ProbeArrow[] {
     const suffix = several ? String(i + 1) : '';
     arrows.push({ label: `l${suffix}`, direction: light.l, color: ARROW_COLORS.l });
     if (light.r) arrows.push({ label: `r${suffix}`, direction: light.r, color: ARROW_COLORS.r });
-    if (light.h && light.h.some((c) => c !== 0))
+    if (light.h?.some((c) => c !== 0))
       arrows.push({ label: `h${suffix}`, direction: light.h, color: ARROW_COLORS.h });
   });
   return arrows;
@@ -80,9 +80,9 @@ export class ProbeArrows {
       const label = labelSprite(arrow.label, arrow.color);
       label.position
         .copy(direction)
-        .multiplyScalar(length * 1.12)
+        .multiplyScalar(length * 1.15)
         .add(at);
-      label.scale.set(0.16 * length, 0.08 * length, 1);
+      label.scale.set(0.3 * length, 0.15 * length, 1);
       this.group.add(helper, label);
     }
   }

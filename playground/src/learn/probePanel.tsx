@@ -42,7 +42,7 @@ const PANEL_STYLE: React.CSSProperties = {
   overflow: 'auto',
   margin: 0,
   padding: '4px 8px',
-  background: '#000d',
+  background: '#101010',
   color: '#ddd',
   font: '11px ui-monospace, monospace',
   borderRadius: 4,
@@ -60,6 +60,10 @@ function unsupported(state: PlaygroundState): string | null {
   return null;
 }
 
+/**
+ * The probe panel for `request`'s pixel: its numbers, the GPU's pixel, the arrows' toggle and a close button;
+ * follows the probed point until `onClose`.
+ */
 export default function ProbePanel({ viewerRef, state, request, onClose }: Props) {
   const [result, setResult] = useState<ProbeResult | null>(null);
   const [gpu, setGpu] = useState<V3 | null>(null);
@@ -88,7 +92,7 @@ export default function ProbePanel({ viewerRef, state, request, onClose }: Props
           : probePixel(scene, camera, pixel[0], pixel[1], canvas.width, canvas.height);
       if (next.hit) {
         const toEye = camera.getWorldPosition(new THREE.Vector3()).distanceTo(new THREE.Vector3(...next.at));
-        const length = camera.isPerspectiveCamera ? 0.2 * toEye : 0.5;
+        const length = camera.isPerspectiveCamera ? 0.3 * toEye : 0.75;
         arrows.current.show(next.at, arrowsOf(next), length);
       } else arrows.current.clear();
       if (group.parent !== scene) scene.add(group);

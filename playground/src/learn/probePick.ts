@@ -46,8 +46,9 @@ export interface ProbeHit {
   readonly gouraud: { readonly vertices: readonly ProbeVertex[]; readonly weights: V3 } | null;
   /** Flat: the face's centroid and normal (per fragment when the geometry has no prepared corners). */
   readonly flat: { readonly centroid: V3; readonly normal: V3; readonly perFragment: boolean } | null;
-  /** The pixel's linear colour (unclamped), and the 8-bit sRGB colour the canvas should hold (after fog). */
+  /** The pixel's linear colour (unclamped): the sum at `at`, or the Gouraud blend. */
   readonly linear: V3;
+  /** The 8-bit sRGB colour the canvas should hold (after fog). */
   readonly srgb8: V3;
   /** three's fog factor at the point; null without fog. */
   readonly fog: number | null;
@@ -62,6 +63,7 @@ export interface ProbeMiss {
   readonly reason: string;
 }
 
+/** What a probe found. */
 export type ProbeResult = ProbeHit | ProbeMiss;
 
 const isShading = (m: unknown): m is ShadingMaterial =>

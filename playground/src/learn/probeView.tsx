@@ -7,7 +7,10 @@ import { ARROW_COLORS } from './probeArrows';
 import { maxChannelDifference, type V3 } from './probeMath';
 import type { ProbeHit, ProbeResult } from './probePick';
 
-const f3 = (x: number) => (Object.is(x, -0) ? 0 : x).toFixed(3);
+const f3 = (x: number) => {
+  const rounded = Math.round(x * 1000) / 1000;
+  return (rounded === 0 ? 0 : rounded).toFixed(3); // no "-0.000"
+};
 const vec = (v: ArrayLike<number> | null) => (v ? `(${Array.from(v, f3).join(', ')})` : '—');
 const hex = (c: number) => `#${c.toString(16).padStart(6, '0')}`;
 const clamp01 = (v: V3): V3 => v.map((c) => Math.min(Math.max(c, 0), 1)) as V3;
