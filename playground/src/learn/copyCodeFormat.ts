@@ -111,5 +111,5 @@ export function outlineEach(imports: Imports, meshes: string, outline: Options |
   if (!outline) return '';
   imports.add('@shadelab/material/outline', 'createOutline');
   const options = Object.keys(outline).length ? `, ${objectLiteral(outline)}` : '';
-  return `  for (const mesh of ${meshes}) createOutline(mesh${options});\n`;
+  return `  for (const outlined of ${meshes}) createOutline(outlined${options});\n`;
 }
