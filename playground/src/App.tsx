@@ -6,11 +6,10 @@ import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/lay
 import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
+import { AdaptiveTool } from './learn/adaptiveTool';
 import { AttenuationTool } from './learn/attenuationTool';
-import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
 import { ProfileTool } from './learn/profileTool';
-import { ProbeLauncher } from './learn/probeLauncher';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -232,6 +231,7 @@ export function App() {
         )}
         <ProfileTool viewerRef={viewerRef} state={state} />
         <AttenuationTool viewerRef={viewerRef} state={state} />
+        <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
         <div className="messages" aria-live="polite">
           {context === 'lost' && (
             <p className="message warn" data-testid="context-message">
@@ -266,13 +266,12 @@ export function App() {
           ))}
         </div>
         <Stats feed={feed} />
-        <ProbeLauncher viewerRef={viewerRef} state={state} />
         <p className="hint">
           Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>{' '}
-          · <ModelPicker model={model} /> · <CopyCodeButtons state={state} />
+          · <ModelPicker model={model} />
         </p>
       </main>
       <SidePanel

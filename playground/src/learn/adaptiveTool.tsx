@@ -1,0 +1,244 @@
+/**
+ * The adaptive shading tool (issue 25): in the instanced scene and a loaded model, a toggle that lets
+ * `AdaptiveShading` choose each object's (and instance's) shading and detail under a budget (a slider, 8-bit
+ * sRGB levels against Phong shading at full detail), a heat map over the view of what each one got, the frame
+ * time (median of the last frames, with and without) and the measured error of the picture (adaptiveRun.ts).
+ * Adaptive starts from Phong shading (its reference): turning it on sets the panel's shading to Phong; it runs in
+ * the single view on WebGL only, and turns itself off otherwise.
+ */
+import { type RefObject, useEffect, useRef, useState } from 'react';
+import type { Viewer } from '../engine/viewer/Viewer';
+import { isEmbedded } from '../state/embed';
+import type { PlaygroundState } from '../state/schema';
+import type { StatsFeed } from '../ui/Stats';
+import type { Update } from '../ui/useFolder';
+import { type AdaptiveMeasured, AdaptiveRun, type AdaptiveUnit } from './adaptiveRun';
+import { LEARN_PANEL } from './profileTool';
+
+/** The heat map's colour of a choice: green Phong at full detail, teal coarser levels, blue Gouraud, orange flat. */
+export function heatColor(key: string): string {
+  if (key.startsWith('phong full')) return '#50c050';
+  if (key.startsWith('phong')) return ['#1a8a8a', '#30a8a8', '#60c8c8'][Number(key.split(' ')[1]) % 3];
+  if (key.startsWith('gouraud')) return key.includes('full') ? '#4080e0' : '#80a8f0';
+  if (key.startsWith('flat')) return key.includes('derivatives') ? '#c06020' : '#f0a040';
+  return '#888';
+}
+
+/** The toggle: over the canvas, at its right, under the other tools' toggles. */
+const BUTTON = {
+  position: 'absolute',
+  right: 8,
+  top: 64,
+  width: 132,
+  padding: '3px 6px',
+  whiteSpace: 'nowrap',
+  background: '#2a2f36',
+  color: '#ddd',
+  border: '1px solid #444',
+  borderRadius: 3,
+  font: '12px system-ui, sans-serif',
+  cursor: 'pointer',
+} as const;
+
+/** Budgets on the slider: 1 … 64 levels, in steps of a quarter power of two. */
+const budgetAt = (step: number) => Math.round(2 ** (step / 4) * 100) / 100;
+
+/** Why adaptive cannot run in `state` (null: it can). */
+export function adaptiveUnavailable(state: PlaygroundState): string | null {
+  if (state.scene !== 'instanced' && state.scene !== 'model')
+    return 'Pick the instanced spheres or your model.';
+  if (state.view !== 'single')
+    return 'Adaptive runs in the single view (the compare view sets each column’s shading).';
+  if (state.renderer === 'webgpu') return 'Adaptive runs on WebGL (ShadingMaterial).';
+  if (state.material.shading !== 'phong')
+    return 'Adaptive starts from Phong shading: set the shading to Phong.';
+  return null;
+}
+
+export function AdaptiveTool({
+  viewerRef,
+  state,
+  feed,
+  update,
+}: {
+  viewerRef: RefObject<Viewer | null>;
+  state: PlaygroundState;
+  feed: StatsFeed;
+  update: Update;
+}) {
+  const [open, setOpen] = useState(false);
+  const [on, setOn] = useState(false);
+  const [step, setStep] = useState(12); // 8 levels
+  const [heat, setHeat] = useState(true);
+  const [choices, setChoices] = useState<Record<string, number>>({});
+  const [measured, setMeasured] = useState<AdaptiveMeasured | null>(null);
+  const [frameMs, setFrameMs] = useState<{ on: number | null; off: number | null }>({ on: null, off: null });
+  const run = useRef<AdaptiveRun | null>(null);
+  const overlay = useRef<HTMLCanvasElement>(null);
+  const budget = budgetAt(step);
+  const unavailable = adaptiveUnavailable(state);
+  const active = on && unavailable === null;
+
+  // The run lives while active (and the scene stays); the budget is set on it.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: the budget is set on the run below; a new scene restarts it.
+  useEffect(() => {
+    const viewer = viewerRef.current;
+    if (!active || !viewer) return;
+    const r = new AdaptiveRun(viewer, budget);
+    run.current = r;
+    return () => {
+      r.dispose();
+      run.current = null;
+      setMeasured(null);
+      setChoices({});
+    };
+  }, [active, viewerRef, state.scene]);
+  useEffect(() => {
+    run.current?.setBudget(budget);
+    setMeasured(null);
+  }, [budget]);
+
+  // Every frame: the frame time (median of the last 20, kept apart with and without adaptive), the choices
+  // and the heat map.
+  useEffect(() => {
+    const recent: { on: number[]; off: number[] } = { on: [], off: [] };
+    const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[xs.length >> 1] ?? null;
+    return feed.subscribe((stats) => {
+      const r = run.current;
+      const list = r ? recent.on : recent.off;
+      list.push(stats.cpuMs);
+      if (list.length > 20) list.shift();
+      setFrameMs({ on: median(recent.on), off: median(recent.off) });
+      if (r) setChoices(r.choices());
+      drawHeat(overlay.current, r && heat ? r.units() : []);
+    });
+  }, [feed, heat]);
+
+  // The error, measured after the choice settles (and again on demand), for each budget and scene.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: measured again when the budget or the scene changes.
+  useEffect(() => {
+    if (!active) return;
+    const timer = window.setTimeout(() => setMeasured(run.current?.measure() ?? null), 400);
+    return () => window.clearTimeout(timer);
+  }, [active, budget, state.scene]);
+
+  if (isEmbedded()) return null;
+  const toggle = (value: boolean) => {
+    if (value && state.material.shading !== 'phong') {
+      update((d) => {
+        d.material.shading = 'phong';
+      });
+    }
+    setOn(value);
+  };
+  return (
+    <>
+      <canvas
+        ref={overlay}
+        data-testid="adaptive-heatmap"
+        style={{ position: 'absolute', inset: 0, width: '100%', height: '100%', pointerEvents: 'none' }}
+      />
+      <button
+        type="button"
+        style={{ ...BUTTON, ...(open ? { background: '#3d5a80' } : {}) }}
+        aria-pressed={open}
+        title="Let AdaptiveShading choose each object's shading and detail under an error budget"
+        onClick={() => setOpen(!open)}
+      >
+        adaptive shading
+      </button>
+      {open && (
+        <section
+          style={{
+            ...LEARN_PANEL,
+            top: 92,
+            maxHeight: 'calc(100% - 100px)',
+            font: '12px system-ui, sans-serif',
+          }}
+          aria-label="Adaptive shading"
+          data-testid="adaptive-panel"
+        >
+          <label>
+            <input
+              type="checkbox"
+              checked={on}
+              data-testid="adaptive-toggle"
+              onChange={(e) => toggle(e.target.checked)}
+            />{' '}
+            adaptive
+          </label>{' '}
+          <label>
+            <input type="checkbox" checked={heat} onChange={(e) => setHeat(e.target.checked)} /> heat map
+          </label>
+          <label style={{ display: 'block' }}>
+            budget{' '}
+            <input
+              type="range"
+              min={0}
+              max={24}
+              step={1}
+              value={step}
+              data-testid="adaptive-budget"
+              aria-label="error budget, 8-bit sRGB levels"
+              onChange={(e) => setStep(Number(e.target.value))}
+            />{' '}
+            <output data-testid="adaptive-budget-value">{budget}</output> levels
+          </label>
+          {on && unavailable && <p data-testid="adaptive-unavailable">{unavailable}</p>}
+          <dl className="stats" style={{ position: 'static' }} data-testid="adaptive-stats">
+            <dt>frame (CPU), adaptive</dt>
+            <dd data-testid="adaptive-frame-on">
+              {frameMs.on === null ? '—' : `${frameMs.on.toFixed(2)} ms`}
+            </dd>
+            <dt>frame (CPU), without</dt>
+            <dd>{frameMs.off === null ? '—' : `${frameMs.off.toFixed(2)} ms`}</dd>
+            <dt>measured error</dt>
+            <dd data-testid="adaptive-error">
+              {measured
+                ? `p99 ${measured.p99}, max ${measured.max}, ${(100 * measured.over).toFixed(2)} % over ${measured.budget}`
+                : '—'}
+            </dd>
+          </dl>
+          {active && (
+            <button type="button" onClick={() => setMeasured(run.current?.measure() ?? null)}>
+              measure again
+            </button>
+          )}
+          <ul style={{ listStyle: 'none', padding: 0, margin: '4px 0 0' }} data-testid="adaptive-choices">
+            {Object.entries(choices)
+              .sort((a, b) => b[1] - a[1])
+              .map(([key, n]) => (
+                <li key={key}>
+                  <span
+                    style={{ display: 'inline-block', width: 10, height: 10, background: heatColor(key) }}
+                  />{' '}
+                  {key}: {n}
+                </li>
+              ))}
+          </ul>
+        </section>
+      )}
+    </>
+  );
+}
+
+/** Discs of each unit's colour over the view (the overlay canvas at the view's size in CSS pixels). */
+function drawHeat(canvas: HTMLCanvasElement | null, units: AdaptiveUnit[]): void {
+  if (!canvas) return;
+  const w = canvas.clientWidth;
+  const h = canvas.clientHeight;
+  if (canvas.width !== w || canvas.height !== h) {
+    canvas.width = w;
+    canvas.height = h;
+  }
+  const ctx = canvas.getContext('2d');
+  if (!ctx) return;
+  ctx.clearRect(0, 0, w, h);
+  ctx.globalAlpha = 0.45;
+  for (const u of units) {
+    ctx.fillStyle = heatColor(u.key);
+    ctx.beginPath();
+    ctx.arc(u.x, u.y, Math.max(1, Math.min(u.r, Math.max(w, h))), 0, 2 * Math.PI);
+    ctx.fill();
+  }
+}
