@@ -8,8 +8,10 @@ import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
 import { AdaptiveTool } from './learn/adaptiveTool';
 import { AttenuationTool } from './learn/attenuationTool';
+import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
 import { ProfileTool } from './learn/profileTool';
+import { ProbeLauncher } from './learn/probeLauncher';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -266,12 +268,13 @@ export function App() {
           ))}
         </div>
         <Stats feed={feed} />
+        <ProbeLauncher viewerRef={viewerRef} state={state} />
         <p className="hint">
           Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>{' '}
-          · <ModelPicker model={model} />
+          · <ModelPicker model={model} /> · <CopyCodeButtons state={state} />
         </p>
       </main>
       <SidePanel
