@@ -25,6 +25,8 @@ export function applyMaterial(
   lights: PhongLight[],
 ): void {
   material.shading = options.shading;
+  material.output = options.output;
+  material.normalMatrix = options.normalMatrix;
   applyLighting(material, options, lights);
 }
 

@@ -255,7 +255,7 @@ export class WebGPUView {
   /** What the generated shader depends on: the compiled variant and the geometry. */
   private variantKey(): string {
     const m = this.material;
-    return `${m.shading}|${m.lighting}|${m.celBands}|${m.phongLights.length}|${this.host.mesh.geometry.uuid}`;
+    return `${m.shading}|${m.lighting}|${m.celBands}|${m.output}|${m.normalMatrix}|${m.phongLights.length}|${this.host.mesh.geometry.uuid}`;
   }
 
   /** The node material's generated code as the running backend compiled it (a scene of the mesh alone). */

@@ -33,6 +33,8 @@ const COPIED = ['fog', 'depthTest', 'depthWrite', 'blending', 'visible', 'opacit
 export function mirrorMaterial(source: ShadingMaterial, m: ShadingNodeMaterial): void {
   mirrorLighting(source, m);
   m.shading = source.shading;
+  m.output = source.output;
+  m.normalMatrix = source.normalMatrix;
   const s = source as unknown as Record<string, unknown>;
   const t = m as unknown as Record<string, unknown>;
   let rebuild = false;
