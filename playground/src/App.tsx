@@ -6,12 +6,11 @@ import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/lay
 import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
-import { AdaptiveTool } from './learn/adaptiveTool';
 import { AttenuationTool } from './learn/attenuationTool';
 import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
-import { ProfileTool } from './learn/profileTool';
 import { ProbeLauncher } from './learn/probeLauncher';
+import { ProfileTool } from './learn/profileTool';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -231,9 +230,6 @@ export function App() {
             ))}
           </ol>
         )}
-        <ProfileTool viewerRef={viewerRef} state={state} />
-        <AttenuationTool viewerRef={viewerRef} state={state} />
-        <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
         <div className="messages" aria-live="polite">
           {context === 'lost' && (
             <p className="message warn" data-testid="context-message">
@@ -274,7 +270,9 @@ export function App() {
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>{' '}
-          · <ModelPicker model={model} /> · <CopyCodeButtons state={state} />
+          · <ModelPicker model={model} /> · <CopyCodeButtons state={state} /> · learn:{' '}
+          <ProfileTool viewerRef={viewerRef} state={state} />{' '}
+          <AttenuationTool viewerRef={viewerRef} state={state} />
         </p>
       </main>
       <SidePanel

@@ -1,12 +1,13 @@
 /**
- * The attenuation tool: a toggle that opens the plot of each light's 1/(a + b·t + c·t²) over the distances the
+ * The attenuation tool: a toggle (in the hint line under the view) that opens, over the canvas, the plot of each light's 1/(a + b·t + c·t²) over the distances the
  * scene spans, with the object's range of t marked (`attenuationPlot.tsx`, loaded when first opened).
  */
 import { lazy, type RefObject, Suspense, useState } from 'react';
+import { createPortal } from 'react-dom';
 import type { Viewer } from '../engine/viewer/Viewer';
 import { isEmbedded } from '../state/embed';
 import type { PlaygroundState } from '../state/schema';
-import { LEARN_BUTTON, LEARN_PANEL } from './profileTool';
+import { LEARN_PANEL } from './profileTool';
 
 const AttenuationPlot = lazy(() => import('./attenuationPlot'));
 
@@ -20,28 +21,31 @@ export function AttenuationTool({
 }) {
   const [open, setOpen] = useState(false);
   if (isEmbedded()) return null;
+  // Over the canvas: in its parent, the stage (this button sits in the hint line).
+  const stage = open ? viewerRef.current?.canvas.parentElement : null;
   return (
     <>
       <button
         type="button"
-        style={{ ...LEARN_BUTTON, top: 36, ...(open ? { background: '#3d5a80' } : {}) }}
         aria-pressed={open}
         title="Plot each light's attenuation 1/(a + b·t + c·t²) against the distance, with the object's range marked"
         onClick={() => setOpen(!open)}
       >
         attenuation curve
       </button>
-      {open && (
-        <section
-          style={{ ...LEARN_PANEL, bottom: 28, maxHeight: 'calc(50% - 32px)' }}
-          aria-label="Attenuation curve"
-          data-testid="attenuation-panel"
-        >
-          <Suspense fallback="Loading the plot…">
-            <AttenuationPlot viewerRef={viewerRef} state={state} />
-          </Suspense>
-        </section>
-      )}
+      {stage &&
+        createPortal(
+          <section
+            style={{ ...LEARN_PANEL, bottom: 28, maxHeight: 'calc(50% - 32px)' }}
+            aria-label="Attenuation curve"
+            data-testid="attenuation-panel"
+          >
+            <Suspense fallback="Loading the plot…">
+              <AttenuationPlot viewerRef={viewerRef} state={state} />
+            </Suspense>
+          </section>,
+          stage,
+        )}
     </>
   );
 }

@@ -124,7 +124,7 @@ export default function ProfileMode({
         </svg>
       )}
       <section
-        style={{ ...LEARN_PANEL, top: 64, maxHeight: 'calc(50% - 68px)' }}
+        style={{ ...LEARN_PANEL, top: 8, maxHeight: 'calc(50% - 12px)' }}
         aria-label="Mach bands: intensity profile"
         data-testid="profile-panel"
       >
