@@ -54,7 +54,7 @@ export function normalMatrixVectors(
   const mtmN = n.clone().applyMatrix3(_m3).applyMatrix3(_m3.clone().transpose());
   const full = mtmN.lengthSq();
   const t = mtmN.addScaledVector(n, -mtmN.dot(n));
-  if (t.lengthSq() < 1e-8 * full) {
+  if (t.lengthSq() <= 1e-8 * full) {
     // MᵀM·n ∥ n (a uniform scale, or n along a principal axis): any tangent; M·n is right there too.
     t.set(1, 0, 0).cross(n);
     if (t.lengthSq() < 1e-6) t.set(0, 1, 0).cross(n);
