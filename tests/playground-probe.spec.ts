@@ -137,6 +137,43 @@ for (const { scene, points } of SCENES) {
   }
 }
 
+/** Two lights, one attenuated, so that the attenuation view is not a constant. */
+const TWO_LIGHTS = [
+  { position: [-5, 10, 20] },
+  { position: [2.5, 0.5, 1.5], diffuse: [0.4, 0.6, 1], attenuation: { a: 0.5, b: 0.3, c: 0.2 } },
+];
+
+for (const output of ['ambient', 'diffuse', 'specular', 'attenuation', 'normal'] as const) {
+  test(`the ${output} term view: the probe shows the term the GPU draws, within 1/255`, async () => {
+    for (const shading of SHADINGS) {
+      await show({ material: { shading, output }, lights: TWO_LIGHTS });
+      for (const [fx, fy] of SPHERE_POINTS.slice(0, 2)) {
+        const probed = await probeAt(fx, fy);
+        expectAgrees(probed, `sphere ${shading}, output ${output} at (${fx}, ${fy})`);
+        expect(probed.text).toContain(`the ${output} view`);
+      }
+    }
+  });
+}
+
+test("normalMatrix 'model' (the lecture's wrong normals under the (2, 1, 2) scale): the probe uses M as the GPU does", async () => {
+  for (const shading of SHADINGS) {
+    await show({ material: { shading, normalMatrix: 'model' } });
+    for (const [fx, fy] of SPHERE_POINTS) {
+      expectAgrees(await probeAt(fx, fy), `sphere ${shading}, normalMatrix model at (${fx}, ${fy})`);
+    }
+  }
+  await show({ scene: 'instanced', material: { shading: 'phong', normalMatrix: 'model' } });
+  let hits = 0;
+  for (const [fx, fy] of SCENES[0].points) {
+    const probed = await probeAt(fx, fy);
+    if (probed.miss) continue; // between the instances
+    hits++;
+    expectAgrees(probed, `instanced, normalMatrix model at (${fx}, ${fy})`);
+  }
+  expect(hits).toBeGreaterThan(0);
+});
+
 test('a probe off the object says so; the arrows toggle', async () => {
   const close = page.getByRole('button', { name: 'close the probe' });
   if (await close.count()) await close.click(); // the panel of the tests before, with its arrows

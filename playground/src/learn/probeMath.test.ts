@@ -1,7 +1,8 @@
-import { linearToSrgb8, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+import { explainShade, linearToSrgb8, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
 import fc from 'fast-check';
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
+import { outputOf } from './probeInputs';
 import {
   barycentric,
   blend,
@@ -10,6 +11,7 @@ import {
   maxChannelDifference,
   ndcOfPixel,
   pixelOfNdc,
+  raw8,
   type V3,
 } from './probeMath';
 import { pixelOfFollowed, probePixel } from './probePick';
@@ -64,6 +66,31 @@ describe('probe arithmetic', () => {
     expect(displayed8(c)).toEqual(linearToSrgb8(c));
     expect(displayed8(c, { color: [0, 0, 1], factor: 1 })).toEqual([0, 0, 255]);
     expect(maxChannelDifference([1, 2, 3], [3, 2, 1])).toBe(2);
+    expect(raw8([0.5, -1, 2])).toEqual([128, 0, 255]); // a term view's data, written as is
+  });
+
+  it('the term views: ambient + diffuse + specular = the sum, the mean attenuation, the packed view normal', () => {
+    const e = explainShade(
+      { position: [0, 0, 0], normal: [0, 0, 1], eye: [0, 0, 3] },
+      { ka: [0.1, 0.2, 0.3], kd: [0.5, 0.4, 0.3], ks: [0.9, 0.8, 0.7], shininess: 8 },
+      [
+        { position: [1, 1, 2], ambient: [0.2, 0.2, 0.2], diffuse: [1, 1, 1], specular: [1, 1, 1] },
+        {
+          position: [0, 0, 4],
+          ambient: [0, 0, 0],
+          diffuse: [1, 1, 1],
+          specular: [1, 1, 1],
+          attenuation: { a: 1, b: 1, c: 0 },
+        },
+      ],
+    );
+    const view = new THREE.Matrix4();
+    const terms = (['ambient', 'diffuse', 'specular'] as const).map((o) => outputOf(e, o, view));
+    for (let k = 0; k < 3; k++)
+      expect(terms[0]![k]! + terms[1]![k]! + terms[2]![k]!).toBeCloseTo(e.sum[k]!, 12);
+    expect(outputOf(e, 'attenuation', view)).toEqual([0.6, 0.6, 0.6].map(() => (1 + 1 / 5) / 2));
+    expect(outputOf(e, 'normal', view)).toEqual([0.5, 0.5, 1]);
+    expect(outputOf(e, 'color', view)).toBe(e.sum);
   });
 });
 

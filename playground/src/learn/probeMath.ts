@@ -101,6 +101,12 @@ export function displayed8(
   return out;
 }
 
+/** The 8-bit codes of values written as they are (no colour space): a term view's attenuation or normal. */
+export function raw8(value: ArrayLike<number>): V3 {
+  const code = (x: number) => Math.round(Math.min(Math.max(Number.isNaN(x) ? 0 : x, 0), 1) * 255);
+  return [code(value[0]!), code(value[1]!), code(value[2]!)];
+}
+
 /** The largest difference between two colours' channels (8-bit codes). */
 export function maxChannelDifference(a: ArrayLike<number>, b: ArrayLike<number>): number {
   return Math.max(Math.abs(a[0]! - b[0]!), Math.abs(a[1]! - b[1]!), Math.abs(a[2]! - b[2]!));

@@ -5,20 +5,17 @@
  * the barycentric weights (Gouraud), once per face at its centroid with the face normal (flat).
  */
 import {
-  computeNormalMatrix,
   explainShade,
   eyeOf,
   fogFactor,
   type ShadeExplanation,
-  type ShadeLight,
-  type ShadeMaterial,
-  type ShadeThreeLight,
   type ShadingMaterial,
 } from '@shadelab/material';
 import * as THREE from 'three';
-import { barycentric, blend, displayed8, ndcOfPixel, pixelOfNdc, type V3 } from './probeMath';
+import { lightsOf, modelOf, normalMatrixOf, outputOf, shadeMaterialOf } from './probeInputs';
+import { barycentric, blend, displayed8, ndcOfPixel, pixelOfNdc, raw8, type V3 } from './probeMath';
 
-/** One vertex of a Gouraud-shaded triangle: where it is lit and its colour (linear, unclamped). */
+/** One vertex of a Gouraud-shaded triangle: where it is lit and its colour (or output term; linear, unclamped). */
 export interface ProbeVertex {
   readonly point: V3;
   readonly normal: V3;
@@ -46,7 +43,9 @@ export interface ProbeHit {
   readonly gouraud: { readonly vertices: readonly ProbeVertex[]; readonly weights: V3 } | null;
   /** Flat: the face's centroid and normal (per fragment when the geometry has no prepared corners). */
   readonly flat: { readonly centroid: V3; readonly normal: V3; readonly perFragment: boolean } | null;
-  /** The pixel's linear colour (unclamped): the sum at `at`, or the Gouraud blend. */
+  /** What the material draws (its `output` option): 'color', or a term view. */
+  readonly output: string;
+  /** The pixel's linear colour (unclamped): the sum (or the output's term) at `at`, or the Gouraud blend. */
   readonly linear: V3;
   /** The 8-bit sRGB colour the canvas should hold (after fog). */
   readonly srgb8: V3;
@@ -71,73 +70,6 @@ const isShading = (m: unknown): m is ShadingMaterial =>
 const MARKER = /^light marker/;
 const raycaster = new THREE.Raycaster();
 const v3 = (v: THREE.Vector3): V3 => [v.x, v.y, v.z];
-
-/** The mesh's world matrix, times the instance's matrix for an InstancedMesh. */
-function modelOf(mesh: THREE.Mesh, instanceId: number | null): THREE.Matrix4 {
-  const model = mesh.matrixWorld.clone();
-  if (instanceId !== null && (mesh as THREE.InstancedMesh).isInstancedMesh) {
-    const instance = new THREE.Matrix4();
-    (mesh as THREE.InstancedMesh).getMatrixAt(instanceId, instance);
-    model.multiply(instance);
-  }
-  return model;
-}
-
-/** The PhongLights on the material and three's lights in the scene, as `shade` takes them. */
-function lightsOf(material: ShadingMaterial, scene: THREE.Scene): (ShadeLight | ShadeThreeLight)[] {
-  const at = new THREE.Vector3();
-  const lights: (ShadeLight | ShadeThreeLight)[] = material.phongLights.map((l) => ({
-    position: v3(l.getWorldPosition(at)),
-    ambient: l.ambient.toArray(),
-    diffuse: l.diffuse.toArray(),
-    specular: l.specular.toArray(),
-    attenuation: l.attenuation,
-  }));
-  scene.traverseVisible((object) => {
-    const light = object as THREE.Light;
-    if (!light.isLight || (object as { isPhongLight?: boolean }).isPhongLight) return;
-    const world = light.getWorldPosition(new THREE.Vector3());
-    const color = light.color.clone().multiplyScalar(light.intensity).toArray();
-    if ((light as THREE.AmbientLight).isAmbientLight) lights.push({ type: 'ambient', color });
-    else if ((light as THREE.HemisphereLight).isHemisphereLight) {
-      const ground = (light as THREE.HemisphereLight).groundColor.clone().multiplyScalar(light.intensity);
-      lights.push({
-        type: 'hemisphere',
-        color,
-        groundColor: ground.toArray(),
-        direction: v3(world.normalize()),
-      });
-    } else {
-      const target = (light as THREE.DirectionalLight).target?.getWorldPosition(new THREE.Vector3());
-      const direction = target ? v3(world.clone().sub(target).normalize()) : undefined;
-      if ((light as THREE.DirectionalLight).isDirectionalLight)
-        lights.push({ type: 'directional', color, direction });
-      else {
-        const point = light as THREE.PointLight;
-        const base = { color, position: v3(world), distance: point.distance, decay: point.decay };
-        const spot = light as THREE.SpotLight;
-        if (spot.isSpotLight) {
-          const [coneCos, penumbraCos] = [Math.cos(spot.angle), Math.cos(spot.angle * (1 - spot.penumbra))];
-          lights.push({ type: 'spot', ...base, direction, coneCos, penumbraCos });
-        } else if (point.isPointLight) lights.push({ type: 'point', ...base });
-      }
-    }
-  });
-  return lights;
-}
-
-/** The material as `shade` takes it. */
-function shadeMaterialOf(m: ShadingMaterial): ShadeMaterial {
-  return {
-    ka: m.ka.toArray(),
-    kd: m.kd.toArray(),
-    ks: m.ks.toArray(),
-    shininess: m.shininess,
-    lighting: m.lighting,
-    celBands: m.celBands,
-    emissive: m.emissive.toArray(),
-  };
-}
 
 /** Whether a world point survives the material's clipping planes (three drops the negative side). */
 const unclipped = (material: THREE.Material, point: THREE.Vector3) =>
@@ -194,10 +126,7 @@ function explainHit(
   const [pa, pb, pc] = corners as [THREE.Vector3, THREE.Vector3, THREE.Vector3];
   const local = found.point.clone().applyMatrix4(inverse);
   const weights = barycentric(v3(local), v3(pa), v3(pb), v3(pc));
-  const modelNormals = (material as { normalMatrix?: string }).normalMatrix === 'model';
-  const normalMatrix = modelNormals
-    ? new THREE.Matrix3().setFromMatrix4(model)
-    : computeNormalMatrix(model, new THREE.Matrix3());
+  const normalMatrix = normalMatrixOf(mesh, instanceId, material);
   // The face as drawn: its object-space winding normal against the ray (three's front face), then the side.
   const faceNormal = pb.clone().sub(pa).cross(pc.clone().sub(pa));
   const rayLocal = raycaster.ray.direction.clone().applyMatrix3(new THREE.Matrix3().setFromMatrix4(inverse));
@@ -222,8 +151,8 @@ function explainHit(
   if (material.normalMap && material.shading === 'phong') notes.push('The normal map is not applied here.');
   if ((mesh as THREE.SkinnedMesh).isSkinnedMesh || mesh.morphTargetInfluences?.length)
     notes.push('Skinned or morphed: positions are deformed here, normals are not.');
-  const output = (material as { output?: string }).output;
-  if (output && output !== 'color') notes.push(`The term view “${output}” is on: the GPU shows that term.`);
+  const output = (material as { output?: string }).output ?? 'color';
+  const drawnValue = (e: ShadeExplanation) => outputOf(e, output, camera.matrixWorldInverse);
 
   const eye = eyeOf(camera, new THREE.Vector4()).toArray();
   const shadeMaterial = shadeMaterialOf(material);
@@ -255,12 +184,12 @@ function explainHit(
       normal: explanation.n,
       perFragment,
     };
-    linear = explanation.sum;
+    linear = drawnValue(explanation);
   } else if (material.shading === 'gouraud') {
     const vertices = [a, b, c].map((index, i): ProbeVertex => {
       const p = corners[i]!;
       const e = explain(toWorld(p), worldNormal(objectNormal(index, p)), tints[i]!);
-      return { point: toWorld(p), normal: e.n, color: e.sum, explanation: e };
+      return { point: toWorld(p), normal: e.n, color: drawnValue(e), explanation: e };
     });
     const k = weights.indexOf(Math.max(...weights));
     at = vertices[k]!.point;
@@ -278,21 +207,21 @@ function explainHit(
     const n = blend(unit as [V3, V3, V3], weights).map((x) => x * sign) as V3;
     const tint = blend(tints as [V3, V3, V3], weights);
     explanation = explain(point, n, tint);
-    linear = explanation.sum;
+    linear = drawnValue(explanation);
   }
   let fog: number | null = null;
   const sceneFog = scene.fog;
-  if (sceneFog && material.fog) {
+  if (sceneFog && material.fog && output === 'color') {
     const depth = -found.point.clone().applyMatrix4(camera.matrixWorldInverse).z;
     const params = (sceneFog as THREE.FogExp2).isFogExp2
       ? { density: (sceneFog as THREE.FogExp2).density }
       : { near: (sceneFog as THREE.Fog).near, far: (sceneFog as THREE.Fog).far };
     fog = fogFactor(params, depth);
   }
-  const srgb8 = displayed8(
-    linear,
-    fog === null ? undefined : { color: sceneFog!.color.toArray(), factor: fog },
-  );
+  const data = output === 'attenuation' || output === 'normal'; // written as is, no colour space
+  const srgb8 = data
+    ? raw8(linear)
+    : displayed8(linear, fog === null ? undefined : { color: sceneFog!.color.toArray(), factor: fog });
   return {
     hit: true,
     pixel,
@@ -306,6 +235,7 @@ function explainHit(
     explanation,
     gouraud,
     flat,
+    output,
     linear,
     srgb8,
     fog,

@@ -88,7 +88,10 @@ function Colour({ hit, gpu }: { hit: ProbeHit; gpu: V3 | null }) {
   const delta = gpu ? maxChannelDifference(gpu, hit.srgb8) : null;
   return (
     <dl className="probe-grid">
-      <Row name={hit.gouraud ? 'Σ wᵢ·colourᵢ' : 'sum'}>{vec(hit.linear)}</Row>
+      {hit.output !== 'color' && <Row name="output">the {hit.output} view (the material’s `output`)</Row>}
+      <Row name={hit.gouraud ? 'Σ wᵢ·colourᵢ' : hit.output === 'color' ? 'sum' : hit.output}>
+        {vec(hit.linear)}
+      </Row>
       <Row name="clamped">{vec(clamp01(hit.linear))}</Row>
       {hit.fog !== null && <Row name="fog factor">{f3(hit.fog)}</Row>}
       <Row name="shade() → 8-bit">

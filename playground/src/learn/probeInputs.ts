@@ -1,0 +1,135 @@
+/**
+ * What the probe hands `explainShade`, read from the objects as the GPU reads them: the model and normal matrices
+ * (an instance's included, `normalMatrix: 'model'` honoured), the PhongLights and three's lights as `shade` takes
+ * them, the material's options, and what the material's `output` option draws of the explanation.
+ */
+import {
+  computeNormalMatrix,
+  type ShadeExplanation,
+  type ShadeLight,
+  type ShadeMaterial,
+  type ShadeThreeLight,
+  type ShadingMaterial,
+} from '@shadelab/material';
+import * as THREE from 'three';
+import type { V3 } from './probeMath';
+
+const v3 = (v: THREE.Vector3): V3 => [v.x, v.y, v.z];
+
+/** The mesh's world matrix, times the instance's matrix for an InstancedMesh. */
+export function modelOf(mesh: THREE.Mesh, instanceId: number | null): THREE.Matrix4 {
+  const model = mesh.matrixWorld.clone();
+  if (instanceId !== null && (mesh as THREE.InstancedMesh).isInstancedMesh) {
+    const instance = new THREE.Matrix4();
+    (mesh as THREE.InstancedMesh).getMatrixAt(instanceId, instance);
+    model.multiply(instance);
+  }
+  return model;
+}
+
+/**
+ * The normal matrix the material uses: sign(det)·cof of the world matrix (or, with `normalMatrix: 'model'`, the
+ * world matrix itself: the lecture's wrong way), times the instance's sign(det)·cof for an InstancedMesh.
+ */
+export function normalMatrixOf(
+  mesh: THREE.Mesh,
+  instanceId: number | null,
+  material: ShadingMaterial,
+): THREE.Matrix3 {
+  const modelNormals = (material as { normalMatrix?: string }).normalMatrix === 'model';
+  const matrix = modelNormals
+    ? new THREE.Matrix3().setFromMatrix4(mesh.matrixWorld)
+    : computeNormalMatrix(mesh.matrixWorld, new THREE.Matrix3());
+  if (instanceId !== null && (mesh as THREE.InstancedMesh).isInstancedMesh) {
+    const instance = new THREE.Matrix4();
+    (mesh as THREE.InstancedMesh).getMatrixAt(instanceId, instance);
+    matrix.multiply(computeNormalMatrix(instance, new THREE.Matrix3()));
+  }
+  return matrix;
+}
+
+/** The PhongLights on the material and three's lights in the scene, as `shade` takes them. */
+export function lightsOf(material: ShadingMaterial, scene: THREE.Scene): (ShadeLight | ShadeThreeLight)[] {
+  const at = new THREE.Vector3();
+  const lights: (ShadeLight | ShadeThreeLight)[] = material.phongLights.map((l) => ({
+    position: v3(l.getWorldPosition(at)),
+    ambient: l.ambient.toArray(),
+    diffuse: l.diffuse.toArray(),
+    specular: l.specular.toArray(),
+    attenuation: l.attenuation,
+  }));
+  scene.traverseVisible((object) => {
+    const light = object as THREE.Light;
+    if (!light.isLight || (object as { isPhongLight?: boolean }).isPhongLight) return;
+    const world = light.getWorldPosition(new THREE.Vector3());
+    const color = light.color.clone().multiplyScalar(light.intensity).toArray();
+    if ((light as THREE.AmbientLight).isAmbientLight) lights.push({ type: 'ambient', color });
+    else if ((light as THREE.HemisphereLight).isHemisphereLight) {
+      const ground = (light as THREE.HemisphereLight).groundColor.clone().multiplyScalar(light.intensity);
+      lights.push({
+        type: 'hemisphere',
+        color,
+        groundColor: ground.toArray(),
+        direction: v3(world.normalize()),
+      });
+    } else {
+      const target = (light as THREE.DirectionalLight).target?.getWorldPosition(new THREE.Vector3());
+      const direction = target ? v3(world.clone().sub(target).normalize()) : undefined;
+      if ((light as THREE.DirectionalLight).isDirectionalLight)
+        lights.push({ type: 'directional', color, direction });
+      else {
+        const point = light as THREE.PointLight;
+        const base = { color, position: v3(world), distance: point.distance, decay: point.decay };
+        const spot = light as THREE.SpotLight;
+        if (spot.isSpotLight) {
+          const [coneCos, penumbraCos] = [Math.cos(spot.angle), Math.cos(spot.angle * (1 - spot.penumbra))];
+          lights.push({ type: 'spot', ...base, direction, coneCos, penumbraCos });
+        } else if (point.isPointLight) lights.push({ type: 'point', ...base });
+      }
+    }
+  });
+  return lights;
+}
+
+/** The material as `shade` takes it. */
+export function shadeMaterialOf(m: ShadingMaterial): ShadeMaterial {
+  return {
+    ka: m.ka.toArray(),
+    kd: m.kd.toArray(),
+    ks: m.ks.toArray(),
+    shininess: m.shininess,
+    lighting: m.lighting,
+    celBands: m.celBands,
+    emissive: m.emissive.toArray(),
+  };
+}
+
+/**
+ * What the material draws at a point for its `output` option: the colour (the sum); the ambient, diffuse or
+ * specular terms summed over the lights; the attenuation averaged over the direct lights; or the unit normal in
+ * view space packed as n·0.5 + 0.5 (three's MeshNormalMaterial).
+ */
+export function outputOf(e: ShadeExplanation, output: string, view: THREE.Matrix4): V3 {
+  const total = (term: 'ambient' | 'diffuse' | 'specular'): V3 => {
+    const out: V3 = [0, 0, 0];
+    for (const light of e.lights) for (let k = 0; k < 3; k++) out[k] += light[term][k]!;
+    return out;
+  };
+  switch (output) {
+    case 'ambient':
+    case 'diffuse':
+    case 'specular':
+      return total(output);
+    case 'attenuation': {
+      const direct = e.lights.filter((light) => light.l !== null);
+      const mean = direct.reduce((sum, light) => sum + light.attenuation, 0) / Math.max(direct.length, 1);
+      return [mean, mean, mean];
+    }
+    case 'normal': {
+      const n = new THREE.Vector3(...e.n).transformDirection(view);
+      return [n.x * 0.5 + 0.5, n.y * 0.5 + 0.5, n.z * 0.5 + 0.5];
+    }
+    default:
+      return e.sum;
+  }
+}
