@@ -137,8 +137,14 @@ test('a zero-length line does nothing; outside profile mode a drag turns the tra
   expect(await page.getByTestId('profile-plot').getAttribute('data-pixels')).toBe(pixels);
   expect(await frames(page)).toBe(after);
 
-  // Leaving profile mode gives the drag back to the trackball.
+  // Esc, or the button again (the view's controls keep their clicks in profile mode), leaves the mode and gives
+  // the drag back to the trackball.
   await page.keyboard.press('Escape');
+  await expect(button).toHaveAttribute('aria-pressed', 'false');
+  await expect(page.getByTestId('profile-overlay')).toHaveCount(0);
+  await button.click();
+  await expect(page.getByTestId('profile-overlay')).toBeVisible();
+  await button.click();
   await expect(button).toHaveAttribute('aria-pressed', 'false');
   await expect(page.getByTestId('profile-overlay')).toHaveCount(0);
   await dragLine(page, [0.3, 0.5], [0.6, 0.45]);

@@ -36,7 +36,7 @@ export function AttenuationTool({
       {stage &&
         createPortal(
           <section
-            style={{ ...LEARN_PANEL, bottom: 28, maxHeight: 'calc(50% - 32px)' }}
+            style={{ ...LEARN_PANEL, bottom: 52, maxHeight: 'calc(50% - 56px)' }}
             aria-label="Attenuation curve"
             data-testid="attenuation-panel"
           >

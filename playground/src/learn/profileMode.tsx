@@ -1,11 +1,11 @@
 /**
- * Profile mode (loaded when the mode is first turned on): an overlay over the canvas takes the pointer, so a drag
- * draws a line instead of turning the trackball; on release the line's pixels are read back from the view drawn
+ * Profile mode (loaded when the mode is first turned on): a left drag on the canvas draws a line instead of
+ * turning the trackball; on release the line's pixels are read back from the view drawn
  * in flat, Gouraud and Phong shading (`profileSample.ts`) and plotted (`profilePlot.tsx`). A zero-length line
  * (both ends in one pixel) does nothing. The profile is read again after every change of the view (trackball
  * keys, panel edits) while the mode is on.
  */
-import { type PointerEvent, type RefObject, useEffect, useState } from 'react';
+import { type RefObject, useEffect, useState } from 'react';
 import type { Viewer } from '../engine/viewer/Viewer';
 import type { PlaygroundState } from '../state/schema';
 import { type CanvasPoint, linePixels } from './profileLine';
@@ -67,25 +67,52 @@ export default function ProfileMode({
 
   const canvas = viewerRef.current?.canvas;
   const [bw, bh] = canvas ? [canvas.width, canvas.height] : [1, 1];
-  /** The pointer's position in the canvas's drawing-buffer pixels. */
-  const at = (e: PointerEvent<SVGSVGElement>): CanvasPoint => {
-    const box = e.currentTarget.getBoundingClientRect();
-    return [((e.clientX - box.left) * bw) / box.width, ((e.clientY - box.top) * bh) / box.height];
-  };
-  const onDown = (e: PointerEvent<SVGSVGElement>) => {
-    if (e.button !== 0) return;
-    e.currentTarget.setPointerCapture(e.pointerId);
-    const p = at(e);
-    setDragging({ from: p, to: p });
-  };
-  const onMove = (e: PointerEvent<SVGSVGElement>) => dragging && setDragging({ ...dragging, to: at(e) });
-  const onUp = (e: PointerEvent<SVGSVGElement>) => {
-    if (!dragging) return;
-    const line = { ...dragging, to: at(e) };
-    setDragging(null);
-    // A zero-length line (both ends in one pixel) does nothing: the last profile stays.
-    if (linePixels(line.from, line.to, bw, bh)) setSegment(line);
-  };
+
+  // The drag is taken from the canvas before anything on it sees the press: a capturing listener on its parent
+  // stops a left press on the canvas there, so the trackball, the light gizmo and the probe never get it, while the
+  // controls over and under the view keep their clicks. Moves and the release are followed on the window.
+  useEffect(() => {
+    if (blocked || !canvas?.parentElement) return;
+    const stage = canvas.parentElement;
+    const at = (e: PointerEvent): CanvasPoint => {
+      const box = canvas.getBoundingClientRect();
+      return [
+        ((e.clientX - box.left) * canvas.width) / box.width,
+        ((e.clientY - box.top) * canvas.height) / box.height,
+      ];
+    };
+    let from: CanvasPoint | null = null;
+    const move = (e: PointerEvent) => from && setDragging({ from, to: at(e) });
+    const up = (e: PointerEvent) => {
+      if (!from) return;
+      const line = { from, to: at(e) };
+      from = null;
+      setDragging(null);
+      window.removeEventListener('pointermove', move);
+      window.removeEventListener('pointerup', up);
+      // A zero-length line (both ends in one pixel) does nothing: the last profile stays.
+      if (linePixels(line.from, line.to, canvas.width, canvas.height)) setSegment(line);
+    };
+    const down = (e: PointerEvent) => {
+      if (e.target !== canvas || e.button !== 0) return;
+      e.stopPropagation();
+      e.preventDefault();
+      canvas.focus();
+      from = at(e);
+      setDragging({ from, to: from });
+      window.addEventListener('pointermove', move);
+      window.addEventListener('pointerup', up);
+    };
+    const cursor = canvas.style.cursor;
+    canvas.style.cursor = 'crosshair';
+    stage.addEventListener('pointerdown', down, { capture: true });
+    return () => {
+      canvas.style.cursor = cursor;
+      stage.removeEventListener('pointerdown', down, { capture: true });
+      window.removeEventListener('pointermove', move);
+      window.removeEventListener('pointerup', up);
+    };
+  }, [blocked, canvas]);
   const shown = dragging ?? segment;
 
   return (
@@ -95,19 +122,8 @@ export default function ProfileMode({
           data-testid="profile-overlay"
           viewBox={`0 0 ${bw} ${bh}`}
           preserveAspectRatio="none"
-          aria-label="Profile mode: drag a line across the view"
-          style={{
-            position: 'absolute',
-            inset: 0,
-            width: '100%',
-            height: '100%',
-            cursor: 'crosshair',
-            touchAction: 'none',
-          }}
-          onPointerDown={onDown}
-          onPointerMove={onMove}
-          onPointerUp={onUp}
-          onPointerCancel={() => setDragging(null)}
+          aria-hidden="true"
+          style={{ position: 'absolute', inset: 0, width: '100%', height: '100%', pointerEvents: 'none' }}
         >
           {shown && (
             <line
