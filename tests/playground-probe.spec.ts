@@ -231,8 +231,6 @@ test('the open panel fits the view at 1280 × 800 and 1920 × 1080, below the ob
     await show({ material: { shading: 'gouraud', celBands: 3 } });
     const probed = await probeAt(0.5, 0.45);
     expectAgrees(probed, `${width} × ${height}`);
-    if (process.env['SHADELAB_PROBE_SHOT'])
-      await page.screenshot({ path: `${process.env['SHADELAB_PROBE_SHOT']}-${width}.png` });
     const canvas = (await page.getByTestId('viewport').boundingBox())!;
     const panel = (await page.getByTestId('probe-panel').boundingBox())!;
     expect(panel.x).toBeGreaterThanOrEqual(canvas.x);
