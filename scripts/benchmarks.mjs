@@ -1533,6 +1533,19 @@ function adaptive(r) {
       );
     }
   }
+  // What the fastest fixed shading gets in each view: the floor any choice of shading alone can reach here.
+  const floors = Object.entries(r.results ?? {}).map(([view, v]) => {
+    const fastest = Object.entries(/** @type {Record<string, any>} */ (v.rows))
+      .filter(([name]) => name.startsWith('fixed') || name === 'all-Phong')
+      .sort((a, b) => a[1].vsAllPhong.paired - b[1].vsAllPhong.paired)[0];
+    return `${fastest[0]} ${fastest[1].vsAllPhong.paired.toFixed(3)} × all-Phong in the ${view === 'published' ? 'published' : 'deeper'} view (error p99 ${fastest[1].error.p99}, ${pct(fastest[1].error.over8)} over 8)`;
+  });
+  if (floors.length > 0) {
+    out.push(
+      '',
+      `The fastest single shading everywhere: ${floors.join('; ')}: the floor that choosing shadings alone can reach in this scene, whatever the budget.`,
+    );
+  }
   if (r.why) out.push('', r.why);
   return out;
 }

@@ -116,3 +116,19 @@ test('in the compare view it says why it does not run, and changes nothing', asy
   await settle(page);
   expect(await picture(page)).toBe(before);
 });
+
+test('the trade-off page charts adaptive, fixed flat, fixed Gouraud and all-Phong from the adaptive bench', async ({
+  page,
+}) => {
+  await page.goto('/tradeoff.html');
+  const chart = page.getByTestId('adaptive-chart');
+  await expect(chart).toBeVisible();
+  // One point per variant and view: adaptive at two budgets, flat, Gouraud and all-Phong, in two views.
+  await expect
+    .poll(() => chart.locator('.recharts-scatter-symbol .recharts-symbols').count(), { timeout: 20_000 })
+    .toBe(10);
+  for (const kind of ['adaptive', 'flat', 'gouraud', 'phong']) {
+    await expect(chart.locator('.recharts-legend-wrapper')).toContainText(`${kind} (published view)`);
+  }
+  await expect(chart.locator('.recharts-legend-wrapper')).toContainText('deeper view');
+});

@@ -7,6 +7,7 @@ import { compareToReference, type ImageError } from '@shadelab/reference';
 import { SPHERE_BASES, type SphereBase } from '@shadelab/sphere';
 import { chooseSphereDetail, silhouetteErrorScalePx } from '@shadelab/sphere/detail';
 import { useEffect, useMemo, useRef, useState } from 'react';
+import { AdaptiveParetoChart } from './AdaptiveParetoChart';
 import {
   cheapestMeeting,
   type ErrorMetric,
@@ -249,6 +250,10 @@ export function TradeoffApp() {
           {TRADE_CONDITIONS.load.map((l: number) => l.toFixed(1)).join(' ')}. The live heat map above is the
           current view ({WIDTH}×{HEIGHT}); the chart is the benchmark's.
         </p>
+      </section>
+      <section className="chart">
+        <h2>adaptive shading: frame time against measured error (realistic scene)</h2>
+        <AdaptiveParetoChart />
       </section>
     </div>
   );
