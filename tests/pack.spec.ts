@@ -307,7 +307,7 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
     );
     for (const f of p.files) {
       expect(f, p.name).toMatch(
-        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.(ts|tsx|js)|docs\/(api\/)?[\w.@-]+\.md)$/,
+        /^(package\.json|README\.md|LICENSE|CHANGELOG\.md|dist\/[\w.-]+\.(js|d\.ts)(\.map)?|src\/[\w.-]+\.(ts|tsx|js)|docs\/(api\/)?[\w.@-]+\.md|docs\/images\/[\w-]+\.png)$/,
       );
       // (Not a test: docs/api/@shadelab.playwright.test.md, the reference of the @shadelab/playwright/test entry.)
       expect(f, p.name).not.toMatch(/\.test\.(ts|js|d\.ts)(\.map)?$|test-util|tsbuildinfo/);
