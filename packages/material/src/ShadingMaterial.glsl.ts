@@ -11,7 +11,7 @@
 //   FLAT_DERIVATIVES                               flat shading of a plain indexed geometry: per-fragment lighting
 //                                                  with the face normal from screen-space derivatives
 //   SHADING_EMISSIVE                               emissive ≠ black (added after the lighting)
-//   SHADING_OUTPUT_<NAME>                          output ≠ 'color': one term, the attenuation or the normal
+//   SHADING_OUTPUT_<NAME>, SHADING_OUTPUT_TERM, …  output ≠ 'color': one term, the attenuation or the normal
 //                                                  (see outputChunks.glsl.ts)
 //   SHADING_MODEL_NORMALS                          normalMatrix 'model': normals × M, the lecture's wrong way
 //   SHADING_THREE_LIGHTS (SHADING_LIGHT_CUTOFF, SHADING_INVERSE_SQUARE, SHADING_VIEW_SPACE)  three's lights
@@ -41,7 +41,6 @@ export const vertexShader = /* glsl */ `
 #include <logdepthbuf_pars_vertex>
 #include <clipping_planes_pars_vertex>
 ${include.sceneFeatures}
-${include.outputFeatures}
 ${include.surfaceVertexPars}
 uniform mat3 shadingNormalMatrix; // sign(det)·cof(modelMatrix), see computeNormalMatrix
 ${include.modelNormalsVertex}
@@ -83,7 +82,6 @@ export const fragmentShader = /* glsl */ `
 #include <fog_pars_fragment>
 #include <clipping_planes_pars_fragment>
 ${include.sceneFeatures}
-${include.outputFeatures}
 ${include.surfaceFragmentPars}
 ${include.shadowFeatures}
 ${include.shadowFragmentPars}

@@ -7,14 +7,12 @@ import {
   type Light,
   Matrix3,
   type Matrix4,
-  type NormalMapTypes,
   type Object3D,
   type PointLight,
   type Scene,
   ShaderMaterial,
   type SkinnedMesh,
   type SpotLight,
-  TangentSpaceNormalMap,
   type Texture,
   UniformsLib,
   UniformsUtils,
@@ -26,63 +24,38 @@ import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { eyeOf } from './eyeOf.js';
 import { facePositionTexture, faceSkinTexture } from './facePositionTexture.js';
 import { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
-import {
-  checkCelBands,
-  checkLighting,
-  checkNormalMatrix,
-  checkOutput,
-  checkPhongLights,
-  checkShading,
-  type NormalMatrixMode,
-  SHADING_DEFAULTS,
-  type Shading,
-  type ShadingOptions,
-  type ShadingOutput,
-} from './options.js';
+import type { ShadingOutput } from './options.js';
 import { PhongLight } from './PhongLight.js';
 import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
-import type { Lighting } from './shade.js';
 import {
-  type ColorInput,
-  checkColorChannels,
-  checkNonNegative,
-  checkTexture,
-  checkUnit,
-  setColor,
-} from './validate.js';
+  applyShadingOptions,
+  checkEditedInPlace,
+  copyShadingOptions,
+  installShadingProperties,
+  type PropertyChange,
+  type ShadingMaterialOptions,
+  type ShadingProperties,
+} from './shadingProperties.js';
 
-/** Options of {@link ShadingMaterial}; every one is also a validated property of the material. */
-export interface ShadingMaterialOptions extends ShadingOptions {
-  /**
-   * three's `map`: a colour texture whose texel (linear, decoded as three decodes its `colorSpace`) multiplies
-   * ka and kd, never ks; its alpha multiplies the opacity. @default null
-   */
-  map?: Texture | null;
-  /** three's `vertexColors`: the `color` attribute (RGB or RGBA, linear) multiplies ka and kd. @default false */
-  vertexColors?: boolean;
-  /**
-   * three's `emissive`: linear RGB added to the lit colour, outside the lighting (before fog and tone mapping);
-   * a number is a grey level (see {@link ColorInput}). @default 0 (black)
-   */
-  emissive?: ColorInput;
-  /** three's `emissiveMap`: its texel (linear) multiplies `emissive`. @default null */
-  emissiveMap?: Texture | null;
-  /** three's `opacity`, in 0 … 1: the fragment's alpha (with `transparent`, blended as three blends). @default 1 */
-  opacity?: number;
-  /** three's `transparent`: blend by alpha (else alpha is 1). @default false */
-  transparent?: boolean;
-  /** three's `alphaTest`, in 0 … 1: fragments with alpha below it are discarded; 0 = off. @default 0 */
-  alphaTest?: number;
-  /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
-  alphaMap?: Texture | null;
-  /**
-   * three's `normalMap` (tangent space by default, see `normalMapType`): perturbs the normal per fragment, in
-   * phong shading only (gouraud and flat have no per-fragment normal: a console warning, once). @default null
-   */
-  normalMap?: Texture | null;
-  /** three's `normalScale`: scales the normal map's x and y. @default Vector2(1, 1) */
-  normalScale?: Vector2;
-}
+export type { ShadingMaterialOptions } from './shadingProperties.js';
+
+/**
+ * The defines of each `output` (see outputChunks.glsl.ts): its own, and which terms the lighting leaves out; none
+ * for the colour.
+ */
+const OUTPUT_DEFINES: Record<ShadingOutput, readonly string[]> = {
+  color: [],
+  ambient: ['SHADING_OUTPUT_AMBIENT', 'SHADING_OUTPUT_TERM', 'SHADING_NO_DIFFUSE', 'SHADING_NO_SPECULAR'],
+  diffuse: ['SHADING_OUTPUT_DIFFUSE', 'SHADING_OUTPUT_TERM', 'SHADING_NO_AMBIENT', 'SHADING_NO_SPECULAR'],
+  specular: ['SHADING_OUTPUT_SPECULAR', 'SHADING_OUTPUT_TERM', 'SHADING_NO_AMBIENT', 'SHADING_NO_DIFFUSE'],
+  attenuation: [
+    'SHADING_OUTPUT_ATTENUATION',
+    'SHADING_OUTPUT_TERM',
+    'SHADING_OUTPUT_DATA',
+    'SHADING_NO_AMBIENT',
+  ],
+  normal: ['SHADING_OUTPUT_NORMAL', 'SHADING_OUTPUT_TERM', 'SHADING_OUTPUT_DATA', 'SHADING_NO_AMBIENT'],
+};
 
 /** The geometries already warned about their provoking vertex. */
 const _warnedProvoking = /* @__PURE__ */ new WeakSet<BufferGeometry>();
@@ -163,6 +136,9 @@ function isRigid(m: Matrix4): boolean {
   );
 }
 
+/** The options' properties of {@link ShadingMaterial} (installed from shadingProperties.ts). */
+export interface ShadingMaterial extends ShadingProperties {}
+
 /**
  * Classic lighting on three.js: the lecture's flat, Gouraud and Phong shading crossed with Phong,
  * Blinn-Phong and cel lighting, lit by {@link PhongLight}s. Lighting is done in world space with the
@@ -209,6 +185,7 @@ function isRigid(m: Matrix4): boolean {
  * const material = new ShadingMaterial({ shading: 'gouraud', lighting: 'blinn-phong', lights: [light] });
  * scene.add(light, new THREE.Mesh(new THREE.IcosahedronGeometry(1, 5), material));
  */
+// biome-ignore lint/suspicious/noUnsafeDeclarationMerging: the options' accessors are installed on the prototype (installShadingProperties), typed by the interface.
 export class ShadingMaterial extends ShaderMaterial {
   /** Always true: lets code tell a ShadingMaterial from other materials without `instanceof`. */
   readonly isShadingMaterial = true;
@@ -226,18 +203,8 @@ export class ShadingMaterial extends ShaderMaterial {
    */
   override clipping = true;
 
-  #shading: Shading = 'phong';
-  #lighting: Lighting = 'phong';
-  #celBands = 0;
-  #output: ShadingOutput = SHADING_DEFAULTS.output;
-  #normalMatrix: NormalMatrixMode = SHADING_DEFAULTS.normalMatrix;
-  #shininess = 32;
-  #lights: readonly PhongLight[] = Object.freeze([]);
   // The PhongLights that light the last draw: the list when it is not empty, else the scene's.
-  #active: readonly PhongLight[] = this.#lights;
-  readonly #ka = new Color(0.6, 0.35, 0.2);
-  readonly #kd = new Color(0.6, 0.35, 0.2);
-  readonly #ks = new Color(0.5, 0.5, 0.5);
+  #active: readonly PhongLight[] = [];
   // What the last drawn geometry and lights asked for (part of the variant).
   #sphereNormals = false;
   #flatCorners = false;
@@ -254,41 +221,16 @@ export class ShadingMaterial extends ShaderMaterial {
    * a subclass whose fragment stage lights in world space itself (the impostor). @internal
    */
   protected readonly viewSpaceLighting: boolean = true;
-  readonly #emissive = new Color(0, 0, 0);
-  #opacity = 1;
   // What of the surface three compiles (its program parameters), to raise needsUpdate when it changes.
   #surfaceKey = '';
   // The normal map was set with a shading that cannot use it, and the warning was given.
   #warnedNormalMap = false;
-  // The message of the in-place problem last reported (null once the values are valid again).
-  #reported: string | null = null;
 
   /**
    * @param options - Shading, lighting, reflectances and lights; each one omitted takes its default (see
    *   {@link ShadingMaterialOptions}).
    */
-  constructor({
-    shading = SHADING_DEFAULTS.shading,
-    lighting = SHADING_DEFAULTS.lighting,
-    celBands = SHADING_DEFAULTS.celBands,
-    ka = SHADING_DEFAULTS.ka,
-    kd = SHADING_DEFAULTS.kd,
-    ks = SHADING_DEFAULTS.ks,
-    shininess = SHADING_DEFAULTS.shininess,
-    lights = [],
-    map = null,
-    vertexColors = false,
-    emissive = 0,
-    emissiveMap = null,
-    opacity = 1,
-    transparent = false,
-    alphaTest = 0,
-    alphaMap = null,
-    normalMap = null,
-    normalScale = new Vector2(1, 1),
-    output = SHADING_DEFAULTS.output,
-    normalMatrix = SHADING_DEFAULTS.normalMatrix,
-  }: ShadingMaterialOptions = {}) {
+  constructor(options: ShadingMaterialOptions = {}) {
     super({
       vertexShader,
       fragmentShader,
@@ -322,192 +264,28 @@ export class ShadingMaterial extends ShaderMaterial {
         ...UniformsUtils.clone(UniformsLib.lights),
       },
     });
-    this.shading = shading;
-    this.lighting = lighting;
-    this.celBands = celBands;
-    this.output = output;
-    this.normalMatrix = normalMatrix;
-    this.ka = ka;
-    this.kd = kd;
-    this.ks = ks;
-    this.shininess = shininess;
-    this.phongLights = lights;
-    this.map = checkTexture('ShadingMaterial.map', map);
-    this.vertexColors = vertexColors === true;
-    this.emissive = emissive;
-    this.emissiveMap = checkTexture('ShadingMaterial.emissiveMap', emissiveMap);
-    this.opacity = opacity;
-    this.transparent = transparent === true;
-    this.alphaTest = alphaTest;
-    this.alphaMap = checkTexture('ShadingMaterial.alphaMap', alphaMap);
-    this.normalMap = checkTexture('ShadingMaterial.normalMap', normalMap);
-    if (!(normalScale instanceof Vector2)) {
-      throw new TypeError(`ShadingMaterial.normalScale must be a THREE.Vector2, got ${String(normalScale)}`);
+    applyShadingOptions(this, OWNER, options);
+    this.#syncDefines();
+  }
+
+  static {
+    // The options' accessors (shadingProperties.ts), and what a change does here: the variant's defines, the
+    // shininess uniform, the lights' part of the variant.
+    installShadingProperties(ShadingMaterial, {
+      owner: () => OWNER,
+      change: (material, kind) => (material as ShadingMaterial).#optionChanged(kind),
+    });
+  }
+
+  #optionChanged(kind: PropertyChange): void {
+    if (kind === 'shininess') {
+      this.uniforms.shininess.value = this.shininess;
+      return;
     }
-    this.normalScale.copy(normalScale);
-    this.#syncDefines();
-  }
-
-  /**
-   * three's `map`: a colour texture (its `colorSpace` decoded to linear as three decodes it) whose texel
-   * multiplies ka and kd (not ks); its alpha multiplies the opacity. Sampled per fragment in every shading
-   * (gouraud and flat pass the ka/kd part and the ks part of their colours separately). @default null
-   */
-  map: Texture | null = null;
-  /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
-  alphaMap: Texture | null = null;
-  /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingMaterial.emissive}. @default null */
-  emissiveMap: Texture | null = null;
-  /**
-   * three's `normalMap`: perturbs the normal per fragment through three's tangent frame from screen-space
-   * derivatives (a `tangent` attribute is not used), in world space; phong shading only (gouraud and flat
-   * shading have no per-fragment normal: it is ignored there, with one console warning). @default null
-   */
-  normalMap: Texture | null = null;
-  /** three's `normalMapType`: `TangentSpaceNormalMap` or `ObjectSpaceNormalMap`. @default TangentSpaceNormalMap */
-  normalMapType: NormalMapTypes = TangentSpaceNormalMap;
-  /** three's `normalScale`: scales the tangent-space normal map's x and y (finite). @default Vector2(1, 1) */
-  readonly normalScale = new Vector2(1, 1);
-
-  /**
-   * three's `emissive`: linear RGB added to the lit colour outside the lighting, before fog and tone mapping
-   * (channels finite ≥ 0; set it with a {@link ColorInput}, a number being a grey level). Compiled only when not
-   * black or with an `emissiveMap`. @default Color(0, 0, 0)
-   */
-  get emissive(): Color {
-    return this.#emissive;
-  }
-  set emissive(value: ColorInput) {
-    setColor('ShadingMaterial.emissive', this.#emissive, value);
-  }
-
-  /** three's `opacity`, in 0 … 1 (a RangeError otherwise): the alpha, blended when `transparent`. @default 1 */
-  override get opacity(): number {
-    return #opacity in this ? this.#opacity : 1;
-  }
-  override set opacity(value: number) {
-    // three's Material constructor assigns the default before this class's fields exist.
-    if (!(#opacity in this)) return;
-    this.#opacity = checkUnit('ShadingMaterial.opacity', value);
-  }
-
-  /** three's `alphaTest`, in 0 … 1 (a RangeError otherwise): alpha below it is discarded; 0 = off. @default 0 */
-  override get alphaTest(): number {
-    return super.alphaTest;
-  }
-  override set alphaTest(value: number) {
-    super.alphaTest = checkUnit('ShadingMaterial.alphaTest', value);
-  }
-
-  /** Where the lighting is evaluated: `'flat'`, `'gouraud'` or `'phong'`. @default 'phong' */
-  get shading(): Shading {
-    return this.#shading;
-  }
-  set shading(value: Shading) {
-    this.#shading = checkShading(OWNER, value);
-    this.#syncDefines();
-  }
-
-  /** The lighting equation: `'phong'` or `'blinn-phong'`. @default 'phong' */
-  get lighting(): Lighting {
-    return this.#lighting;
-  }
-  set lighting(value: Lighting) {
-    this.#lighting = checkLighting(OWNER, value);
-    this.#syncDefines();
-  }
-
-  /**
-   * Cel shading: 0 = off; N in 2 … 255 quantises each light's diffuse cosine to N shades
-   * (min(⌊cos·N⌋, N−1)/(N−1)) and its specular to a hard-edged highlight (1 where spec ≥ 0.5, else 0).
-   * With gouraud shading the quantised vertex colours are interpolated (soft band edges); with phong
-   * shading the bands are crisp. @default 0
-   */
-  get celBands(): number {
-    return this.#celBands;
-  }
-  set celBands(value: number) {
-    this.#celBands = checkCelBands(OWNER, value);
-    this.#syncDefines();
-  }
-
-  /**
-   * What the material draws: `'color'`, or `'ambient'`, `'diffuse'`, `'specular'`, `'attenuation'` or
-   * `'normal'` alone, a debugging aid (exactly what each shows: {@link ShadingOutput}). A define
-   * (`SHADING_OUTPUT_<NAME>`), only when not `'color'`: changing it recompiles. @default 'color'
-   */
-  get output(): ShadingOutput {
-    return this.#output;
-  }
-  set output(value: ShadingOutput) {
-    this.#output = checkOutput(OWNER, value);
-    this.#syncDefines();
-  }
-
-  /**
-   * How normals go to world space: `'inverse-transpose'` (the normal matrix, right) or `'model'` (the model
-   * matrix itself, the lecture's wrong way under a non-uniform scale), a teaching aid (see
-   * {@link NormalMatrixMode}). A define (`SHADING_MODEL_NORMALS`), only when `'model'`: changing it
-   * recompiles. @default 'inverse-transpose'
-   */
-  get normalMatrix(): NormalMatrixMode {
-    return this.#normalMatrix;
-  }
-  set normalMatrix(value: NormalMatrixMode) {
-    this.#normalMatrix = checkNormalMatrix(OWNER, value);
-    this.#syncDefines();
-  }
-
-  /**
-   * ka, ambient reflectance (linear RGB, channels finite ≥ 0). Set it with a {@link ColorInput} (a number is a
-   * grey level); setting validates and copies.
-   * @default Color(0.6, 0.35, 0.2)
-   */
-  get ka(): Color {
-    return this.#ka;
-  }
-  set ka(value: ColorInput) {
-    setColor('ShadingMaterial.ka', this.#ka, value);
-  }
-
-  /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0; set a number as a grey level). @default Color(0.6, 0.35, 0.2) */
-  get kd(): Color {
-    return this.#kd;
-  }
-  set kd(value: ColorInput) {
-    setColor('ShadingMaterial.kd', this.#kd, value);
-  }
-
-  /** ks, specular reflectance (linear RGB, channels finite ≥ 0; set a number as a grey level). @default Color(0.5, 0.5, 0.5) */
-  get ks(): Color {
-    return this.#ks;
-  }
-  set ks(value: ColorInput) {
-    setColor('ShadingMaterial.ks', this.#ks, value);
-  }
-
-  /** α, the specular exponent (finite, ≥ 0; 0⁰ = 1). A uniform: changing it never recompiles. @default 32 */
-  get shininess(): number {
-    return this.#shininess;
-  }
-  set shininess(value: number) {
-    this.#shininess = checkNonNegative('ShadingMaterial.shininess', value);
-    this.uniforms.shininess.value = value;
-  }
-
-  /**
-   * The PhongLights (the `lights` option; named so because three's `ShaderMaterial.lights` is the flag for
-   * three's own lights, which the material raises itself when the scene has one). Empty (the default): every
-   * visible PhongLight in the rendered scene lights the material; not empty: only these do. A frozen copy;
-   * assign a new array to change it. The number of lights is part of the variant. @default []
-   */
-  get phongLights(): readonly PhongLight[] {
-    return this.#lights;
-  }
-  set phongLights(value: readonly PhongLight[]) {
-    this.#lights = checkPhongLights(OWNER, value);
-    this.#active = this.#lights;
-    this.#attenuation = this.#lights.some((light) => light.attenuates);
+    if (kind === 'lights') {
+      this.#active = this.phongLights;
+      this.#attenuation = this.#active.some((light) => light.attenuates);
+    }
     this.#syncDefines();
   }
 
@@ -525,7 +303,7 @@ export class ShadingMaterial extends ShaderMaterial {
   ): void {
     const u = this.uniforms;
     const hasNormal = geometry.getAttribute('normal') !== undefined;
-    if (this.#shading === 'flat') {
+    if (this.shading === 'flat') {
       const skinned = (object as SkinnedMesh).isSkinnedMesh === true;
       const indexed = geometry.index !== null;
       const deformed = skinned || geometry.morphAttributes.position !== undefined;
@@ -552,7 +330,7 @@ export class ShadingMaterial extends ShaderMaterial {
       const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData[SPHERE_FLAG] === true;
       if (!hasNormal && !sphere) {
         throw new TypeError(
-          `ShadingMaterial: ${this.#shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
+          `ShadingMaterial: ${this.shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
         );
       }
       this.#sphereNormals = !hasNormal;
@@ -560,7 +338,7 @@ export class ShadingMaterial extends ShaderMaterial {
       u.faceSkin.value = null;
     }
     const seen = sceneLightsOf(_renderer, _scene);
-    this.#active = this.#lights.length > 0 ? this.#lights : seen.phong;
+    this.#active = this.phongLights.length > 0 ? this.phongLights : seen.phong;
     this.#attenuation = this.#active.some((light) => light.attenuates);
     this.#threeLights = seen.threeLights;
     this.#lightCutoff = seen.cutoff;
@@ -572,7 +350,7 @@ export class ShadingMaterial extends ShaderMaterial {
     this.#viewSpace =
       this.viewSpaceLighting &&
       this.#threeLights &&
-      (this.#shading === 'phong' || (this.#shading === 'flat' && this.#flatDerivatives)) &&
+      (this.shading === 'phong' || (this.shading === 'flat' && this.#flatDerivatives)) &&
       isRigid(view);
     this.#updateSurface();
     this.#syncDefines();
@@ -585,24 +363,24 @@ export class ShadingMaterial extends ShaderMaterial {
 
   #syncDefines(): void {
     const defines: Record<string, number | string> = {};
-    defines[`SHADING_${this.#shading.toUpperCase()}`] = '';
-    if (this.#lighting === 'blinn-phong') defines.LIGHTING_BLINN = '';
-    defines.CEL_BANDS = this.#celBands;
+    defines[`SHADING_${this.shading.toUpperCase()}`] = '';
+    if (this.lighting === 'blinn-phong') defines.LIGHTING_BLINN = '';
+    defines.CEL_BANDS = this.celBands;
     defines.NUM_LIGHTS = this.#active.length;
     if (this.#attenuation) defines.USE_ATTENUATION = '';
-    if (this.#sphereNormals && this.#shading !== 'flat') defines.SPHERE_NORMALS = '';
-    if (this.#flatCorners && this.#shading === 'flat') defines.FLAT_CORNERS = '';
-    if (this.#flatDerivatives && this.#shading === 'flat') defines.FLAT_DERIVATIVES = '';
+    if (this.#sphereNormals && this.shading !== 'flat') defines.SPHERE_NORMALS = '';
+    if (this.#flatCorners && this.shading === 'flat') defines.FLAT_CORNERS = '';
+    if (this.#flatDerivatives && this.shading === 'flat') defines.FLAT_DERIVATIVES = '';
     if (this.#threeLights) defines.SHADING_THREE_LIGHTS = '';
     // three's distance falloff, only what the scene's point and spot lights use: the cut-off window when some
     // light has a distance, pow(t, decay) unless every decay is 2 (then t², exact and without pow).
     if (this.#threeLights && this.#lightCutoff) defines.SHADING_LIGHT_CUTOFF = '';
     if (this.#threeLights && this.#inverseSquare) defines.SHADING_INVERSE_SQUARE = '';
     if (this.#viewSpace) defines.SHADING_VIEW_SPACE = '';
-    const e = this.#emissive;
+    const e = this.emissive;
     if (e.r > 0 || e.g > 0 || e.b > 0) defines.SHADING_EMISSIVE = '';
-    if (this.#output !== 'color') defines[`SHADING_OUTPUT_${this.#output.toUpperCase()}`] = '';
-    if (this.#normalMatrix === 'model') defines.SHADING_MODEL_NORMALS = '';
+    for (const name of OUTPUT_DEFINES[this.output]) defines[name] = '';
+    if (this.normalMatrix === 'model') defines.SHADING_MODEL_NORMALS = '';
     const old = this.defines ?? {};
     const keys = Object.keys(defines);
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);
@@ -625,7 +403,7 @@ export class ShadingMaterial extends ShaderMaterial {
       if (this.#surfaceKey !== '') this.needsUpdate = true;
       this.#surfaceKey = key;
     }
-    u.opacity.value = this.#opacity;
+    u.opacity.value = this.opacity;
     u.alphaTest.value = this.alphaTest;
     refreshMap(u.map, u.mapTransform, this.map);
     refreshMap(u.alphaMap, u.alphaMapTransform, this.alphaMap);
@@ -637,51 +415,31 @@ export class ShadingMaterial extends ShaderMaterial {
       const sign = this.side === BackSide ? -1 : 1;
       // Not finite: reported by the in-place check, drawn with the last finite scale.
       if (Number.isFinite(x) && Number.isFinite(y)) u.normalScale.value.set(sign * x, sign * y);
-      if (this.#shading !== 'phong' && !this.#warnedNormalMap) {
+      if (this.shading !== 'phong' && !this.#warnedNormalMap) {
         this.#warnedNormalMap = true;
         console.warn(
-          `ShadingMaterial: normalMap needs a per-fragment normal (shading 'phong'); ${this.#shading} shading ignores it`,
+          `ShadingMaterial: normalMap needs a per-fragment normal (shading 'phong'); ${this.shading} shading ignores it`,
         );
       }
     }
   }
 
-  /**
-   * Checks what may have been edited in place (ka, kd, ks, the lights' colours, their world positions); the
-   * first problem as a RangeError, or null.
-   */
-  #checkInPlace(): RangeError | null {
-    try {
-      checkColorChannels('ShadingMaterial.ka', this.#ka);
-      checkColorChannels('ShadingMaterial.kd', this.#kd);
-      checkColorChannels('ShadingMaterial.ks', this.#ks);
-      checkColorChannels('ShadingMaterial.emissive', this.#emissive);
-      if (!Number.isFinite(this.normalScale.x) || !Number.isFinite(this.normalScale.y)) {
+  /** Throws a RangeError when a light was edited in place to a bad value (its colours, its world position). */
+  #checkLightsInPlace(): void {
+    this.#active.forEach((light, i) => {
+      try {
+        light.validate();
+      } catch (error) {
+        throw error instanceof RangeError ? new RangeError(`${OWNER}.lights[${i}]: ${error.message}`) : error;
+      }
+      const e = light.matrixWorld.elements;
+      // Finite in float32, as uploaded (|coordinate| < 3.4e38).
+      if (![e[12], e[13], e[14]].every((c) => Number.isFinite(Math.fround(c)))) {
         throw new RangeError(
-          `ShadingMaterial.normalScale must be finite, got (${this.normalScale.x}, ${this.normalScale.y})`,
+          `${OWNER}.lights[${i}] world position must be finite (in float32), got (${e[12]}, ${e[13]}, ${e[14]})`,
         );
       }
-      this.#active.forEach((light, i) => {
-        try {
-          light.validate();
-        } catch (error) {
-          throw error instanceof RangeError
-            ? new RangeError(`ShadingMaterial.lights[${i}]: ${error.message}`)
-            : error;
-        }
-        const e = light.matrixWorld.elements;
-        // Finite in float32, as uploaded (|coordinate| < 3.4e38).
-        if (![e[12], e[13], e[14]].every((c) => Number.isFinite(Math.fround(c)))) {
-          throw new RangeError(
-            `ShadingMaterial.lights[${i}] world position must be finite (in float32), got (${e[12]}, ${e[13]}, ${e[14]})`,
-          );
-        }
-      });
-    } catch (error) {
-      if (error instanceof RangeError) return error;
-      throw error;
-    }
-    return null;
+    });
   }
 
   /** Uploads the lights' uniforms; their positions in world space, or through `view` (world → view) when given. */
@@ -700,28 +458,20 @@ export class ShadingMaterial extends ShaderMaterial {
     // console.error as three reports its own errors, and the draw keeps the last good uniforms (lights new
     // since then are off) instead of uploading a NaN or throwing on every frame. Once fixed, the next problem
     // is reported again.
-    const error = this.#checkInPlace();
-    if (error !== null) {
-      if (error.message !== this.#reported) {
-        this.#reported = error.message;
-        console.error(`${error.message} (edited in place; drawing with the last valid values)`);
-      }
-      return;
-    }
-    this.#reported = null;
+    if (!checkEditedInPlace(this, OWNER, () => this.#checkLightsInPlace())) return;
     // three's lights light the material as they light three's own (BRDF_Lambert's 1/π, folded in here, once).
-    u.shadingKa.value.copy(this.#ka).multiplyScalar(RECIPROCAL_PI);
-    u.shadingKd.value.copy(this.#kd).multiplyScalar(RECIPROCAL_PI);
-    u.shadingKs.value.copy(this.#ks).multiplyScalar(RECIPROCAL_PI);
-    u.emissive.value.copy(this.#emissive);
+    u.shadingKa.value.copy(this.ka).multiplyScalar(RECIPROCAL_PI);
+    u.shadingKd.value.copy(this.kd).multiplyScalar(RECIPROCAL_PI);
+    u.shadingKs.value.copy(this.ks).multiplyScalar(RECIPROCAL_PI);
+    u.emissive.value.copy(this.emissive);
     const position: Float32Array = u.lightPosition.value;
     const diffuse: Float32Array = u.lightDiffuse.value;
     const specular: Float32Array = u.lightSpecular.value;
     const attenuation: Float32Array = u.lightAttenuation.value;
     const ambient: Float32Array = u.ambientTerm.value;
-    const ka = this.#ka;
-    const kd = this.#kd;
-    const ks = this.#ks;
+    const ka = this.ka;
+    const kd = this.kd;
+    const ks = this.ks;
     let ar = 0;
     let ag = 0;
     let ab = 0;
@@ -761,26 +511,9 @@ export class ShadingMaterial extends ShaderMaterial {
   /** Copy every option of `source` (lights are shared, not cloned). @returns `this`. */
   override copy(source: ShadingMaterial): this {
     super.copy(source);
-    this.#shading = source.shading;
-    this.#lighting = source.lighting;
-    this.#celBands = source.celBands;
-    this.#output = source.output;
-    this.#normalMatrix = source.normalMatrix;
-    this.#shininess = source.shininess;
-    this.#lights = source.phongLights;
-    this.#active = this.#lights;
-    this.#ka.copy(source.ka);
-    this.#kd.copy(source.kd);
-    this.#ks.copy(source.ks);
-    this.#emissive.copy(source.emissive);
-    this.#opacity = source.opacity;
-    this.map = source.map;
-    this.alphaMap = source.alphaMap;
-    this.emissiveMap = source.emissiveMap;
-    this.normalMap = source.normalMap;
-    this.normalMapType = source.normalMapType;
-    this.normalScale.copy(source.normalScale);
-    this.#attenuation = this.#lights.some((light) => light.attenuates);
+    copyShadingOptions(this, source);
+    this.#active = this.phongLights;
+    this.#attenuation = this.#active.some((light) => light.attenuates);
     this.defines = { ...source.defines };
     return this;
   }

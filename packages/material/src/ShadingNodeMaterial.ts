@@ -34,11 +34,7 @@ import {
   DoubleSide,
   Matrix3,
   NodeMaterial,
-  type NormalMapTypes,
   SRGBColorSpace,
-  TangentSpaceNormalMap,
-  type Texture,
-  Vector2,
 } from 'three/webgpu';
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { SPHERE_FLAG } from './geometryFlags.js';
@@ -53,29 +49,9 @@ import {
 } from './nodeLighting.js';
 import { normalMapped } from './nodeNormalMap.js';
 import { removeShadowed, shadowingLightNodes, shadowTerms, unshadowed } from './nodeShadows.js';
-import {
-  checkCelBands,
-  checkLighting,
-  checkNormalMatrix,
-  checkOutput,
-  checkPhongLights,
-  checkShading,
-  type NormalMatrixMode,
-  SHADING_DEFAULTS,
-  type Shading,
-  type ShadingOutput,
-} from './options.js';
+import { SHADING_DEFAULTS } from './options.js';
 import type { PhongLight } from './PhongLight.js';
-import type { ShadingMaterialOptions } from './ShadingMaterial.js';
-import type { Lighting } from './shade.js';
-import {
-  type ColorInput,
-  checkColorChannels,
-  checkNonNegative,
-  checkTexture,
-  checkUnit,
-  setColor,
-} from './validate.js';
+import * as shared from './shadingProperties.js';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
 type N = any;
@@ -87,7 +63,7 @@ export type { LightingSplit, Surface } from './nodeLighting.js';
  * surface properties by their names: `map`, `vertexColors`, `emissive`, `emissiveMap`, `opacity`,
  * `transparent`, `alphaTest`, `alphaMap`, `normalMap`, `normalScale`), with the same defaults and checks.
  */
-export type ShadingNodeMaterialOptions = ShadingMaterialOptions;
+export type ShadingNodeMaterialOptions = shared.ShadingMaterialOptions;
 
 /** An InstancedMesh's instance colour or a BatchedMesh's colour, or null. */
 function instanceTint(builder: N): N {
@@ -150,6 +126,9 @@ function packNormal(n: N): N {
   return n.mul(0.5).add(0.5);
 }
 
+/** The options' properties of {@link ShadingNodeMaterial} (installed from shadingProperties.ts). */
+export interface ShadingNodeMaterial extends shared.ShadingProperties {}
+
 /**
  * `ShadingMaterial`'s shading for three's `WebGPURenderer` (`three/webgpu`), on its WebGPU and its WebGL2
  * backend: the lecture's flat, Gouraud and Phong shading × Phong and Blinn-Phong lighting × cel bands, with the
@@ -195,6 +174,7 @@ function packNormal(n: N): N {
  * light.position.set(-5, 10, 20);
  * const material = new ShadingNodeMaterial({ shading: 'gouraud', lighting: 'blinn-phong', lights: [light] });
  */
+// biome-ignore lint/suspicious/noUnsafeDeclarationMerging: the options' accessors are installed on the prototype (installShadingProperties), typed by the interface.
 export class ShadingNodeMaterial extends NodeMaterial {
   /** three's type name. */
   static override get type(): string {
@@ -208,105 +188,26 @@ export class ShadingNodeMaterial extends NodeMaterial {
     return (this.constructor as typeof ShadingNodeMaterial).type;
   }
 
-  #shading: Shading = SHADING_DEFAULTS.shading;
-  #lighting: Lighting = SHADING_DEFAULTS.lighting;
-  #celBands: number = SHADING_DEFAULTS.celBands;
-  #output: ShadingOutput = SHADING_DEFAULTS.output;
-  #normalMatrix: NormalMatrixMode = SHADING_DEFAULTS.normalMatrix;
-  #lights: readonly PhongLight[] = Object.freeze([]);
-  readonly #ka = new Color(...SHADING_DEFAULTS.ka);
-  readonly #kd = new Color(...SHADING_DEFAULTS.kd);
-  readonly #ks = new Color(...SHADING_DEFAULTS.ks);
   // What the GPU draws with: ka, kd, ks as last found valid, checked and copied once per render.
   readonly #uniforms = {
     ka: uniform(new Color(...SHADING_DEFAULTS.ka)),
     kd: uniform(new Color(...SHADING_DEFAULTS.kd)),
     ks: uniform(new Color(...SHADING_DEFAULTS.ks)),
   };
-  // The message of the in-place problem last reported (null once the values are valid again).
-  #reported: string | null = null;
   readonly #shininessNode = uniform(SHADING_DEFAULTS.shininess);
-  readonly #emissive = new Color(0, 0, 0);
   // What the GPU adds: emissive as last found valid.
   readonly #emissiveNode: N = uniform(new Color(0, 0, 0));
-  #opacity = 1;
   // The warning that normalMap needs phong shading was given.
   #warnedNormalMap = false;
-
-  /**
-   * three's `map`: a colour texture (its `colorSpace` decoded to linear as three decodes it) whose texel
-   * multiplies ka and kd (not ks); its alpha multiplies the opacity. Sampled per fragment in every shading
-   * (gouraud and flat pass the ka/kd part and the ks part of their colours separately). Adding or removing it
-   * recompiles, swapping it for another texture does not. @default null
-   */
-  map: Texture | null = null;
-  /** three's `alphaMap`: its green channel multiplies the alpha. @default null */
-  alphaMap: Texture | null = null;
-  /** three's `emissiveMap`: its texel (linear) multiplies {@link ShadingNodeMaterial.emissive}. @default null */
-  emissiveMap: Texture | null = null;
-  /**
-   * three's `normalMap` (tangent space by default, see `normalMapType`): perturbs the material's own normal per
-   * fragment through three's tangent frame from screen-space derivatives (a `tangent` attribute is not used), as
-   * `ShadingMaterial` does; phong shading only (gouraud and flat shading ignore it, with one console warning).
-   * @default null
-   */
-  normalMap: Texture | null = null;
-  /** three's `normalMapType`: `TangentSpaceNormalMap` or `ObjectSpaceNormalMap`. @default TangentSpaceNormalMap */
-  normalMapType: NormalMapTypes = TangentSpaceNormalMap;
-  /** three's `normalScale`: scales the tangent-space normal map's x and y (finite). @default Vector2(1, 1) */
-  readonly normalScale = new Vector2(1, 1);
 
   /**
    * @param options - Shading, lighting, reflectances and lights; each one omitted takes its default (see
    *   {@link ShadingNodeMaterialOptions}).
    */
-  constructor({
-    shading = SHADING_DEFAULTS.shading,
-    lighting = SHADING_DEFAULTS.lighting,
-    celBands = SHADING_DEFAULTS.celBands,
-    ka = SHADING_DEFAULTS.ka,
-    kd = SHADING_DEFAULTS.kd,
-    ks = SHADING_DEFAULTS.ks,
-    shininess = SHADING_DEFAULTS.shininess,
-    lights = [],
-    map = null,
-    vertexColors = false,
-    emissive = 0,
-    emissiveMap = null,
-    opacity = 1,
-    transparent = false,
-    alphaTest = 0,
-    alphaMap = null,
-    normalMap = null,
-    normalScale = new Vector2(1, 1),
-    output = SHADING_DEFAULTS.output,
-    normalMatrix = SHADING_DEFAULTS.normalMatrix,
-  }: ShadingNodeMaterialOptions = {}) {
+  constructor(options: ShadingNodeMaterialOptions = {}) {
     super();
     this.lights = true;
-    this.shading = shading;
-    this.lighting = lighting;
-    this.celBands = celBands;
-    this.output = output;
-    this.normalMatrix = normalMatrix;
-    this.ka = ka;
-    this.kd = kd;
-    this.ks = ks;
-    this.shininess = shininess;
-    this.phongLights = lights;
-    this.map = checkTexture(`${this.#owner}.map`, map);
-    this.vertexColors = vertexColors === true;
-    this.emissive = emissive;
-    this.emissiveMap = checkTexture(`${this.#owner}.emissiveMap`, emissiveMap);
-    this.opacity = opacity;
-    this.transparent = transparent === true;
-    this.alphaTest = alphaTest;
-    this.alphaMap = checkTexture(`${this.#owner}.alphaMap`, alphaMap);
-    this.normalMap = checkTexture(`${this.#owner}.normalMap`, normalMap);
-    if (!(normalScale instanceof Vector2)) {
-      throw new TypeError(`${this.#owner}.normalScale must be a THREE.Vector2, got ${String(normalScale)}`);
-    }
-    this.normalScale.copy(normalScale);
+    shared.applyShadingOptions(this, this.#owner, options);
     this.#uniforms.ka.onRenderUpdate(() => {
       this.#refresh();
     });
@@ -319,160 +220,25 @@ export class ShadingNodeMaterial extends NodeMaterial {
    * the last valid values instead of uploading a NaN.
    */
   #refresh(): undefined {
-    try {
-      checkColorChannels(`${this.#owner}.ka`, this.#ka);
-      checkColorChannels(`${this.#owner}.kd`, this.#kd);
-      checkColorChannels(`${this.#owner}.ks`, this.#ks);
-      checkColorChannels(`${this.#owner}.emissive`, this.#emissive);
-    } catch (error) {
-      if (!(error instanceof RangeError)) throw error;
-      if (error.message !== this.#reported) {
-        console.error(`${error.message} (edited in place; drawing with the last valid values)`);
-      }
-      this.#reported = error.message;
-      return;
-    }
-    this.#reported = null;
-    (this.#uniforms.ka.value as Color).copy(this.#ka);
-    (this.#uniforms.kd.value as Color).copy(this.#kd);
-    (this.#uniforms.ks.value as Color).copy(this.#ks);
-    (this.#emissiveNode.value as Color).copy(this.#emissive);
+    if (!shared.checkEditedInPlace(this, this.#owner)) return;
+    (this.#uniforms.ka.value as Color).copy(this.ka);
+    (this.#uniforms.kd.value as Color).copy(this.kd);
+    (this.#uniforms.ks.value as Color).copy(this.ks);
+    (this.#emissiveNode.value as Color).copy(this.emissive);
   }
 
-  /**
-   * three's `emissive`: linear RGB added to the lit colour outside the lighting, before fog and tone mapping
-   * (channels finite ≥ 0; set it with a {@link ColorInput}, a number being a grey level). A uniform: changing
-   * it never recompiles. @default Color(0, 0, 0)
-   */
-  get emissive(): Color {
-    return this.#emissive;
-  }
-  set emissive(value: ColorInput) {
-    setColor(`${this.#owner}.emissive`, this.#emissive, value);
+  static {
+    // The options' accessors (shadingProperties.ts), and what a change does here: a rebuild for the variant and
+    // the lights, the shininess uniform.
+    shared.installShadingProperties(ShadingNodeMaterial, {
+      owner: (material) => (material.constructor as typeof ShadingNodeMaterial).type,
+      change: (material, kind, changed) => (material as ShadingNodeMaterial).#optionChanged(kind, changed),
+    });
   }
 
-  /** three's `opacity`, in 0 … 1 (a RangeError otherwise): the alpha, blended when `transparent`. @default 1 */
-  override get opacity(): number {
-    return #opacity in this ? this.#opacity : 1;
-  }
-  override set opacity(value: number) {
-    // three's Material constructor assigns the default before this class's fields exist.
-    if (!(#opacity in this)) return;
-    this.#opacity = checkUnit(`${this.#owner}.opacity`, value);
-  }
-
-  /** three's `alphaTest`, in 0 … 1 (a RangeError otherwise): alpha below it is discarded; 0 = off. @default 0 */
-  override get alphaTest(): number {
-    return super.alphaTest;
-  }
-  override set alphaTest(value: number) {
-    super.alphaTest = checkUnit(`${this.#owner}.alphaTest`, value);
-  }
-
-  /** Where the lighting is evaluated: `'flat'`, `'gouraud'` or `'phong'`. @default 'phong' */
-  get shading(): Shading {
-    return this.#shading;
-  }
-  set shading(value: Shading) {
-    const checked = checkShading(this.#owner, value);
-    if (checked !== this.#shading) this.needsUpdate = true;
-    this.#shading = checked;
-  }
-
-  /** The lighting equation: `'phong'` or `'blinn-phong'`. @default 'phong' */
-  get lighting(): Lighting {
-    return this.#lighting;
-  }
-  set lighting(value: Lighting) {
-    const checked = checkLighting(this.#owner, value);
-    if (checked !== this.#lighting) this.needsUpdate = true;
-    this.#lighting = checked;
-  }
-
-  /**
-   * Cel shading: 0 = off; N in 2 … 255 quantises each light's diffuse cosine to N shades
-   * (min(⌊cos·N⌋, N−1)/(N−1)) and its specular to a hard-edged highlight (1 where spec ≥ 0.5). @default 0
-   */
-  get celBands(): number {
-    return this.#celBands;
-  }
-  set celBands(value: number) {
-    const checked = checkCelBands(this.#owner, value);
-    if (checked !== this.#celBands) this.needsUpdate = true;
-    this.#celBands = checked;
-  }
-
-  /**
-   * What the material draws: `'color'`, or `'ambient'`, `'diffuse'`, `'specular'`, `'attenuation'` or
-   * `'normal'` alone, a debugging aid (exactly what each shows: {@link ShadingOutput}). Built only when not
-   * `'color'` (a branch when three builds the material): changing it recompiles. @default 'color'
-   */
-  get output(): ShadingOutput {
-    return this.#output;
-  }
-  set output(value: ShadingOutput) {
-    const checked = checkOutput(this.#owner, value);
-    if (checked !== this.#output) this.needsUpdate = true;
-    this.#output = checked;
-  }
-
-  /**
-   * How normals go to world space: `'inverse-transpose'` (the normal matrix, right) or `'model'` (the model
-   * matrix itself, the lecture's wrong way under a non-uniform scale), a teaching aid (see
-   * {@link NormalMatrixMode}). Built only when `'model'`: changing it recompiles. @default 'inverse-transpose'
-   */
-  get normalMatrix(): NormalMatrixMode {
-    return this.#normalMatrix;
-  }
-  set normalMatrix(value: NormalMatrixMode) {
-    const checked = checkNormalMatrix(this.#owner, value);
-    if (checked !== this.#normalMatrix) this.needsUpdate = true;
-    this.#normalMatrix = checked;
-  }
-
-  /** ka, ambient reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.6, 0.35, 0.2) */
-  get ka(): Color {
-    return this.#ka;
-  }
-  set ka(value: ColorInput) {
-    setColor(`${this.#owner}.ka`, this.#ka, value);
-  }
-
-  /** kd, diffuse reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.6, 0.35, 0.2) */
-  get kd(): Color {
-    return this.#kd;
-  }
-  set kd(value: ColorInput) {
-    setColor(`${this.#owner}.kd`, this.#kd, value);
-  }
-
-  /** ks, specular reflectance (linear RGB, channels finite ≥ 0; set with a `ColorInput`). @default Color(0.5, 0.5, 0.5) */
-  get ks(): Color {
-    return this.#ks;
-  }
-  set ks(value: ColorInput) {
-    setColor(`${this.#owner}.ks`, this.#ks, value);
-  }
-
-  /** α, the specular exponent (finite, ≥ 0; 0⁰ = 1). A uniform: changing it never recompiles. @default 32 */
-  get shininess(): number {
-    return this.#shininessNode.value as number;
-  }
-  set shininess(value: number) {
-    this.#shininessNode.value = checkNonNegative(`${this.#owner}.shininess`, value);
-  }
-
-  /**
-   * The PhongLights (the `lights` option; three's `Material.lights` is the flag for three's lights). Empty (the
-   * default): every visible PhongLight in the scene when the material is compiled. A frozen copy; assigning
-   * recompiles. @default []
-   */
-  get phongLights(): readonly PhongLight[] {
-    return this.#lights;
-  }
-  set phongLights(value: readonly PhongLight[]) {
-    this.#lights = checkPhongLights(this.#owner, value);
-    this.needsUpdate = true;
+  #optionChanged(kind: shared.PropertyChange, changed: boolean): void {
+    if (kind === 'shininess') this.#shininessNode.value = this.shininess;
+    else if (changed) this.needsUpdate = true;
   }
 
   /**
@@ -502,7 +268,11 @@ export class ShadingNodeMaterial extends NodeMaterial {
     );
     // The scene's PhongLights come with three's lights (their registered light node); the listed ones, which
     // need not be in the scene, as the material's own lightings (the model keeps only them then).
-    const node = lightingContext(builder.lightsNode, model, this.#lights.map(phongLightNode) as never) as N;
+    const node = lightingContext(
+      builder.lightsNode,
+      model,
+      this.phongLights.map(phongLightNode) as never,
+    ) as N;
     const context: Record<string, unknown> = {};
     if (positionView !== undefined) context.positionView = positionView;
     // Lit in the vertex stage, three's shadow-casting lights light unshadowed; the fragment stage shadows them.
@@ -564,17 +334,17 @@ export class ShadingNodeMaterial extends NodeMaterial {
 
   /** Builds the lighting of the variant (three calls it when it compiles the material), plus the emissive. */
   override setupLighting(builder: N): N {
-    if (this.normalMap !== null && this.#shading !== 'phong' && !this.#warnedNormalMap) {
+    if (this.normalMap !== null && this.shading !== 'phong' && !this.#warnedNormalMap) {
       this.#warnedNormalMap = true;
       console.warn(
-        `${this.#owner}: normalMap needs a per-fragment normal (shading 'phong'); ${this.#shading} shading ignores it`,
+        `${this.#owner}: normalMap needs a per-fragment normal (shading 'phong'); ${this.shading} shading ignores it`,
       );
     }
-    if (this.#output !== 'color') {
+    if (this.output !== 'color') {
       const lit = this.#lit(builder);
       // The data outputs are written as is, as three's MeshNormalNodeMaterial writes its normal (decoded from
       // sRGB here so that the output conversion gives the value back); the terms leave the emissive out.
-      const data = this.#output === 'normal' || this.#output === 'attenuation';
+      const data = this.output === 'normal' || this.output === 'attenuation';
       return data ? (colorSpaceToWorking as N)(vec4(lit, 1), SRGBColorSpace).rgb : lit;
     }
     const emissive: N =
@@ -586,7 +356,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
 
   /** three's fog, on the colour only (the term, attenuation and normal outputs are not fogged). */
   override setupFog(builder: N, outputNode: N): N {
-    return this.#output === 'color' ? super.setupFog(builder, outputNode) : outputNode;
+    return this.output === 'color' ? super.setupFog(builder, outputNode) : outputNode;
   }
 
   /** The lit colour of the variant: phong or flat by derivatives per fragment, gouraud and flat per vertex. */
@@ -596,17 +366,17 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const towardsViewer = (p: N): N => (orthographic ? vec3(0, 0, 1) : towardsEye(p));
     const hasNormal = geometry.getAttribute('normal') !== undefined;
     const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData?.[SPHERE_FLAG] === true;
-    if (this.#shading !== 'flat' && !hasNormal && !sphere) {
+    if (this.shading !== 'flat' && !hasNormal && !sphere) {
       throw new TypeError(
-        `${this.#owner}: ${this.#shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
+        `${this.#owner}: ${this.shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
       );
     }
     // Per fragment, diffuseColor.rgb (texel × vertex colour × instance colour) multiplies ka and kd.
     const fragmentTint = { tint: (diffuseColor as N).rgb };
     const localNormal: N = hasNormal ? normalLocal : positionLocal;
-    const normalToView = this.#normalMatrix === 'model' ? normalToViewByModel : normalToViewRobust;
-    const packed = this.#output === 'normal';
-    if (this.#shading === 'phong') {
+    const normalToView = this.normalMatrix === 'model' ? normalToViewByModel : normalToViewRobust;
+    const packed = this.output === 'normal';
+    if (this.shading === 'phong') {
       const v = onStack(towardsViewer(positionView));
       // Unit vertex normals interpolated (zero where the matrix flattens the surface away); a back face
       // (DoubleSide, BackSide) is lit with its normal turned round, as three's normalView does.
@@ -625,7 +395,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
         : this.map !== null
           ? (materialReference('map', 'texture') as N).rgb
           : null;
-    const face = this.#shading === 'flat' ? flatFace(builder, geometry, this.#owner) : null;
+    const face = this.shading === 'flat' ? flatFace(builder, geometry, this.#owner) : null;
     const vertexTint = this.#vertexTint(builder, face !== null && geometry.index === null);
     // The vertex stage cannot tell a front face from a back one: it lights the side(s) the material draws, the
     // back with the normal turned round, and the fragment takes the colour of the side it is on.
@@ -658,7 +428,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const backColour = shadowed(colour(interpolate(front.back), front.backSpecular), 'back');
       return select(frontFacing, frontColour, backColour);
     };
-    if (this.#shading === 'gouraud') {
+    if (this.shading === 'gouraud') {
       const v = towardsViewer(positionView);
       const n = unitOr(normalToView(localNormal), v);
       return sided((sign) => ({ n: n.mul(sign), v }), undefined, varying);
@@ -733,25 +503,9 @@ export class ShadingNodeMaterial extends NodeMaterial {
   /** Copy every option of `source` (lights are shared, not cloned). @returns `this`. */
   override copy(source: ShadingNodeMaterial): this {
     super.copy(source);
-    this.#shading = source.shading;
-    this.#lighting = source.lighting;
-    this.#celBands = source.celBands;
-    this.#output = source.output;
-    this.#normalMatrix = source.normalMatrix;
-    this.#lights = source.phongLights;
-    this.#ka.copy(source.ka);
-    this.#kd.copy(source.kd);
-    this.#ks.copy(source.ks);
-    this.#emissive.copy(source.emissive);
-    this.#opacity = source.opacity;
-    this.map = source.map;
-    this.alphaMap = source.alphaMap;
-    this.emissiveMap = source.emissiveMap;
-    this.normalMap = source.normalMap;
-    this.normalMapType = source.normalMapType;
-    this.normalScale.copy(source.normalScale);
+    shared.copyShadingOptions(this, source);
     this.#refresh();
-    this.#shininessNode.value = source.shininess;
+    this.#shininessNode.value = this.shininess;
     return this;
   }
 }

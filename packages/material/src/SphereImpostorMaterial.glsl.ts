@@ -3,7 +3,6 @@
 // (lightingChunks.glsl.ts), and the hit is clipped, tone-mapped, converted and fogged by the same chunks as a mesh
 // (shadingChunks.glsl.ts). These are the material's only shaders (set once; the light count is a define).
 import { lightingChunk } from './lightingChunks.glsl.js';
-import { outputFeatures } from './outputChunks.glsl.js';
 import { clippingFragment, instanceChunk, outputFragment, sceneFeatures } from './shadingChunks.glsl.js';
 
 /**
@@ -124,7 +123,6 @@ uniform float fogFar;
 vec3 vClipPosition; // the hit in view space, negated (as three's clipping chunks read it)
 uniform vec4 clippingPlanes[ NUM_CLIPPING_PLANES ];
 #endif
-${outputFeatures}
 ${lightingChunk}
 void main() {
 #ifdef IMPOSTOR_INSTANCED

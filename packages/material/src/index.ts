@@ -45,6 +45,7 @@ export {
   threeDistanceFalloff,
 } from './shade.js';
 export { SHADING_MATERIAL_OPTION_KEYS } from './shadingOptionsOf.js';
+export type { ShadingProperties } from './shadingProperties.js';
 export { type SwapMaterialsOptions, swapMaterials } from './swapMaterials.js';
 export type { SkippedMaterial, SwappedMaterials } from './swapWith.js';
 export { toShadingMaterial } from './toShadingMaterial.js';

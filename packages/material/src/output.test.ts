@@ -22,7 +22,7 @@ function draw(material: ShadingMaterial): void {
 /** The defines of the output and normal-matrix options. */
 function optionDefines(material: ShadingMaterial): string[] {
   return Object.keys(material.defines).filter(
-    (k) => k.startsWith('SHADING_OUTPUT') || k === 'SHADING_MODEL_NORMALS',
+    (k) => k.startsWith('SHADING_OUTPUT') || k.startsWith('SHADING_NO_') || k === 'SHADING_MODEL_NORMALS',
   );
 }
 
@@ -95,7 +95,13 @@ describe('ShadingMaterial output and normalMatrix defines', () => {
     expect(optionDefines(m)).toEqual([]);
     for (const output of SHADING_OUTPUTS.filter((o) => o !== 'color')) {
       m.output = output;
-      expect(optionDefines(m)).toEqual([`SHADING_OUTPUT_${output.toUpperCase()}`]);
+      const own = `SHADING_OUTPUT_${output.toUpperCase()}`;
+      expect(optionDefines(m)).toContain(own);
+      expect(optionDefines(m).filter((k) => k.startsWith('SHADING_OUTPUT_') && k !== own)).toEqual(
+        output === 'attenuation' || output === 'normal'
+          ? ['SHADING_OUTPUT_TERM', 'SHADING_OUTPUT_DATA']
+          : ['SHADING_OUTPUT_TERM'],
+      );
     }
     m.output = 'color';
     expect(m.defines).toEqual(colour);
@@ -126,7 +132,13 @@ describe('ShadingMaterial output and normalMatrix defines', () => {
     const source = new ShadingMaterial({ output: 'attenuation', normalMatrix: 'model' });
     const target = new ShadingMaterial().copy(source);
     draw(target);
-    expect(optionDefines(target)).toEqual(['SHADING_OUTPUT_ATTENUATION', 'SHADING_MODEL_NORMALS']);
+    expect(optionDefines(target)).toEqual([
+      'SHADING_OUTPUT_ATTENUATION',
+      'SHADING_OUTPUT_TERM',
+      'SHADING_OUTPUT_DATA',
+      'SHADING_NO_AMBIENT',
+      'SHADING_MODEL_NORMALS',
+    ]);
   });
 });
 

@@ -1,29 +1,9 @@
-// What ShadingMaterial draws (its `output` option, a debugging aid): the macros the other chunks test, derived
-// from the material's one define SHADING_OUTPUT_<NAME> (none for the colour, so its program is unchanged).
-
-/**
- * The output's macros, from `SHADING_OUTPUT_AMBIENT`, `_DIFFUSE`, `_SPECULAR`, `_ATTENUATION` or `_NORMAL`:
- * - `SHADING_OUTPUT_TERM`: not the colour (no emissive, no fog);
- * - `SHADING_OUTPUT_DATA`: attenuation or normal (written as is: no texel, tone mapping or colour space);
- * - `SHADING_NO_AMBIENT`, `SHADING_NO_DIFFUSE`, `SHADING_NO_SPECULAR`: the terms the lighting leaves out.
- */
-export const outputFeatures = /* glsl */ `
-#if defined( SHADING_OUTPUT_AMBIENT ) || defined( SHADING_OUTPUT_DIFFUSE ) || defined( SHADING_OUTPUT_SPECULAR ) || defined( SHADING_OUTPUT_ATTENUATION ) || defined( SHADING_OUTPUT_NORMAL )
-#define SHADING_OUTPUT_TERM
-#endif
-#if defined( SHADING_OUTPUT_ATTENUATION ) || defined( SHADING_OUTPUT_NORMAL )
-#define SHADING_OUTPUT_DATA
-#endif
-#if defined( SHADING_OUTPUT_TERM ) && ! defined( SHADING_OUTPUT_AMBIENT )
-#define SHADING_NO_AMBIENT
-#endif
-#if defined( SHADING_OUTPUT_AMBIENT ) || defined( SHADING_OUTPUT_SPECULAR )
-#define SHADING_NO_DIFFUSE
-#endif
-#if defined( SHADING_OUTPUT_AMBIENT ) || defined( SHADING_OUTPUT_DIFFUSE )
-#define SHADING_NO_SPECULAR
-#endif
-`;
+// What ShadingMaterial draws (its `output` option, a debugging aid). The material defines, for an output other
+// than the colour (none for the colour, so its program is unchanged):
+// - SHADING_OUTPUT_<NAME> (AMBIENT, DIFFUSE, SPECULAR, ATTENUATION or NORMAL), and SHADING_OUTPUT_TERM;
+// - SHADING_OUTPUT_DATA: attenuation or normal (written as is: no texel, tone mapping or colour space);
+// - SHADING_NO_AMBIENT, SHADING_NO_DIFFUSE, SHADING_NO_SPECULAR: the terms the lighting leaves out.
+// Emissive and fog are left out of every output but the colour.
 
 /**
  * In the lighting chunk: how many direct lights the attenuation output averages over (the PhongLights and
