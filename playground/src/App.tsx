@@ -6,6 +6,7 @@ import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/lay
 import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
+import { AdaptiveTool } from './learn/adaptiveTool';
 import { AttenuationTool } from './learn/attenuationTool';
 import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
@@ -272,7 +273,8 @@ export function App() {
           </a>{' '}
           · <ModelPicker model={model} /> · <CopyCodeButtons state={state} /> · learn:{' '}
           <ProfileTool viewerRef={viewerRef} state={state} />{' '}
-          <AttenuationTool viewerRef={viewerRef} state={state} />
+          <AttenuationTool viewerRef={viewerRef} state={state} />{' '}
+          <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
         </p>
       </main>
       <SidePanel

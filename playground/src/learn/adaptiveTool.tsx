@@ -7,6 +7,7 @@
  * the single view on WebGL only, and turns itself off otherwise.
  */
 import { type RefObject, useEffect, useRef, useState } from 'react';
+import { createPortal } from 'react-dom';
 import type { Viewer } from '../engine/viewer/Viewer';
 import { isEmbedded } from '../state/embed';
 import type { PlaygroundState } from '../state/schema';
@@ -23,22 +24,6 @@ export function heatColor(key: string): string {
   if (key.startsWith('flat')) return key.includes('derivatives') ? '#c06020' : '#f0a040';
   return '#888';
 }
-
-/** The toggle: over the canvas, at its right, under the other tools' toggles. */
-const BUTTON = {
-  position: 'absolute',
-  right: 8,
-  top: 64,
-  width: 132,
-  padding: '3px 6px',
-  whiteSpace: 'nowrap',
-  background: '#2a2f36',
-  color: '#ddd',
-  border: '1px solid #444',
-  borderRadius: 3,
-  font: '12px system-ui, sans-serif',
-  cursor: 'pointer',
-} as const;
 
 /** Budgets on the slider: 1 … 64 levels, in steps of a quarter power of two. */
 const budgetAt = (step: number) => Math.round(2 ** (step / 4) * 100) / 100;
@@ -131,93 +116,92 @@ export function AdaptiveTool({
     }
     setOn(value);
   };
+  // The toggle sits in the hint line under the view; the heat map and the panel go over the canvas, in the stage.
+  const stage = viewerRef.current?.canvas.parentElement ?? null;
+  const panel = (
+    <section
+      style={{ ...LEARN_PANEL, top: 8, maxHeight: 'calc(100% - 40px)', font: '12px system-ui, sans-serif' }}
+      aria-label="Adaptive shading"
+      data-testid="adaptive-panel"
+    >
+      <label>
+        <input
+          type="checkbox"
+          checked={on}
+          data-testid="adaptive-toggle"
+          onChange={(e) => toggle(e.target.checked)}
+        />{' '}
+        adaptive
+      </label>{' '}
+      <label>
+        <input type="checkbox" checked={heat} onChange={(e) => setHeat(e.target.checked)} /> heat map
+      </label>
+      <label style={{ display: 'block' }}>
+        budget{' '}
+        <input
+          type="range"
+          min={0}
+          max={24}
+          step={1}
+          value={step}
+          data-testid="adaptive-budget"
+          aria-label="error budget, 8-bit sRGB levels"
+          onChange={(e) => setStep(Number(e.target.value))}
+        />{' '}
+        <output data-testid="adaptive-budget-value">{budget}</output> levels
+      </label>
+      {on && unavailable && <p data-testid="adaptive-unavailable">{unavailable}</p>}
+      <dl className="stats" style={{ position: 'static' }} data-testid="adaptive-stats">
+        <dt>frame (CPU), adaptive</dt>
+        <dd data-testid="adaptive-frame-on">{frameMs.on === null ? '—' : `${frameMs.on.toFixed(2)} ms`}</dd>
+        <dt>frame (CPU), without</dt>
+        <dd>{frameMs.off === null ? '—' : `${frameMs.off.toFixed(2)} ms`}</dd>
+        <dt>measured error</dt>
+        <dd data-testid="adaptive-error">
+          {measured
+            ? `p99 ${measured.p99}, max ${measured.max}, ${(100 * measured.over).toFixed(2)} % over ${measured.budget}`
+            : '—'}
+        </dd>
+      </dl>
+      {active && (
+        <button type="button" onClick={() => setMeasured(run.current?.measure() ?? null)}>
+          measure again
+        </button>
+      )}
+      <ul style={{ listStyle: 'none', padding: 0, margin: '4px 0 0' }} data-testid="adaptive-choices">
+        {Object.entries(choices)
+          .sort((a, b) => b[1] - a[1])
+          .map(([key, n]) => (
+            <li key={key}>
+              <span style={{ display: 'inline-block', width: 10, height: 10, background: heatColor(key) }} />{' '}
+              {key}: {n}
+            </li>
+          ))}
+      </ul>
+    </section>
+  );
   return (
     <>
-      <canvas
-        ref={overlay}
-        data-testid="adaptive-heatmap"
-        style={{ position: 'absolute', inset: 0, width: '100%', height: '100%', pointerEvents: 'none' }}
-      />
       <button
         type="button"
-        style={{ ...BUTTON, ...(open ? { background: '#3d5a80' } : {}) }}
         aria-pressed={open}
         title="Let AdaptiveShading choose each object's shading and detail under an error budget"
         onClick={() => setOpen(!open)}
       >
         adaptive shading
       </button>
-      {open && (
-        <section
-          style={{
-            ...LEARN_PANEL,
-            top: 92,
-            maxHeight: 'calc(100% - 100px)',
-            font: '12px system-ui, sans-serif',
-          }}
-          aria-label="Adaptive shading"
-          data-testid="adaptive-panel"
-        >
-          <label>
-            <input
-              type="checkbox"
-              checked={on}
-              data-testid="adaptive-toggle"
-              onChange={(e) => toggle(e.target.checked)}
-            />{' '}
-            adaptive
-          </label>{' '}
-          <label>
-            <input type="checkbox" checked={heat} onChange={(e) => setHeat(e.target.checked)} /> heat map
-          </label>
-          <label style={{ display: 'block' }}>
-            budget{' '}
-            <input
-              type="range"
-              min={0}
-              max={24}
-              step={1}
-              value={step}
-              data-testid="adaptive-budget"
-              aria-label="error budget, 8-bit sRGB levels"
-              onChange={(e) => setStep(Number(e.target.value))}
-            />{' '}
-            <output data-testid="adaptive-budget-value">{budget}</output> levels
-          </label>
-          {on && unavailable && <p data-testid="adaptive-unavailable">{unavailable}</p>}
-          <dl className="stats" style={{ position: 'static' }} data-testid="adaptive-stats">
-            <dt>frame (CPU), adaptive</dt>
-            <dd data-testid="adaptive-frame-on">
-              {frameMs.on === null ? '—' : `${frameMs.on.toFixed(2)} ms`}
-            </dd>
-            <dt>frame (CPU), without</dt>
-            <dd>{frameMs.off === null ? '—' : `${frameMs.off.toFixed(2)} ms`}</dd>
-            <dt>measured error</dt>
-            <dd data-testid="adaptive-error">
-              {measured
-                ? `p99 ${measured.p99}, max ${measured.max}, ${(100 * measured.over).toFixed(2)} % over ${measured.budget}`
-                : '—'}
-            </dd>
-          </dl>
-          {active && (
-            <button type="button" onClick={() => setMeasured(run.current?.measure() ?? null)}>
-              measure again
-            </button>
-          )}
-          <ul style={{ listStyle: 'none', padding: 0, margin: '4px 0 0' }} data-testid="adaptive-choices">
-            {Object.entries(choices)
-              .sort((a, b) => b[1] - a[1])
-              .map(([key, n]) => (
-                <li key={key}>
-                  <span
-                    style={{ display: 'inline-block', width: 10, height: 10, background: heatColor(key) }}
-                  />{' '}
-                  {key}: {n}
-                </li>
-              ))}
-          </ul>
-        </section>
-      )}
+      {stage &&
+        active &&
+        heat &&
+        createPortal(
+          <canvas
+            ref={overlay}
+            data-testid="adaptive-heatmap"
+            style={{ position: 'absolute', inset: 0, width: '100%', height: '100%', pointerEvents: 'none' }}
+          />,
+          stage,
+        )}
+      {stage && open && createPortal(panel, stage)}
     </>
   );
 }
