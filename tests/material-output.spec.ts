@@ -100,6 +100,10 @@ for (const renderer of RENDERERS) {
           // Three 8-bit values each rounded once: their sum is within 1.5/255 of the colour's (in linear).
           expect(r.sum.compared, lighting).toBeGreaterThan(300);
           expect(r.sum.max, `${lighting} sum: ${JSON.stringify(r.sum)}`).toBeLessThanOrEqual(2);
+          const worst = Object.entries(r.checks).map(([o, c]) => `${o} ${c.max.toFixed(2)}`);
+          console.log(
+            `${renderer} ${lights} ${shading} ${lighting}: max |GPU − CPU| ${worst.join(', ')}; sum ${r.sum.max}`,
+          );
         }
       });
     }
