@@ -1,0 +1,162 @@
+// A fresh app's node_modules, installed once from the packed tarballs and shared: by every spec and worker of a
+// Playwright run that asks for the same tarballs and dependencies, and by later runs while they stay the same
+// (the folder is named by a hash of the tarballs' bytes and the dependency list). A spec makes its own app folder
+// and links its node_modules here, so no spec pays for a second `npm install` of the same app
+// (tests/playground-copy-code.spec.ts; tests/pack.spec.ts can take its R3F app's install from here too).
+import { spawn, spawnSync } from 'node:child_process';
+import { createHash } from 'node:crypto';
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+
+/** Where the shared installs live. */
+export const INSTALLS = join(tmpdir(), 'shadelab-pack-apps');
+
+/** An install not used for this long is removed by the next {@link installedApp} (ms). */
+const STALE_MS = 24 * 3600 * 1000;
+/** A lock older than this is taken to be left by a killed run (ms). */
+const LOCK_MS = 15 * 60 * 1000;
+
+/**
+ * Run a command; resolves with its output, rejects with the output when it fails.
+ * @param {string} cmd @param {string[]} args @param {string} cwd @returns {Promise<string>}
+ */
+export function run(cmd, args, cwd) {
+  return new Promise((resolve, reject) => {
+    const child = spawn(cmd, args, { cwd, env: { ...process.env, CI: '1' } });
+    let out = '';
+    child.stdout.on('data', (d) => {
+      out += d;
+    });
+    child.stderr.on('data', (d) => {
+      out += d;
+    });
+    child.on('error', reject);
+    child.on('close', (code) => {
+      if (code === 0) resolve(out);
+      else reject(new Error(`\`${cmd} ${args.join(' ')}\` in ${cwd} failed with exit code ${code}:\n${out}`));
+    });
+  });
+}
+
+/**
+ * `npm pack` the packages `folders` (under packages/) as they are built now (their dist/, from `npx tsc -b`),
+ * without rebuilding them: another spec may be packing them at the same time (scripts/pack.mjs empties dist/
+ * first). A tarball missing the build of one of its sources is packed again, up to `tries` times, 5 s apart.
+ * @param {string} outDir @param {readonly string[]} folders @param {number} [tries]
+ * @returns {Promise<{ name: string; tarball: string }[]>}
+ */
+export async function packBuilt(outDir, folders, tries = 24) {
+  mkdirSync(outDir, { recursive: true });
+  const packed = [];
+  for (const folder of folders) {
+    for (let attempt = 1; ; attempt++) {
+      const r = spawnSync(
+        'npm',
+        [
+          'pack',
+          `./packages/${folder}`,
+          '--pack-destination',
+          outDir,
+          '--json',
+          '--ignore-scripts',
+          '--loglevel',
+          'error',
+        ],
+        { cwd: repo, encoding: 'utf8', maxBuffer: 64 * 1024 * 1024 },
+      );
+      if (r.status !== 0) throw new Error(`npm pack packages/${folder} failed:\n${r.stdout}\n${r.stderr}`);
+      const [info] = JSON.parse(r.stdout);
+      /** @type {string[]} */
+      const files = info.files.map((/** @type {{ path: string }} */ f) => f.path);
+      const missing = files
+        .filter((f) => /^src\/[^/]+\.(ts|tsx)$/.test(f) && !/\.test\.tsx?$/.test(f) && !f.endsWith('.d.ts'))
+        .map((f) => f.replace(/^src\/(.*)\.tsx?$/, 'dist/$1.js'))
+        .filter((js) => !files.includes(js));
+      if (missing.length === 0) {
+        packed.push({ name: info.name, tarball: join(outDir, info.filename) });
+        break;
+      }
+      if (attempt >= tries) {
+        throw new Error(
+          `packages/${folder} is not built (${missing.slice(0, 3).join(', ')} missing): run \`npx tsc -b\``,
+        );
+      }
+      await new Promise((done) => setTimeout(done, 5000));
+    }
+  }
+  return packed;
+}
+
+/**
+ * The folder holding `node_modules` for an app with `dependencies` (name → range) and the `tarballs`, installed
+ * once (`npm install --prefer-offline`) and shared; the caller links its app's node_modules to
+ * `<folder>/node_modules`. Two callers at once: one installs, the other waits for it.
+ * @param {{ dependencies: Record<string, string>; tarballs: { name: string; tarball: string }[] }} spec
+ * @returns {Promise<string>}
+ */
+export async function installedApp({ dependencies, tarballs }) {
+  mkdirSync(INSTALLS, { recursive: true });
+  const hash = createHash('sha256').update(JSON.stringify(dependencies));
+  for (const { name, tarball } of [...tarballs].sort((a, b) => a.name.localeCompare(b.name))) {
+    hash.update(name).update(readFileSync(tarball));
+  }
+  const dir = join(INSTALLS, hash.digest('hex').slice(0, 16));
+  const done = join(dir, '.installed');
+  const lock = `${dir}.lock`;
+  for (;;) {
+    if (existsSync(done)) {
+      writeFileSync(done, new Date().toISOString()); // used now: not stale
+      return dir;
+    }
+    try {
+      mkdirSync(lock); // atomic: only one caller gets it
+      break;
+    } catch {
+      const since = statSync(lock, { throwIfNoEntry: false })?.mtimeMs ?? Date.now();
+      if (Date.now() - since > LOCK_MS) rmSync(lock, { recursive: true, force: true });
+      await new Promise((resolve) => setTimeout(resolve, 1000));
+    }
+  }
+  try {
+    pruneStale(dir);
+    if (existsSync(done)) return dir;
+    rmSync(dir, { recursive: true, force: true });
+    mkdirSync(join(dir, 'tarballs'), { recursive: true });
+    /** @type {Record<string, string>} */
+    const local = {};
+    for (const { name, tarball } of tarballs) {
+      const copy = join(dir, 'tarballs', `${name.replace('@', '').replace('/', '-')}.tgz`);
+      writeFileSync(copy, readFileSync(tarball));
+      local[name] = `file:./tarballs/${copy.split('/').at(-1)}`;
+    }
+    const pkg = {
+      name: 'shadelab-shared-app',
+      private: true,
+      type: 'module',
+      dependencies: { ...dependencies, ...local },
+    };
+    writeFileSync(join(dir, 'package.json'), `${JSON.stringify(pkg, null, 2)}\n`);
+    await run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel', 'error'], dir);
+    writeFileSync(done, new Date().toISOString());
+    return dir;
+  } finally {
+    rmSync(lock, { recursive: true, force: true });
+  }
+}
+
+/** Removes the installs not used for a day (never `keep`). @param {string} keep */
+function pruneStale(keep) {
+  for (const name of readdirSync(INSTALLS)) {
+    const dir = join(INSTALLS, name);
+    if (dir === keep || name.endsWith('.lock') || existsSync(`${dir}.lock`)) continue;
+    const used =
+      statSync(join(dir, '.installed'), { throwIfNoEntry: false })?.mtimeMs ??
+      statSync(dir, { throwIfNoEntry: false })?.mtimeMs ??
+      0;
+    if (Date.now() - used > STALE_MS) rmSync(dir, { recursive: true, force: true });
+  }
+}
