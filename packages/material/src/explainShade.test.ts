@@ -1,11 +1,11 @@
 import {
-  explainShade,
   linearToSrgb8,
   type ShadeLight,
   type ShadeMaterial,
   type ShadeThreeLight,
   shade,
 } from '@shadelab/material';
+import { explainShade } from '@shadelab/material/explain';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 

@@ -6,7 +6,6 @@
  * @mergeModuleWith <project>
  */
 export { computeNormalMatrix } from './computeNormalMatrix.js';
-export { explainShade, type LightExplanation, type ShadeExplanation } from './explainShade.js';
 export { eyeOf } from './eyeOf.js';
 export {
   type FlatShadingGeometryOptions,

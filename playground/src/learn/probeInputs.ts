@@ -5,12 +5,12 @@
  */
 import {
   computeNormalMatrix,
-  type ShadeExplanation,
   type ShadeLight,
   type ShadeMaterial,
   type ShadeThreeLight,
   type ShadingMaterial,
 } from '@shadelab/material';
+import type { ShadeExplanation } from '@shadelab/material/explain';
 import * as THREE from 'three';
 import type { V3 } from './probeMath';
 

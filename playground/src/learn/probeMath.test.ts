@@ -1,4 +1,5 @@
-import { explainShade, linearToSrgb8, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+import { linearToSrgb8, PhongLight, ShadingMaterial, shade } from '@shadelab/material';
+import { explainShade } from '@shadelab/material/explain';
 import fc from 'fast-check';
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';

@@ -4,13 +4,8 @@
  * on the GPU: per fragment at the hit point with the interpolated normal (Phong shading), per vertex and blended by
  * the barycentric weights (Gouraud), once per face at its centroid with the face normal (flat).
  */
-import {
-  explainShade,
-  eyeOf,
-  fogFactor,
-  type ShadeExplanation,
-  type ShadingMaterial,
-} from '@shadelab/material';
+import { eyeOf, fogFactor, type ShadingMaterial } from '@shadelab/material';
+import { explainShade, type ShadeExplanation } from '@shadelab/material/explain';
 import * as THREE from 'three';
 import { lightsOf, modelOf, normalMatrixOf, outputOf, shadeMaterialOf } from './probeInputs';
 import { barycentric, blend, displayed8, ndcOfPixel, pixelOfNdc, raw8, type V3 } from './probeMath';

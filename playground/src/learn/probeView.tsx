@@ -2,7 +2,7 @@
  * What the probe panel shows of a probe (presentational only): the point and n, the flat face or the Gouraud
  * vertices and weights, each light's vectors and terms, the sum, the clamp and the 8-bit colour beside the GPU's.
  */
-import type { LightExplanation } from '@shadelab/material';
+import type { LightExplanation } from '@shadelab/material/explain';
 import { ARROW_COLORS } from './probeArrows';
 import { maxChannelDifference, type V3 } from './probeMath';
 import type { ProbeHit, ProbeResult } from './probePick';
