@@ -42,6 +42,10 @@ const ROWS: [string, string][] = [
   ['cel', 'cel shading, 4 bands, Blinn-Phong'],
   ['doubleSide', 'DoubleSide (an open sphere, its inside lit)'],
   ['instanced', 'an InstancedMesh with non-uniform scales and instanceColor'],
+  [
+    'instancedSphere',
+    'an InstancedMesh of the subdivided sphere without a normal attribute (normal = position)',
+  ],
   ['shadows', 'a DirectionalLight’s shadow cast and received'],
 ];
 

@@ -15,6 +15,7 @@ import {
   type SceneContext,
   type SceneSetup,
 } from '@shadelab/playwright/page';
+import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 
 exposeRenderers({ PhongLight, ShadingMaterial, ShadingNodeMaterial });
 
@@ -262,6 +263,25 @@ registerScene('instanced', (c) => {
       m.compose(new THREE.Vector3(x, 0, 0), new THREE.Quaternion(), new THREE.Vector3(1, 1.4 - 0.4 * i, 1)),
     );
     instanced.setColorAt(i, new THREE.Color().setHSL(i / 3, 0.7, 0.6));
+  });
+  setup.scene.remove(mesh);
+  setup.scene.add(instanced);
+  return setup;
+});
+registerScene('instancedSphere', (c) => {
+  // The lecture's sphere without a normal attribute (its normal is its position), instanced with non-uniform
+  // scales: each instance's normal turned by its own matrix.
+  const { THREE } = c;
+  const setup = row(c, {});
+  const mesh = setup.scene.children.find((o) => (o as InstanceType<Three['Mesh']>).isMesh) as InstanceType<
+    Three['Mesh']
+  >;
+  const geometry = new SubdivisionSphereGeometry({ level: 4, normals: 'none' });
+  const instanced = new THREE.InstancedMesh(geometry, mesh.material as Material, 3);
+  const m = new THREE.Matrix4();
+  [-1.1, 0, 1.1].forEach((x, i) => {
+    const scale = new THREE.Vector3(0.5, 0.7 - 0.2 * i, 0.5);
+    instanced.setMatrixAt(i, m.compose(new THREE.Vector3(x, 0, 0), new THREE.Quaternion(), scale));
   });
   setup.scene.remove(mesh);
   setup.scene.add(instanced);

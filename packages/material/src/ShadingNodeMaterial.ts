@@ -129,6 +129,10 @@ function packNormal(n: N): N {
 /** The options' properties of {@link ShadingNodeMaterial} (installed from shadingProperties.ts). */
 export interface ShadingNodeMaterial extends shared.ShadingProperties {}
 
+/** A sphere lit with analytic normals (its normal is its position): the subdivided sphere, or one flagged so. */
+const isSphere = (geometry: BufferGeometry): boolean =>
+  geometry.type === 'SubdivisionSphereGeometry' || geometry.userData?.[SPHERE_FLAG] === true;
+
 /**
  * `ShadingMaterial`'s shading for three's `WebGPURenderer` (`three/webgpu`), on its WebGPU and its WebGL2
  * backend: the lecture's flat, Gouraud and Phong shading × Phong and Blinn-Phong lighting × cel bands, with the
@@ -199,6 +203,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
   readonly #emissiveNode: N = uniform(new Color(0, 0, 0));
   // The warning that normalMap needs phong shading was given.
   #warnedNormalMap = false;
+  /** Per build of an InstancedMesh of a sphere without a normal attribute: its normal, turned by the instance. */
+  readonly #instancedSphereNormals = new WeakMap<object, N>();
 
   /**
    * @param options - Shading, lighting, reflectances and lights; each one omitted takes its default (see
@@ -294,13 +300,20 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const morphs = geometry.morphAttributes;
     if (morphs.position || morphs.normal || morphs.color) (morphReference as N)(object);
     if (object.isSkinnedMesh === true) (skinning as N)(object);
-    // The object-space normal after morph targets and skinning, before three's instance node turns it.
+    // The object-space normal after morph targets and skinning, before three's instance node turns it: the normal
+    // attribute, or a sphere's position (its normal, which the instance node is about to move).
     const hasNormal = geometry.hasAttribute('normal') === true;
-    const normal: N = hasNormal ? (normalLocal as N).toVar() : null;
+    const normal: N = hasNormal
+      ? (normalLocal as N).toVar()
+      : isSphere(geometry)
+        ? (positionLocal as N).toVar()
+        : null;
     if (normal !== null) normal.toStack();
     (instancedMesh as N)(object);
     if (normal !== null) {
-      (normalLocal as N).assign(rescale(cofactorTimes(instanceMatrixOf(builder, object), normal)));
+      const turned: N = rescale(cofactorTimes(instanceMatrixOf(builder, object), normal));
+      if (hasNormal) (normalLocal as N).assign(turned);
+      else this.#instancedSphereNormals.set(builder, turned);
     }
     if (this.positionNode !== null) {
       (positionLocal as N).assign((subBuild as N)(this.positionNode, 'POSITION', 'vec3'));
@@ -365,7 +378,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
     const orthographic = builder.camera?.isOrthographicCamera === true;
     const towardsViewer = (p: N): N => (orthographic ? vec3(0, 0, 1) : towardsEye(p));
     const hasNormal = geometry.getAttribute('normal') !== undefined;
-    const sphere = geometry.type === 'SubdivisionSphereGeometry' || geometry.userData?.[SPHERE_FLAG] === true;
+    const sphere = isSphere(geometry);
     if (this.shading !== 'flat' && !hasNormal && !sphere) {
       throw new TypeError(
         `${this.#owner}: ${this.shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
@@ -373,7 +386,11 @@ export class ShadingNodeMaterial extends NodeMaterial {
     }
     // Per fragment, diffuseColor.rgb (texel × vertex colour × instance colour) multiplies ka and kd.
     const fragmentTint = { tint: (diffuseColor as N).rgb };
-    const localNormal: N = hasNormal ? normalLocal : positionLocal;
+    // A sphere's normal is its position: on an InstancedMesh, as it was before the instance moved it, turned by the
+    // instance's normal matrix (setupPosition).
+    const localNormal: N = hasNormal
+      ? normalLocal
+      : (this.#instancedSphereNormals.get(builder) ?? positionLocal);
     const normalToView = this.normalMatrix === 'model' ? normalToViewByModel : normalToViewRobust;
     const packed = this.output === 'normal';
     if (this.shading === 'phong') {

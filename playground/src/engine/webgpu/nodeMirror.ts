@@ -60,7 +60,7 @@ export class NodeMirror {
         first instanceof OutlineMaterial
           ? withNormals(geometry)
           : first instanceof ShadingMaterial
-            ? instancedSphere(mesh, flatFor(geometry, this.provokingVertex))
+            ? flatFor(geometry, this.provokingVertex)
             : geometry;
       if (node === material && drawn === geometry) return;
       mesh.material = node;
@@ -183,14 +183,6 @@ export class NodeMirror {
     this.models.clear();
   }
 }
-
-/**
- * An InstancedMesh's sphere lit with analytic normals gets its normals as an attribute, which three's instance
- * node turns with the instance (ShadingNodeMaterial takes a sphere's normal from `positionLocal`, which already
- * holds the instance's matrix there: every instance would be lit as if its normal were its position).
- */
-const instancedSphere = (mesh: THREE.Mesh, geometry: THREE.BufferGeometry): THREE.BufferGeometry =>
-  (mesh as THREE.InstancedMesh).isInstancedMesh ? withNormals(geometry) : geometry;
 
 /**
  * The node material made for `source` (made now if there is none): dropped and disposed when `source` is
