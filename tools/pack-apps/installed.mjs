@@ -100,7 +100,9 @@ export async function packBuilt(outDir, folders, tries = 24) {
  */
 export async function installedApp({ dependencies, tarballs }) {
   mkdirSync(INSTALLS, { recursive: true });
-  const hash = createHash('sha256').update(JSON.stringify(dependencies));
+  // Keys sorted: the same dependencies in another order are the same install.
+  const sorted = Object.fromEntries(Object.entries(dependencies).sort(([a], [b]) => a.localeCompare(b)));
+  const hash = createHash('sha256').update(JSON.stringify(sorted));
   for (const { name, tarball } of [...tarballs].sort((a, b) => a.name.localeCompare(b.name))) {
     hash.update(name).update(readFileSync(tarball));
   }
