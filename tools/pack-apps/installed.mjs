@@ -17,6 +17,8 @@ export const INSTALLS = join(tmpdir(), 'shadelab-pack-apps');
 
 /** An install not used for this long is removed by the next {@link installedApp} (ms). */
 const STALE_MS = 24 * 3600 * 1000;
+/** Installs kept (the one in use included). */
+const KEEP = 2;
 /** A lock older than this is taken to be left by a killed run (ms). */
 const LOCK_MS = 15 * 60 * 1000;
 
@@ -150,15 +152,25 @@ export async function installedApp({ dependencies, tarballs }) {
   }
 }
 
-/** Removes the installs not used for a day (never `keep`). @param {string} keep */
+/**
+ * Removes the installs not used for a day, and all but the {@link KEEP} most recently used (a package changed
+ * between runs gives a new install): never `keep`, nor one being installed.
+ * @param {string} keep
+ */
 function pruneStale(keep) {
-  for (const name of readdirSync(INSTALLS)) {
-    const dir = join(INSTALLS, name);
-    if (dir === keep || name.endsWith('.lock') || existsSync(`${dir}.lock`)) continue;
-    const used =
-      statSync(join(dir, '.installed'), { throwIfNoEntry: false })?.mtimeMs ??
-      statSync(dir, { throwIfNoEntry: false })?.mtimeMs ??
-      0;
-    if (Date.now() - used > STALE_MS) rmSync(dir, { recursive: true, force: true });
-  }
+  const installs = readdirSync(INSTALLS)
+    .filter((name) => !name.endsWith('.lock'))
+    .map((name) => join(INSTALLS, name))
+    .filter((dir) => dir !== keep && !existsSync(`${dir}.lock`))
+    .map((dir) => ({
+      dir,
+      used:
+        statSync(join(dir, '.installed'), { throwIfNoEntry: false })?.mtimeMs ??
+        statSync(dir, { throwIfNoEntry: false })?.mtimeMs ??
+        0,
+    }))
+    .sort((a, b) => b.used - a.used);
+  installs.forEach(({ dir, used }, i) => {
+    if (i >= KEEP - 1 || Date.now() - used > STALE_MS) rmSync(dir, { recursive: true, force: true });
+  });
 }
