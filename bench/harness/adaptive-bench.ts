@@ -10,9 +10,9 @@
 //   over 2, 8 and 32;
 // - updateCost(k, n): AdaptiveShading.update alone when everything moved (the camera nudged each call: every
 //   instance computed again and the allowance spent again), ms;
-// - choices(k): how many instances took each shading and level.
+// - choices(k): how many instances took each shading and level; model(k): what its error model predicted.
 import { type Shading, ShadingMaterial, swapMaterials } from '@shadelab/material';
-import { type AdaptiveChoice, AdaptiveShading } from '@shadelab/material/adaptive';
+import { type AdaptiveChoice, AdaptiveShading, overFraction } from '@shadelab/material/adaptive';
 import {
   Color,
   Fog,
@@ -225,7 +225,24 @@ function choices(k: number): Record<string, number> {
   return out;
 }
 
-const api = { prepare, frame, errors, updateCost, choices, deep: DEEP };
+/**
+ * What variant k's error model says (its table, measured at add): per shading and level, the fraction of an
+ * object's covered pixels over 8 and over 32 levels, the worst over the sampled directions; the silhouette term
+ * of a coarser level is apart (relative radial error).
+ */
+function model(k: number): { choice: string; over8: number; over32: number; silhouetteError: number }[] {
+  const b = prepared[k];
+  const table = b.adaptive?.tableOf(b.mesh);
+  if (!table) return [];
+  return table.rows.map((row) => ({
+    choice: `${row.shading} ${row.level ?? 'full'}`,
+    over8: overFraction(table, row, 8),
+    over32: overFraction(table, row, 32),
+    silhouetteError: row.silhouetteError,
+  }));
+}
+
+const api = { prepare, frame, errors, updateCost, choices, model, deep: DEEP };
 declare global {
   interface Window {
     adaptiveBench: typeof api;
