@@ -10,6 +10,7 @@ import { AdaptiveTool } from './learn/adaptiveTool';
 import { AttenuationTool } from './learn/attenuationTool';
 import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
+import { NormalMatrixTool } from './learn/normalMatrixTool';
 import { ProbeLauncher } from './learn/probeLauncher';
 import { ProfileTool } from './learn/profileTool';
 import { ParityPanel } from './parity/ParityPanel';
@@ -274,6 +275,7 @@ export function App() {
           · <ModelPicker model={model} /> · <CopyCodeButtons state={state} /> · learn:{' '}
           <ProfileTool viewerRef={viewerRef} state={state} />{' '}
           <AttenuationTool viewerRef={viewerRef} state={state} />{' '}
+          <NormalMatrixTool viewerRef={viewerRef} state={state} />{' '}
           <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
         </p>
       </main>

@@ -1,0 +1,52 @@
+/**
+ * The normal-matrix tool: a toggle (in the hint line under the view) that opens, over the canvas, the lecture's
+ * slide live (`normalMatrixView.tsx`, loaded when first opened): the sphere shaded with (M⁻¹)ᵀ and with M side by
+ * side, with the tangent and both normals at the probed point.
+ */
+import { lazy, type RefObject, Suspense, useState } from 'react';
+import { createPortal } from 'react-dom';
+import type { Viewer } from '../engine/viewer/Viewer';
+import { isEmbedded } from '../state/embed';
+import type { PlaygroundState } from '../state/schema';
+import { LEARN_PANEL } from './profileTool';
+
+const NormalMatrixView = lazy(() => import('./normalMatrixView'));
+
+/** The toggle and, when open, the figure (see the module comment). */
+export function NormalMatrixTool({
+  viewerRef,
+  state,
+}: {
+  viewerRef: RefObject<Viewer | null>;
+  state: PlaygroundState;
+}) {
+  const [open, setOpen] = useState(false);
+  if (isEmbedded()) return null;
+  // Over the canvas: in its parent, the stage (this button sits in the hint line).
+  const stage = open ? viewerRef.current?.canvas.parentElement : null;
+  return (
+    <>
+      <button
+        type="button"
+        aria-pressed={open}
+        title="The sphere shaded with the normal matrix (M⁻¹)ᵀ and with M side by side, with the tangent and both normals at the probed point"
+        onClick={() => setOpen(!open)}
+      >
+        normal matrix
+      </button>
+      {stage &&
+        createPortal(
+          <section
+            style={{ ...LEARN_PANEL, left: 8, right: 'auto', top: 8, width: 'min(360px, calc(100% - 16px))' }}
+            aria-label="The normal matrix"
+            data-testid="normal-matrix-panel"
+          >
+            <Suspense fallback="Loading the figure…">
+              <NormalMatrixView viewerRef={viewerRef} state={state} />
+            </Suspense>
+          </section>,
+          stage,
+        )}
+    </>
+  );
+}
