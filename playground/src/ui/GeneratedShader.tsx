@@ -3,7 +3,8 @@ import type { GeneratedShader as Shader } from '../engine/webgpu/status';
 
 /**
  * WebGPU mode's shader panel: the node material's generated code as the running backend compiled it (WGSL on
- * WebGPU, GLSL on the WebGL2 backend), read-only; GLSL editing is WebGL mode's (ShaderEditor).
+ * WebGPU, GLSL on the WebGL2 backend), read-only; GLSL editing is WebGL mode's (ShaderEditor). It is already the
+ * program as compiled: the node builder emits only what this scene uses, so there are no branches to remove.
  */
 export function GeneratedShader({ shader }: { shader: Shader | null }) {
   const [stage, setStage] = useState<'fragmentShader' | 'vertexShader'>('fragmentShader');
@@ -32,6 +33,7 @@ export function GeneratedShader({ shader }: { shader: Shader | null }) {
       <textarea
         aria-label={`${name} shader ${shader?.language ?? ''}`.trim()}
         data-testid="shader-text"
+        title="as compiled for this scene: three's node builder writes only the code this scene uses (no #if branches)"
         spellCheck={false}
         readOnly
         value={shader?.[stage] ?? ''}
