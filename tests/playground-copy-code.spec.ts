@@ -1,6 +1,6 @@
-// Copy as code (issue 24): for nine playground states (the defaults, a Gouraud material lit by two attenuated
-// lights, orthographic, flat cel shading with the outline, each picked scene, the impostor) the "copy as code"
-// buttons give a three.js program and an R3F app; each is pasted into a fresh app installed from the packed
+// Copy as code (issue 24): for ten playground states (the defaults, a Gouraud material lit by two attenuated
+// lights, orthographic, flat cel shading with the outline, a term view, each picked scene, the impostor) the
+// "copy as code" buttons give a three.js program and an R3F app; each is pasted into a fresh app from the packed
 // tarballs (tools/pack-apps/installed.mjs: one npm install, shared with the other specs that ask for the same
 // and with later runs while the tarballs are unchanged), type-checked with the app's own TypeScript 5 (strict,
 // skipLibCheck off), built with the app's Vite and run in Chromium. Each must draw exactly the playground canvas's
@@ -66,6 +66,8 @@ const STATES = {
   },
   // A picked scene: the instanced spheres.
   scene: { scene: 'instanced', material: { lighting: 'phong' } },
+  // A term view (diffuse only) with the model matrix as the normal matrix, under a non-uniform scale.
+  terms: { material: { output: 'diffuse', normalMatrix: 'model' }, model: { scale: [2, 0.6, 1.2] } },
   // The other scenes and the impostor.
   impostor: { sphere: { render: 'impostor', radius: 0.8 } },
   lights: { scene: 'lights' },
@@ -161,7 +163,7 @@ test('the copy buttons give the three.js program and the R3F app of the state sh
   page,
   context,
 }) => {
-  // Nine playground states opened and copied twice each, on a machine shared by many runs.
+  // Ten playground states opened and copied twice each, on a machine shared by many runs.
   test.setTimeout(180_000);
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);
   await page.setViewportSize(PLAYGROUND_VIEWPORT);

@@ -72,6 +72,8 @@ const CHANGES: Record<string, { value: unknown; needs?: (s: PlaygroundState) => 
   'material.kd': { value: [0.3, 0.2, 0.1] },
   'material.ks': { value: [0.25, 0.5, 0.75] },
   'material.shininess': { value: 7 },
+  'material.output': { value: 'diffuse' },
+  'material.normalMatrix': { value: 'model' },
   'lights[].position': { value: [1, 2, 3] },
   'lights[].ambient': { value: [0.3, 0.3, 0.3] },
   'lights[].diffuse': { value: [0.5, 0.6, 0.7] },

@@ -206,8 +206,11 @@ export function codeScene(state: PlaygroundState): CodeScene {
               flat,
             };
   let material = materialOptions(m);
-  // The impostor is always ray-cast per pixel; a model's swap takes the shading, lighting and cel bands.
-  if (object.kind === 'impostor') delete material['shading'];
+  // The impostor is ray-cast per pixel (no shading), and the playground gives it neither the term view nor the
+  // normal matrix mode; a model's swap takes the shading, lighting and cel bands.
+  if (object.kind === 'impostor') {
+    for (const key of ['shading', 'output', 'normalMatrix']) delete material[key];
+  }
   if (state.scene === 'model') material = materialOptions(m, ['shading', 'lighting', 'celBands']);
   const camera: CodeCamera =
     c.projection === 'perspective'
