@@ -8,7 +8,7 @@ import {
   saveState,
   stateUrl,
 } from './persist';
-import { defaultState, serializeState } from './schema';
+import { defaultState, STATE_MAX_CHARS, serializeState } from './schema';
 
 const setHash = (text: string | null) => {
   const params = new URLSearchParams();
@@ -45,6 +45,29 @@ describe('loadInitialState', () => {
     expect(initial.source).toBe('storage');
     expect(initial.state.material.shininess).toBe(7);
     expect(initial.refused).toEqual(['The state in the URL was refused: state: key "__proto__" is refused']);
+  });
+
+  it('refuses a URL state longer than STATE_MAX_CHARS, naming the limit, and opens the saved state', () => {
+    const stored = defaultState();
+    stored.material.shininess = 7;
+    window.localStorage.setItem('shadelab.state', serializeState(stored));
+    const huge = `{"material":{"shininess":9},"pad":"${'x'.repeat(STATE_MAX_CHARS)}"}`;
+    setHash(huge);
+    const initial = loadInitialState();
+    expect(initial.source).toBe('storage');
+    expect(initial.state.material.shininess).toBe(7);
+    expect(initial.refused).toEqual([
+      `The state in the URL was refused: state: ${huge.length} characters is more than the limit of ${STATE_MAX_CHARS}`,
+    ]);
+    // Pasted into the tab later: refused the same way (the page keeps the state it shows).
+    expect(readUrlState()).toEqual({
+      ok: false,
+      error: `state: ${huge.length} characters is more than the limit of ${STATE_MAX_CHARS}`,
+    });
+    // At the limit it is parsed.
+    const padded = serializeState(stored);
+    setHash(padded + ' '.repeat(STATE_MAX_CHARS - padded.length));
+    expect(readUrlState()).toEqual({ ok: true, state: stored });
   });
 
   it('refuses corrupt storage too, and opens on the defaults', () => {
