@@ -13,7 +13,7 @@ import { isEmbedded } from '../state/embed';
 import type { PlaygroundState } from '../state/schema';
 import type { StatsFeed } from '../ui/Stats';
 import type { Update } from '../ui/useFolder';
-import { type AdaptiveMeasured, AdaptiveRun, type AdaptiveUnit } from './adaptiveRun';
+import type { AdaptiveMeasured, AdaptiveRun, AdaptiveUnit } from './adaptiveRun';
 import { LEARN_PANEL } from './profileTool';
 
 /** The heat map's colour of a choice: green Phong at full detail, teal coarser levels, blue Gouraud, orange flat. */
@@ -61,6 +61,11 @@ export function AdaptiveTool({
   const run = useRef<AdaptiveRun | null>(null);
   const overlay = useRef<HTMLCanvasElement>(null);
   const budget = budgetAt(step);
+  /** The budget now, for a run made after its code has loaded. */
+  const budgetNow = useRef(budget);
+  budgetNow.current = budget;
+  /** Counts the runs made, so that the error is measured once a run exists. */
+  const [made, setMade] = useState(0);
   const unavailable = adaptiveUnavailable(state);
   const active = on && unavailable === null;
 
@@ -69,10 +74,19 @@ export function AdaptiveTool({
   useEffect(() => {
     const viewer = viewerRef.current;
     if (!active || !viewer) return;
-    const r = new AdaptiveRun(viewer, budget);
-    run.current = r;
+    // AdaptiveShading and the run load on first use: they stay out of the page's first load (issue 24's
+    // "the lazy parts stay lazy", gated by tests/playground-learn.spec.ts).
+    let r: AdaptiveRun | null = null;
+    let gone = false;
+    void import('./adaptiveRun').then(({ AdaptiveRun }) => {
+      if (gone) return;
+      r = new AdaptiveRun(viewer, budgetNow.current);
+      run.current = r;
+      setMade((n) => n + 1);
+    });
     return () => {
-      r.dispose();
+      gone = true;
+      r?.dispose();
       run.current = null;
       setMeasured(null);
       setChoices({});
@@ -105,7 +119,7 @@ export function AdaptiveTool({
     if (!active) return;
     const timer = window.setTimeout(() => setMeasured(run.current?.measure() ?? null), 400);
     return () => window.clearTimeout(timer);
-  }, [active, budget, state.scene]);
+  }, [active, budget, state.scene, made]);
 
   if (isEmbedded()) return null;
   const toggle = (value: boolean) => {
