@@ -110,7 +110,10 @@ export function ShaderEditor({ variant, tryShader, clearShader }: Props) {
         <button type="button" onClick={reset} disabled={!edited}>
           reset to generated
         </button>
-        <label title={edited ? 'reset to generated to switch the view' : undefined}>
+        <label
+          className="shader-status"
+          title={edited ? 'reset to generated to switch the view' : 'show every #if branch of the source'}
+        >
           <input
             type="checkbox"
             data-testid="shader-full"
