@@ -121,6 +121,7 @@ test('non-uniform scale: the drawn normals are the CPU’s (M⁻¹)ᵀn ⊥ M·t
   await expect(page.getByTestId('angle-m')).toHaveText(`${angle.toFixed(1)}°`);
 
   // The pictures: the same pixels covered, different shading; at the point, each half is shade() with its normal.
+  await expect(canvas).toHaveScreenshot('normal-matrix.png');
   // The arrows off, to see the surface under them (they are drawn over it).
   await page.getByLabel('draw the tangent and the normals').uncheck();
   const pixels = (await canvas.getAttribute('data-pixels'))!.split(';').map((p) => p.split(',').map(Number));

@@ -18,6 +18,12 @@ test.describe('term views add up to the colour (linear, within rounding)', () =>
     expectSum(color, terms, 20_000);
     await choose(page, 'Material.output', 'specular');
     expect((await urlState(page)).material).toMatchObject({ output: 'specular' });
+    // The baselines of two term views (overlays hidden, as in playground-visual.spec.ts).
+    await page.addStyleTag({ content: 'main.stage > :not(canvas) { visibility: hidden !important; }' });
+    await choose(page, 'Material.output', 'diffuse');
+    await expect(page.getByTestId('viewport')).toHaveScreenshot('term-diffuse.png');
+    await choose(page, 'Material.output', 'normal');
+    await expect(page.getByTestId('viewport')).toHaveScreenshot('term-normal.png');
     await page.goto('about:blank');
     await open(page, { material: { output: 'everything' } });
     await expect(page.getByTestId('notice')).toContainText(
