@@ -45,6 +45,8 @@ export function compiledSources(
   scene.add(probe);
   const target = new THREE.WebGLRenderTarget(1, 1);
   const previous = renderer.getRenderTarget();
+  // This draw is not the scene's: the stats (renderer.info, summed over a frame's draws) must not count it.
+  const counted = { ...renderer.info.render };
   try {
     renderer.setRenderTarget(target);
     renderer.render(scene, camera);
@@ -65,6 +67,7 @@ export function compiledSources(
     return null;
   } finally {
     renderer.setRenderTarget(previous);
+    Object.assign(renderer.info.render, counted);
     scene.remove(probe);
     clone.dispose();
     target.dispose();
