@@ -63,6 +63,11 @@ export const SOURCES = [
     writer: 'bench/playground-refactor.bench.mjs',
     command: 'npm run bench -- playground-refactor',
   },
+  {
+    name: 'playground-learn',
+    writer: 'bench/playground-learn.bench.mjs',
+    command: 'npm run bench -- playground-learn',
+  },
   { name: 'reliability', writer: 'bench/reliability.bench.mjs', command: 'npm run bench -- reliability' },
   { name: 'rasterisers', writer: 'bench/rasterisers.bench.mjs', command: 'npm run bench -- rasterisers' },
 ];
@@ -1294,8 +1299,8 @@ function tarballs(r) {
   ];
 }
 
-/** @param {any} bundle @param {any} first @param {any} refactor @returns {string[]} */
-function playground(bundle, first, refactor) {
+/** @param {any} bundle @param {any} first @param {any} refactor @param {any} learn @returns {string[]} */
+function playground(bundle, first, refactor, learn) {
   const out = ['## Playground', ''];
   if (bundle) {
     const labels = /** @type {Record<string, string>} */ ({
@@ -1369,7 +1374,80 @@ function playground(bundle, first, refactor) {
       ...(refactor.note ? ['', refactor.note] : []),
     );
   } else out.push(missing('playground-refactor'));
+  out.push('', '### Before and after issue 24', '', ...playgroundLearn(learn));
   return out;
+}
+
+/** Issue 24's learning tools: the first load and first frame against two befores, the lazy parts. @param {any} learn @returns {string[]} */
+function playgroundLearn(learn) {
+  if (!learn) return [missing('playground-learn')];
+  const { before, committed, after, ratios, ratiosToCommitted } = learn;
+  const medianMs = (/** @type {number[]} */ xs) =>
+    `${int(Math.round([...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]))} ms`;
+  const within = (/** @type {number} */ r) => (r <= 1.1 ? 'yes' : '**no**');
+  return [
+    fromLine('playground-learn', learn),
+    '',
+    `Issue 24 (the pixel probe, the term views, the intensity profile, the attenuation curve, the normal-matrix view, copy as code, the compiled shader view, \`?embed\`) against the playground of \`${before.commit}\`, the last commit before it, and of \`${committed.commit}\`, where the figures above were measured before issue 24 (issues 22, 23 and 25 changed the playground in between: the glTF model, WebGPU mode, the adaptive tool); each build from its own commit's playground and packages. What \`index.html\` loads at start (as above), and the first frame at ${learn.viewport.width}×${learn.viewport.height}, ${learn.rounds} loads of each build interleaved (each ratio: the median of the per-round ratios). Target: the first frame ≤ 1.10 × before; the first-load bytes within a budget of ${kB(learn.budgetGzip)} gzip (\`bench/lib/playground-budget.mjs\`, gated with the lazy parts by \`tests/playground-learn.spec.ts\`).`,
+    '',
+    ...table(
+      [
+        '',
+        `\`${committed.commit}\``,
+        `before (\`${before.commit}\`)`,
+        'after',
+        'after / before',
+        '≤ 1.10',
+        `after / \`${committed.commit}\``,
+      ],
+      'lrrrrlr',
+      [
+        [
+          '`index.html` bundle, gzip -9',
+          kB(committed.bundle.gzip),
+          kB(before.bundle.gzip),
+          kB(after.bundle.gzip),
+          ratios.bundleGzip.toFixed(3),
+          after.bundle.gzip <= learn.budgetGzip
+            ? `yes (budget ${kB(learn.budgetGzip)})`
+            : `**no** (budget ${kB(learn.budgetGzip)})`,
+          ratiosToCommitted.bundleGzip.toFixed(3),
+        ],
+        [
+          '`index.html` bundle, raw',
+          kB(committed.bundle.raw),
+          kB(before.bundle.raw),
+          kB(after.bundle.raw),
+          ratios.bundleRaw.toFixed(3),
+          '',
+          ratiosToCommitted.bundleRaw.toFixed(3),
+        ],
+        [
+          'first frame, median',
+          medianMs(committed.firstFrameMs),
+          medianMs(before.firstFrameMs),
+          medianMs(after.firstFrameMs),
+          ratios.firstFrame.toFixed(3),
+          within(ratios.firstFrame),
+          ratiosToCommitted.firstFrame.toFixed(3),
+        ],
+      ],
+    ),
+    '',
+    "Loaded on first use only (each part's own chunks, those `index.html` does not load):",
+    '',
+    ...table(
+      ['part', 'module', 'raw', 'gzip -9'],
+      'llrr',
+      learn.lazyParts.map((/** @type {any} */ p) => [
+        p.label,
+        `\`${p.module.replace(/^playground\//, '')}\``,
+        p.raw === null ? '**not a chunk of its own**' : kB(p.raw),
+        p.gzip === null ? '' : kB(p.gzip),
+      ]),
+    ),
+    ...(learn.note ? ['', learn.note] : []),
+  ];
 }
 
 /** @param {any} r @returns {string[]} */
@@ -1602,6 +1680,7 @@ export function renderBenchmarks(results) {
       results['playground-bundle'],
       results['playground-first-frame'],
       results['playground-refactor'],
+      results['playground-learn'],
     ),
     section('reliability', reliability, 'Reliability'),
     section('rasterisers', rasterisers, 'Rasteriser variation'),
