@@ -25,6 +25,7 @@ import {
   validateState,
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
+import { Messages } from './ui/Messages';
 import { ModelPicker, modelDropProps, modelNote } from './ui/ModelPicker';
 import { SidePanel } from './ui/SidePanel';
 import { Stats, StatsFeed } from './ui/Stats';
@@ -232,39 +233,14 @@ export function App() {
             ))}
           </ol>
         )}
-        <div className="messages" aria-live="polite">
-          {context === 'lost' && (
-            <p className="message warn" data-testid="context-message">
-              The WebGL context was lost; waiting for the browser to restore it. Nothing you set is lost.
-            </p>
-          )}
-          {context === 'restored' && (
-            <p className="message info" data-testid="context-message">
-              The WebGL context was restored; the scene was rebuilt.
-            </p>
-          )}
-          {notices.map((n) => (
-            <p key={n} className="message warn" data-testid="notice">
-              {n}{' '}
-              <button type="button" onClick={() => setNotices((all) => all.filter((m) => m !== n))}>
-                dismiss
-              </button>
-            </p>
-          ))}
-          {model.message && (
-            <p className={`message ${model.message.kind}`} role="alert" data-testid="model-message">
-              {model.message.text}{' '}
-              <button type="button" onClick={model.dismiss}>
-                dismiss
-              </button>
-            </p>
-          )}
-          {errors.map((e) => (
-            <p key={e} className="message error" role="alert" data-testid="input-error">
-              {e}
-            </p>
-          ))}
-        </div>
+        <Messages
+          context={context}
+          notices={notices}
+          dismissNotice={(n) => setNotices((all) => all.filter((m) => m !== n))}
+          model={model.message}
+          dismissModel={model.dismiss}
+          errors={errors}
+        />
         <Stats feed={feed} />
         <ProbeLauncher viewerRef={viewerRef} state={state} />
         <p className="hint">
