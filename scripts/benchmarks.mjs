@@ -741,7 +741,7 @@ function swap(r) {
     '',
     fromLine('swap', r),
     '',
-    `Issue 22: the scene as an app has it, with \`${r.source}\`, against the same scene after ${r.swap}, and against ${r.byHand}, all in one run. Scene: ${r.scene}. ${r.frames} frames per variant in ${r.rounds} rounds, the variants interleaved frame by frame (each cycle renders one frame of every variant), a 1×1 \`readPixels\` after each; ratios are the median of the ratios of frames from the same cycle, and the ratio of the medians in brackets. Frame ms: median (minimum)${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}. Luma: ${r.luma}. ${r.note ?? ''}`.trim(),
+    `Issue 22: the scene as an app has it, with \`${r.source}\`, against the same scene after ${r.swap}, and against ${r.byHand}, all in one run. Scene: ${r.scene}. ${r.frames} frames per variant in ${r.rounds} rounds, the variants interleaved frame by frame (each cycle renders one frame of every variant; each round starts its cycles at the next variant, so that no row always follows the same one: the swapped and the by-hand rows compile the same program, and their ratio is the method's control), a 1×1 \`readPixels\` after each; ratios are the median of the ratios of frames from the same cycle, and the ratio of the medians in brackets. Frame ms: median (minimum)${r.gpuTimer ? '; GPU ms: the median of EXT_disjoint_timer_query_webgl2' : ''}. Luma: ${r.luma}. ${r.note ?? ''}`.trim(),
     '',
     ...table(
       [
