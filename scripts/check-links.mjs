@@ -226,6 +226,8 @@ export function createChecker(base) {
     if (rel.startsWith('..') || resolve(base, rel) !== path) return 'outside the repository';
     if (!existsSync(path)) return 'no such file';
     if (anchor === '' || statSync(path).isDirectory()) return undefined;
+    // A fragment `key=value` is the page's own state, read by its script (the playground's `#s=`), not an anchor.
+    if (/^[\w-]+=/.test(anchor)) return undefined;
     const ext = extname(path).toLowerCase();
     if (ext !== '.md' && ext !== '.html') return undefined;
     return anchorsOf(path).has(anchor)

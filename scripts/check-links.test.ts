@@ -49,7 +49,9 @@ write('README.md', '# shadelab\n\n## The packages\n\n## Install\n');
 write('packages/sphere/README.md', '# sphere\n');
 write(
   'site/index.html',
-  '<a href="page.html#here">ok</a> <a href="page.html#gone">x</a>\n<a href="nope.html">x</a>',
+  '<a href="page.html#here">ok</a> <a href="page.html#gone">x</a>\n<a href="nope.html">x</a>\n' +
+    // A fragment key=value is the page's state (the playground's #s=), not an anchor.
+    '<iframe src="page.html?embed#s=%7B%22a%22%3A1%7D"></iframe>',
 );
 write(
   'site/page.html',
