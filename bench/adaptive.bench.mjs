@@ -17,24 +17,14 @@
 //
 //   node bench/adaptive.bench.mjs [--json PATH] [--frames 30] [--views published,deep]
 // The smallest run: --frames 2.
-import { createReadStream, existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
-import { createServer } from 'node:http';
-import { loadavg, tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
-import { build } from 'vite';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
+import { loadavg } from 'node:os';
 import { arg, summarize, writeResults } from './lib/bench.mjs';
-import { recordBrowser } from './lib/meta.mjs';
+import { browserCpuSeconds, openBenchPage } from './lib/browser.mjs';
 
 const frames = Number(arg('--frames', '30'));
 const views = /** @type {import('./harness/adaptive-bench').AdaptiveView[]} */ (
   arg('--views', 'published,deep').split(',').filter(Boolean)
 );
-/** Clock ticks per second of /proc's CPU times (USER_HZ, 100 on Linux). */
-const TICKS_PER_SECOND = 100;
-const root = fileURLToPath(new URL('..', import.meta.url));
 const loadAtStart = loadavg();
 
 /** @typedef {import('./harness/adaptive-bench').AdaptiveVariant} AdaptiveVariant */
@@ -52,82 +42,13 @@ const variants = [
 /** The targets against all-Phong (issue 25). */
 const TARGETS = { 'adaptive, maxError 8': 0.7, 'adaptive, maxError 32': 0.5 };
 
-// Build this bench's page alone, as bench/harness/vite.config.ts builds the pages (the packages' sources).
-const outDir = mkdtempSync(join(tmpdir(), 'shadelab-adaptive-'));
-const packages = ['sphere', 'camera', 'trackball', 'material', 'reference'];
-await build({
-  configFile: false,
-  root: join(root, 'bench'),
-  publicDir: false,
-  logLevel: 'warn',
-  resolve: {
-    alias: Object.fromEntries(
-      packages.map((name) => [`@shadelab/${name}`, join(root, 'packages', name, 'src')]),
-    ),
-    dedupe: ['three'],
-  },
-  build: {
-    target: 'es2022',
-    outDir,
-    emptyOutDir: true,
-    chunkSizeWarningLimit: 2000,
-    rollupOptions: { input: { 'harness/adaptive-bench': join(root, 'bench/harness/adaptive-bench.html') } },
-  },
-});
-const server = createServer((req, res) => {
-  const path = new URL(req.url ?? '/', 'http://x').pathname;
-  const file = join(outDir, path);
-  if (path.includes('..') || !existsSync(file)) {
-    res.writeHead(404).end();
-    return;
-  }
-  res.writeHead(200, { 'content-type': path.endsWith('.html') ? 'text/html' : 'text/javascript' });
-  createReadStream(file).pipe(res);
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-const address = server.address();
-const port = typeof address === 'object' && address ? address.port : 0;
-const browser = await chromium.launch({
-  executablePath: chromiumExecutable() ?? undefined,
-  args: chromiumArgs,
-});
-recordBrowser(`Chromium ${browser.version()}`);
-const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+const pages = await openBenchPage('adaptive-bench');
+const page = await pages.browser.newPage({ viewport: { width: 1280, height: 720 } });
 page.on('console', (m) => {
   if (m.type() === 'warning' || m.type() === 'error') console.log(`[page ${m.type()}] ${m.text()}`);
 });
-await page.goto(`http://127.0.0.1:${port}/harness/adaptive-bench.html`);
+await page.goto(pages.url('harness/adaptive-bench.html'));
 await page.waitForFunction(() => document.body.dataset.ready === '1');
-
-/** CPU seconds used so far by this script's descendants (the browser's processes): utime + stime, from /proc. */
-function cpuSeconds() {
-  /** @type {Map<number, number[]>} */
-  const children = new Map();
-  /** @type {Map<number, number>} */
-  const ticks = new Map();
-  for (const entry of readdirSync('/proc')) {
-    if (!/^\d+$/.test(entry)) continue;
-    let stat;
-    try {
-      stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
-    } catch {
-      continue; // ended meanwhile
-    }
-    const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-    const pid = Number(entry);
-    const parent = Number(fields[1]);
-    children.set(parent, [...(children.get(parent) ?? []), pid]);
-    ticks.set(pid, Number(fields[11]) + Number(fields[12]));
-  }
-  let total = 0;
-  const stack = [...(children.get(process.pid) ?? [])];
-  while (stack.length > 0) {
-    const pid = /** @type {number} */ (stack.pop());
-    total += ticks.get(pid) ?? 0;
-    stack.push(...(children.get(pid) ?? []));
-  }
-  return total / TICKS_PER_SECOND;
-}
 
 const median = (/** @type {number[]} */ xs) => summarize(xs).median;
 const at = (/** @type {string} */ name) => variants.findIndex(([n]) => n === name);
@@ -156,9 +77,9 @@ for (const view of views) {
   const cpu = variants.map(() => /** @type {number[]} */ ([]));
   for (let i = 0; i < frames; i++) {
     for (let k = 0; k < variants.length; k++) {
-      const c0 = cpuSeconds();
+      const c0 = browserCpuSeconds();
       wall[k].push(await page.evaluate((n) => window.adaptiveBench.frame(n), k));
-      cpu[k].push((cpuSeconds() - c0) * 1000);
+      cpu[k].push((browserCpuSeconds() - c0) * 1000);
     }
     if ((i + 1) % 10 === 0) console.log(`  ${i + 1}/${frames} cycles`);
   }
@@ -250,9 +171,7 @@ function why() {
   return `Why (${views[0] === 'published' ? 'published view' : views[0]}): the budget is a percentile: all but 0.4 % of the drawn pixels within maxError of all-Phong's picture (the issue allows 0.5 %). Fixed Gouraud puts ${(100 * g.over8).toFixed(1)} % of the drawn pixels over 8 and ${(100 * g.over32).toFixed(1)} % over 32, so under that allowance Gouraud may cover at most about ${share(g.over8)} of the spheres' pixels at budget 8 and ${share(g.over32)} at 32, which bounds what it can save; fixed flat costs ${v.rows['fixed flat'].vsAllPhong.paired.toFixed(2)} × all-Phong here, with more pixels over than Gouraud (${(100 * v.rows['fixed flat'].error.over8).toFixed(1)} % over 8). A coarser level saves vertex work, but it moves the outline (every outline pixel that moves is over any budget) and, the sphere's normals being its vertices' (\`normals: 'smooth'\`), changes the interior too: the error model puts Phong shading at level 2 ${pctOf(modelRow(a8, 'phong 2'), 'over8')} over 8. So AdaptiveShading kept ${full(a8)} and ${full(a32)} of the 1,000 instances at Phong shading and full detail at budgets 8 and 32, and its pictures stayed inside the budgets (p99 ${a8.error.p99} and ${a32.error.p99}, largest ${a8.error.max} and ${a32.error.max}). Its error model (the worst over sampled light and view directions of one white light Id = Is = 1, no fog) predicts Gouraud at full detail ${pctOf(modelRow(a8, 'gouraud full'), 'over8')} over 8 and ${pctOf(modelRow(a8, 'gouraud full'), 'over32')} over 32, against the ${(100 * g.over8).toFixed(1)} % and ${(100 * g.over32).toFixed(1)} % measured in this picture; the allowance it leaves unspent goes to the outlines of the coarser levels (estimated from each level's largest radial error: an upper bound) and to the hysteresis margin (the choice aims at the allowance / 1.15).`;
 }
 
-await browser.close();
-server.close();
-rmSync(outDir, { recursive: true, force: true });
+await pages.close();
 
 const loadAtEnd = loadavg();
 const load = (/** @type {number[]} */ l) => l.map((x) => x.toFixed(2)).join(' / ');

@@ -12,21 +12,10 @@
 //
 //   node bench/lighting.bench.mjs [--json PATH] [--frames 40]
 // The smallest run: --frames 2.
-import { createReadStream, existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
-import { createServer } from 'node:http';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
-import { build } from 'vite';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
 import { arg, summarize, writeResults } from './lib/bench.mjs';
-import { recordBrowser } from './lib/meta.mjs';
+import { browserCpuSeconds, openBenchPage } from './lib/browser.mjs';
 
 const frames = Number(arg('--frames', '40'));
-/** Clock ticks per second of /proc's CPU times (USER_HZ, 100 on Linux). */
-const TICKS_PER_SECOND = 100;
-const root = fileURLToPath(new URL('..', import.meta.url));
 
 /** @typedef {import('./harness/lighting-bench').LightingVariant} LightingVariant */
 const FLOOR = 'MeshBasicMaterial (unlit floor)';
@@ -44,83 +33,10 @@ const variants = [
 ];
 const TARGET = 'ShadingMaterial phong, Phong lighting';
 
-// Build this bench's page alone, as bench/harness/vite.config.ts builds the pages (the packages' sources).
-const outDir = mkdtempSync(join(tmpdir(), 'shadelab-lighting-'));
-const packages = ['sphere', 'camera', 'trackball', 'material', 'reference'];
-await build({
-  configFile: false,
-  root: join(root, 'bench'),
-  publicDir: false,
-  logLevel: 'warn',
-  resolve: {
-    alias: Object.fromEntries(
-      packages.map((name) => [`@shadelab/${name}`, join(root, 'packages', name, 'src')]),
-    ),
-    dedupe: ['three'],
-  },
-  build: {
-    target: 'es2022',
-    outDir,
-    emptyOutDir: true,
-    chunkSizeWarningLimit: 2000,
-    rollupOptions: { input: { 'harness/lighting-bench': join(root, 'bench/harness/lighting-bench.html') } },
-  },
-});
-const server = createServer((req, res) => {
-  const path = new URL(req.url ?? '/', 'http://x').pathname;
-  const file = join(outDir, path);
-  if (path.includes('..') || !existsSync(file)) {
-    res.writeHead(404).end();
-    return;
-  }
-  res.writeHead(200, { 'content-type': path.endsWith('.html') ? 'text/html' : 'text/javascript' });
-  createReadStream(file).pipe(res);
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-const address = server.address();
-const port = typeof address === 'object' && address ? address.port : 0;
-const browser = await chromium.launch({
-  executablePath: chromiumExecutable() ?? undefined,
-  args: chromiumArgs,
-});
-recordBrowser(`Chromium ${browser.version()}`);
-const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
-await page.goto(`http://127.0.0.1:${port}/harness/lighting-bench.html`);
+const pages = await openBenchPage('lighting-bench');
+const page = await pages.browser.newPage({ viewport: { width: 1280, height: 720 } });
+await page.goto(pages.url('harness/lighting-bench.html'));
 await page.waitForFunction(() => document.body.dataset.ready === '1');
-
-/**
- * CPU seconds used so far by this script's child processes (the browser, its GPU process where SwiftShader draws,
- * its renderer): utime + stime of every live descendant, from /proc. What a frame costs in CPU time does not
- * depend on how much of the machine other work takes, where its wall time does.
- */
-function cpuSeconds() {
-  /** @type {Map<number, number[]>} */
-  const children = new Map();
-  /** @type {Map<number, number>} */
-  const ticks = new Map();
-  for (const entry of readdirSync('/proc')) {
-    if (!/^\d+$/.test(entry)) continue;
-    let stat;
-    try {
-      stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
-    } catch {
-      continue; // ended meanwhile
-    }
-    const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-    const pid = Number(entry);
-    const parent = Number(fields[1]);
-    children.set(parent, [...(children.get(parent) ?? []), pid]);
-    ticks.set(pid, Number(fields[11]) + Number(fields[12]));
-  }
-  let total = 0;
-  const stack = [...(children.get(process.pid) ?? [])];
-  while (stack.length > 0) {
-    const pid = /** @type {number} */ (stack.pop());
-    total += ticks.get(pid) ?? 0;
-    stack.push(...(children.get(pid) ?? []));
-  }
-  return total / TICKS_PER_SECOND;
-}
 
 /** Every timed frame of each variant, in cycle order (frame i of every variant comes from cycle i): wall ms, CPU ms. */
 const wall = variants.map(() => /** @type {number[]} */ ([]));
@@ -131,15 +47,13 @@ const triangles = await page.evaluate((a) => window.lightingBench.prepare(a.vari
 });
 for (let i = 0; i < frames; i++) {
   for (let k = 0; k < variants.length; k++) {
-    const c0 = cpuSeconds();
+    const c0 = browserCpuSeconds();
     wall[k].push(await page.evaluate((n) => window.lightingBench.frame(n), k));
-    cpu[k].push((cpuSeconds() - c0) * 1000);
+    cpu[k].push((browserCpuSeconds() - c0) * 1000);
   }
   if ((i + 1) % 10 === 0) console.log(`${i + 1}/${frames} cycles`);
 }
-await browser.close();
-server.close();
-rmSync(outDir, { recursive: true, force: true });
+await pages.close();
 
 const median = (/** @type {number[]} */ xs) => summarize(xs).median;
 const at = (/** @type {string} */ name) => variants.findIndex(([n]) => n === name);

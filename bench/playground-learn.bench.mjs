@@ -4,7 +4,8 @@
 // the material's output and normalMatrix options, explainShade), with the node_modules as installed:
 // - the bundle index.html loads at start (raw and gzip -9, as scripts/bundle-size.mjs counts it);
 // - the first frame: navigation to the canvas's data-first-frame-ms, loads of the builds interleaved in rounds
-//   (so that load from other processes hits them alike); each ratio is the median of the per-round ratios.
+//   (each round starting at the next build, so that load from other processes and the order hit them alike);
+//   each ratio is the median of the per-round ratios.
 // Two befores: BEFORE, the last commit before issue 24's first (93437a3, explainShade), and COMMITTED, the commit
 // the playground's committed bundle and first-frame figures were measured at before issue 24 (issues 22, 23 and
 // 25 changed the playground between the two: the glTF model, WebGPU mode, the adaptive tool).
@@ -13,26 +14,16 @@
 //
 //   node bench/playground-learn.bench.mjs [--json PATH] [--rounds 15]
 import { execFileSync } from 'node:child_process';
-import {
-  createReadStream,
-  existsSync,
-  mkdtempSync,
-  readdirSync,
-  rmSync,
-  statSync,
-  symlinkSync,
-} from 'node:fs';
-import { createServer } from 'node:http';
+import { existsSync, mkdtempSync, readdirSync, rmSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { extname, join, normalize } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
-import { chromium } from '@playwright/test';
 import { build } from 'vite';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
+import { serveFolder } from '../scripts/serve.mjs';
 import { arg, writeResults } from './lib/bench.mjs';
+import { firstFrames } from './lib/browser.mjs';
 import { indexBundle } from './lib/bundle.mjs';
-import { recordBrowser } from './lib/meta.mjs';
 import { PLAYGROUND_FIRST_LOAD_BUDGET_GZIP, PLAYGROUND_LAZY_PARTS } from './lib/playground-budget.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -131,34 +122,6 @@ function lazyParts(/** @type {unknown} */ result, /** @type {string} */ repo) {
   });
 }
 
-/** @type {Record<string, string>} */
-const types = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.json': 'application/json',
-};
-
-/** Serves `dir` on a free loopback port. */
-async function serve(/** @type {string} */ dir) {
-  const server = createServer((req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-      /^(\.\.[/\\])+/,
-      '',
-    );
-    const file = join(dir, path === '/' || path === '\\' ? 'index.html' : path);
-    if (!file.startsWith(dir) || !existsSync(file) || !statSync(file).isFile()) {
-      res.writeHead(404).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(res);
-  });
-  await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-  const address = server.address();
-  return { server, url: `http://127.0.0.1:${typeof address === 'object' && address ? address.port : 0}/` };
-}
-
 const median = (/** @type {number[]} */ xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 const builds = [
@@ -170,32 +133,15 @@ try {
   const built = /** @type {Awaited<ReturnType<typeof buildPlayground>>[]} */ ([]);
   for (const b of builds) built.push(await buildPlayground(b.dir === root ? root : `${b.dir}/`));
   const servers = [];
-  for (const b of built) servers.push(await serve(b.outDir));
-  const browser = await chromium.launch({
-    executablePath: chromiumExecutable() ?? undefined,
-    args: chromiumArgs,
-  });
-  recordBrowser(`Chromium ${browser.version()}`);
-  /** @type {number[][]} */
-  const samples = builds.map(() => []);
+  for (const b of built) servers.push(await serveFolder(b.outDir));
+  let samples;
   try {
-    // One warm-up load each (fills the browser's caches for all alike), then the rounds; the order of the
-    // builds turns each round so that none always loads first.
-    for (let round = -1; round < rounds; round++) {
-      for (let j = 0; j < builds.length; j++) {
-        const k = (j + Math.max(round, 0)) % builds.length;
-        const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
-        await page.goto(servers[k].url);
-        const canvas = page.getByTestId('viewport');
-        await canvas.and(page.locator('[data-first-frame-ms]')).waitFor({ timeout: 60_000 });
-        const ms = Number(await canvas.getAttribute('data-first-frame-ms'));
-        await page.close();
-        if (round >= 0) samples[k].push(ms);
-      }
-    }
+    samples = await firstFrames(
+      servers.map((served) => served.url('')),
+      rounds,
+    );
   } finally {
-    await browser.close();
-    for (const { server } of servers) server.close();
+    for (const served of servers) await served.close();
   }
   const after = builds.length - 1;
   const ratioTo = (/** @type {number} */ k) => ({

@@ -3,31 +3,21 @@
 // packages as checked out, so that only the playground's own change is measured:
 // - the bundle index.html loads at start (raw and gzip -9, grouped as scripts/bundle-size.mjs groups it);
 // - the first frame: navigation to the canvas's data-first-frame-ms, loads of the two builds interleaved in
-//   rounds (so that load from other processes hits both alike); the ratio is the median of the per-round ratios.
+//   rounds, each round starting with the other build (so that load from other processes and the order hit both
+//   alike); the ratio is the median of the per-round ratios.
 // Target (issue 17): after ≤ 1.10 × before for both, or the reason stated (NOTE, printed with the table).
 //
 //   node bench/playground-refactor.bench.mjs [--json PATH] [--rounds 15]
 import { execFileSync } from 'node:child_process';
-import {
-  createReadStream,
-  existsSync,
-  mkdirSync,
-  mkdtempSync,
-  readdirSync,
-  rmSync,
-  statSync,
-  symlinkSync,
-} from 'node:fs';
-import { createServer } from 'node:http';
+import { mkdirSync, mkdtempSync, readdirSync, rmSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { extname, join, normalize } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
 import { build } from 'vite';
-import { chromiumArgs, chromiumExecutable } from '../scripts/browser.mjs';
+import { serveFolder } from '../scripts/serve.mjs';
 import { arg, writeResults } from './lib/bench.mjs';
+import { firstFrames } from './lib/browser.mjs';
 import { indexBundle } from './lib/bundle.mjs';
-import { recordBrowser } from './lib/meta.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 /** The last commit before issue 17 began (its first commit is 3fce741). */
@@ -70,34 +60,6 @@ async function buildPlayground(/** @type {string} */ playground) {
   return { outDir, bundle: indexBundle(result, root) };
 }
 
-/** @type {Record<string, string>} */
-const types = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.json': 'application/json',
-};
-
-/** Serves `dir` on a free loopback port. */
-async function serve(/** @type {string} */ dir) {
-  const server = createServer((req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-      /^(\.\.[/\\])+/,
-      '',
-    );
-    const file = join(dir, path === '/' || path === '\\' ? 'index.html' : path);
-    if (!file.startsWith(dir) || !existsSync(file) || !statSync(file).isFile()) {
-      res.writeHead(404).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(res);
-  });
-  await new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(undefined)));
-  const address = server.address();
-  return { server, url: `http://127.0.0.1:${typeof address === 'object' && address ? address.port : 0}/` };
-}
-
 const median = (/** @type {number[]} */ xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 const beforeDir = beforeCheckout();
@@ -105,30 +67,15 @@ mkdirSync(join(root, 'bench', 'results'), { recursive: true });
 try {
   const before = await buildPlayground(join(beforeDir, 'playground'));
   const after = await buildPlayground(join(root, 'playground'));
-  const servers = [await serve(before.outDir), await serve(after.outDir)];
-  const browser = await chromium.launch({
-    executablePath: chromiumExecutable() ?? undefined,
-    args: chromiumArgs,
-  });
-  recordBrowser(`Chromium ${browser.version()}`);
-  /** @type {number[][]} */
-  const samples = [[], []];
+  const servers = [await serveFolder(before.outDir), await serveFolder(after.outDir)];
+  let samples;
   try {
-    // One warm-up load each (compiles the browser's caches for both alike), then the rounds.
-    for (let round = -1; round < rounds; round++) {
-      for (let k = 0; k < 2; k++) {
-        const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
-        await page.goto(servers[k].url);
-        const canvas = page.getByTestId('viewport');
-        await canvas.and(page.locator('[data-first-frame-ms]')).waitFor({ timeout: 60_000 });
-        const ms = Number(await canvas.getAttribute('data-first-frame-ms'));
-        await page.close();
-        if (round >= 0) samples[k].push(ms);
-      }
-    }
+    samples = await firstFrames(
+      servers.map((served) => served.url('')),
+      rounds,
+    );
   } finally {
-    await browser.close();
-    for (const { server } of servers) server.close();
+    for (const served of servers) await served.close();
   }
   const ratios = samples[1].map((ms, i) => ms / samples[0][i]);
   const results = {

@@ -2,23 +2,14 @@
 // carries the playground (docs/api/playground/), and the concept page embeds its `?embed` view set to each
 // concept (the iframes of docs/concepts.md): served from the site's own folder, each opens the playground's embed
 // on the state its src names, with its control strip, and says nothing went wrong.
-import { createReadStream, existsSync, statSync } from 'node:fs';
-import { createServer, type Server } from 'node:http';
-import { extname, join, normalize } from 'node:path';
+import { existsSync } from 'node:fs';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, test } from '@playwright/test';
+import { serveFolder } from '../scripts/serve.mjs';
 
 const site = fileURLToPath(new URL('../docs/api', import.meta.url));
-const types: Record<string, string> = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.png': 'image/png',
-  '.svg': 'image/svg+xml',
-  '.json': 'application/json',
-};
-let server: Server | undefined;
-let origin = '';
+let served: Awaited<ReturnType<typeof serveFolder>> | undefined;
 
 test.beforeAll(async () => {
   if (!existsSync(join(site, 'playground', 'index.html'))) {
@@ -26,25 +17,9 @@ test.beforeAll(async () => {
       'docs/api/ has no playground: run `npm run docs` first (npm test builds the site before Playwright)',
     );
   }
-  server = createServer((req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(
-      /^(\.\.[/\\])+/,
-      '',
-    );
-    let file = join(site, path);
-    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
-    if (!file.startsWith(site) || !existsSync(file)) {
-      res.writeHead(404).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(res);
-  });
-  await new Promise<void>((resolve) => server?.listen(0, '127.0.0.1', resolve));
-  const address = server.address();
-  origin = `http://127.0.0.1:${typeof address === 'object' && address ? address.port : 0}`;
+  served = await serveFolder(site);
 });
-test.afterAll(() => server?.close());
+test.afterAll(() => served?.close());
 
 test('the concept page embeds the playground’s ?embed view at each concept’s state, served with the site', async ({
   page,
@@ -56,7 +31,7 @@ test('the concept page embeds the playground’s ?embed view at each concept’s
   page.on('console', (m) => {
     if (m.type() === 'error' && theirs(m.location().url)) errors.push(`${m.text()} ${m.location().url}`);
   });
-  await page.goto(`${origin}/documents/concepts.html`);
+  await page.goto(served?.url('documents/concepts.html') ?? '');
   const frames = page.locator('iframe.playground-embed');
   await expect(frames).toHaveCount(6);
   for (let i = 0; i < 6; i++) {

@@ -12,12 +12,11 @@
 //   |v| ≤ hy/((E − hz)·t); the sides face away from an eye inside their extent.
 // Samples lie at r times the silhouette's boundary in 36 directions: r < 1 inside, r > 1 outside, 10 % clear
 // of the silhouette (a mesh lies inside its true surface by far less, and the edge pixels are antialiased).
-import { createReadStream, existsSync, statSync } from 'node:fs';
-import { createServer } from 'node:http';
-import type { AddressInfo } from 'node:net';
-import { extname, join, normalize } from 'node:path';
 import { expect, type Page } from '@playwright/test';
 import { build, type PluginOption } from 'vite';
+import { serveFolder } from '../scripts/serve.mjs';
+
+export { serveFiles } from '../scripts/serve.mjs';
 
 type Vec3 = readonly [number, number, number];
 
@@ -250,40 +249,6 @@ export function collectPageErrors(page: Page): string[] {
   return errors;
 }
 
-const TYPES: Record<string, string> = {
-  '.html': 'text/html',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.svg': 'image/svg+xml',
-};
-
-/**
- * Serve files over HTTP on a free port of 127.0.0.1: `fileFor` maps a URL path (decoded) to a file, or
- * undefined for a 404. Resolves with the origin and a `close()`.
- */
-export function serveFiles(
-  fileFor: (path: string) => string | undefined,
-): Promise<{ origin: string; close: () => Promise<void> }> {
-  const server = createServer((req, res) => {
-    const url = new URL(req.url ?? '/', 'http://localhost');
-    const file = fileFor(decodeURIComponent(url.pathname));
-    if (!file || !existsSync(file) || !statSync(file).isFile()) {
-      res.writeHead(404).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(res);
-  });
-  return new Promise((resolve) => {
-    server.listen(0, '127.0.0.1', () =>
-      resolve({
-        origin: `http://127.0.0.1:${(server.address() as AddressInfo).port}`,
-        close: () => new Promise<void>((done) => server.close(() => done())),
-      }),
-    );
-  });
-}
-
 /**
  * Build the pages `input` (name → index.html under `root`) with Vite into `outDir` and serve them: resolves with
  * the origin and a `close()`. Shared by the specs that bundle pages of their own (snippets, react).
@@ -307,8 +272,5 @@ export async function buildAndServePages({
     plugins,
     build: { outDir, emptyOutDir: true, chunkSizeWarningLimit: 4096, rollupOptions: { input } },
   });
-  return serveFiles((path) => {
-    const file = normalize(join(outDir, path.endsWith('/') ? `${path}index.html` : path));
-    return file.startsWith(outDir) ? file : undefined;
-  });
+  return serveFolder(outDir);
 }
