@@ -1,6 +1,7 @@
 // `node scripts/pack.mjs [--out DIR] [--json PATH]`: build every package with `tsc -b`, then `npm pack` each one
 // into DIR (a new temporary folder by default) and print what each tarball holds: packed and unpacked size and
-// file count. tests/pack.spec.ts imports `packPackages` to install the tarballs into fresh apps.
+// file count. The tests install the tarballs of the packages as `npm test` built them (`packBuilt`) into fresh
+// apps.
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -55,13 +56,25 @@ function mustRun(cmd, args) {
  * @returns {PackedPackage[]}
  */
 export function packPackages(outDir = mkdtempSync(join(tmpdir(), 'shadelab-pack-'))) {
-  mkdirSync(outDir, { recursive: true });
   // A clean build: tsc -b never deletes the output of a source file that was removed or renamed, and npm
   // pack would ship it.
   for (const p of PACKAGES) rmSync(join(root, 'packages', p, 'dist'), { recursive: true, force: true });
   mustRun('npx', ['tsc', '-b', ...PACKAGES.map((p) => join('packages', p))]);
-  return PACKAGES.map((p) => {
-    // --ignore-scripts: packing must not depend on lifecycle scripts; the build above is the only step.
+  return packBuilt(outDir);
+}
+
+/**
+ * `npm pack` the packages `folders` (under packages/) as they are built now (their dist/, from `npx tsc -b`),
+ * without building them: what the tests install (`npm test` builds first; nothing empties dist/ while they run).
+ * Throws, naming them, when a source file of the package has no build.
+ * @param {string} outDir folder for the tarballs
+ * @param {readonly string[]} [folders] the packages, as folder names; every published one by default
+ * @returns {PackedPackage[]}
+ */
+export function packBuilt(outDir, folders = PACKAGES) {
+  mkdirSync(outDir, { recursive: true });
+  return folders.map((p) => {
+    // --ignore-scripts: packing must not depend on lifecycle scripts; the build is the only step.
     const out = mustRun('npm', [
       'pack',
       // A leading ./ so npm reads a folder, not a GitHub shorthand (`packages/sphere`).
@@ -74,6 +87,17 @@ export function packPackages(outDir = mkdtempSync(join(tmpdir(), 'shadelab-pack-
       'error',
     ]);
     const [info] = JSON.parse(out);
+    /** @type {string[]} */
+    const files = info.files.map((/** @type {{ path: string }} */ f) => f.path);
+    const unbuilt = files
+      .filter((f) => /^src\/[^/]+\.tsx?$/.test(f) && !/\.(test|d)\.tsx?$/.test(f))
+      .map((f) => f.replace(/^src\/(.*)\.tsx?$/, 'dist/$1.js'))
+      .filter((js) => !files.includes(js));
+    if (unbuilt.length > 0) {
+      throw new Error(
+        `packages/${p} is not built (${unbuilt.slice(0, 3).join(', ')} missing): run \`npx tsc -b\``,
+      );
+    }
     return {
       name: info.name,
       version: info.version,
@@ -81,7 +105,7 @@ export function packPackages(outDir = mkdtempSync(join(tmpdir(), 'shadelab-pack-
       size: info.size,
       unpackedSize: info.unpackedSize,
       entryCount: info.entryCount,
-      files: info.files.map((/** @type {{ path: string }} */ f) => f.path),
+      files,
     };
   });
 }

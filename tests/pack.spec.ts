@@ -7,14 +7,15 @@
 // type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
-import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, normalize, posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, type Page, test } from '@playwright/test';
 import { markdownLinks } from '../scripts/check-links.mjs';
-import { type PackedPackage, packPackages } from '../scripts/pack.mjs';
+import { type PackedPackage, packBuilt } from '../scripts/pack.mjs';
 import { collectBlocks } from '../scripts/snippets.mjs';
+import { APP_DEPENDENCIES, installedApp, R3F_DEPENDENCIES, run } from '../tools/pack-apps/installed.mjs';
 import {
   collectPageErrors,
   expectScenePicture,
@@ -33,14 +34,6 @@ const LECTURE_PACKAGES = [
   '@shadelab/material',
 ];
 
-/** Dependencies of every app, at the versions the repository itself uses (npm's cache usually has them). */
-const common = {
-  three: '^0.187.0',
-  '@types/three': '^0.187.0',
-  vite: '^8.3.8',
-  // What most users have: our declarations must work with TypeScript 5, not only with the repo's TypeScript 7.
-  typescript: '~5.9.3',
-};
 /** The oldest three and @types/three we support, as pinned for scripts/three-compat.mjs. */
 const oldest = (
   JSON.parse(readFileSync(join(repo, 'tools', 'three-compat', 'package.json'), 'utf8')) as {
@@ -113,13 +106,7 @@ const apps = {
   r3f: {
     template: 'r3f',
     main: r3fGuideApp,
-    dependencies: {
-      react: '^19.3.1',
-      'react-dom': '^19.3.1',
-      '@types/react': '^19.3.0',
-      '@types/react-dom': '^19.3.0',
-      '@react-three/fiber': '^9.4.0',
-    },
+    dependencies: R3F_DEPENDENCIES,
   },
   // docs/testing.md's app: its scene tested with @shadelab/playwright, from the tarball, with Playwright itself.
   playwright: {
@@ -144,25 +131,6 @@ let closeServer: (() => Promise<void>) | undefined;
 let origin = '';
 const timings: Record<string, number> = {};
 
-/** Run a command in `cwd`; resolves with its output, rejects with the output when it fails. */
-function run(cmd: string, args: string[], cwd: string): Promise<string> {
-  return new Promise((resolve, reject) => {
-    const child = spawn(cmd, args, { cwd, env: { ...process.env, CI: '1' } });
-    let out = '';
-    child.stdout.on('data', (d) => {
-      out += d;
-    });
-    child.stderr.on('data', (d) => {
-      out += d;
-    });
-    child.on('error', reject);
-    child.on('close', (code) => {
-      if (code === 0) resolve(out);
-      else reject(new Error(`\`${cmd} ${args.join(' ')}\` in ${cwd} failed with exit code ${code}:\n${out}`));
-    });
-  });
-}
-
 async function timed<T>(label: string, work: () => Promise<T>): Promise<T> {
   const t0 = performance.now();
   const result = await work();
@@ -186,23 +154,32 @@ async function makeApp(app: App): Promise<void> {
     }
   }
   // The test kit only where it is used: the other apps are the three.js apps users ship.
-  const tarballs = Object.fromEntries(
-    packed
-      .filter((p) => app === 'playwright' || p.name !== '@shadelab/playwright')
-      // @shadelab/react only in the R3F app (its peers, react and @react-three/fiber, are that app's).
-      .filter((p) => app === 'r3f' || p.name !== '@shadelab/react')
-      .map((p) => [p.name, `file:${p.tarball}`]),
-  );
+  const installed = packed
+    .filter((p) => app === 'playwright' || p.name !== '@shadelab/playwright')
+    // @shadelab/react only in the R3F app (its peers, react and @react-three/fiber, are that app's).
+    .filter((p) => app === 'r3f' || p.name !== '@shadelab/react');
+  const dependencies = { ...APP_DEPENDENCIES, ...apps[app].dependencies };
   const pkg = {
     name: `shadelab-pack-${app}`,
     private: true,
     type: 'module',
-    dependencies: { ...common, ...apps[app].dependencies, ...tarballs },
+    dependencies: {
+      ...dependencies,
+      ...Object.fromEntries(installed.map((p) => [p.name, `file:${p.tarball}`])),
+    },
   };
   writeFileSync(join(dir, 'package.json'), `${JSON.stringify(pkg, null, 2)}\n`);
-  await timed(`${app}: npm install`, () =>
-    run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel', 'error'], dir),
-  );
+  if (app === 'r3f') {
+    // The very install tests/playground-copy-code.spec.ts asks for (these tarballs and dependencies): one for both.
+    const shared = await timed(`${app}: npm install (shared)`, () =>
+      installedApp({ dependencies, tarballs: installed }),
+    );
+    symlinkSync(join(shared, 'node_modules'), join(dir, 'node_modules'), 'dir');
+  } else {
+    await timed(`${app}: npm install`, () =>
+      run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel', 'error'], dir),
+    );
+  }
   await timed(`${app}: tsc --noEmit`, () => run('npx', ['--no-install', 'tsc', '--noEmit', '-p', '.'], dir));
   await timed(`${app}: vite build`, () =>
     run('npx', ['--no-install', 'vite', 'build', '--base', './', '--logLevel', 'warn'], dir),
@@ -288,7 +265,7 @@ test.beforeAll(async () => {
   // npm install of five apps, five strict type checks and five Vite builds on a 2-core machine.
   test.setTimeout(720_000);
   tmp = mkdtempSync(join(tmpdir(), 'shadelab-pack-'));
-  packed = await timed('pack (tsc -b, npm pack)', async () => packPackages(join(tmp, 'tarballs')));
+  packed = await timed('npm pack', async () => packBuilt(join(tmp, 'tarballs')));
   await Promise.all((Object.keys(apps) as App[]).map(makeApp));
   origin = await serve();
 });
@@ -344,7 +321,7 @@ test('each tarball holds its ESM build, declarations, README and package.json, a
       const source = js.replace(/^dist\/(.*)\.js$/, 'src/$1');
       expect(
         ['ts', 'tsx', 'js'].some((ext) => p.files.includes(`${source}.${ext}`)),
-        `${p.name}: ${js} has no source`,
+        `${p.name}: ${js} has no source (left by a removed or renamed file? \`npm run pack\` builds from scratch)`,
       ).toBe(true);
     }
   }

@@ -16,7 +16,8 @@ import { expect, type Page, test } from '@playwright/test';
 import { compareNeighbourhood, decodePng, type RgbaImage } from '@shadelab/playwright/test';
 import { type CodeVariant, programOf } from '../playground/src/learn/copyCode';
 import { validateState } from '../playground/src/state/schema';
-import { installedApp, packBuilt, run } from '../tools/pack-apps/installed.mjs';
+import { packBuilt } from '../scripts/pack.mjs';
+import { APP_DEPENDENCIES, installedApp, R3F_DEPENDENCIES, run } from '../tools/pack-apps/installed.mjs';
 import { collectPageErrors, serveFiles } from './picture-helpers';
 import { open } from './playground-helpers';
 
@@ -104,7 +105,7 @@ test.describe.configure({ mode: 'serial' });
 test.beforeAll(async () => {
   // npm pack of six packages and, unless another spec or an earlier run installed the same, one npm install.
   test.setTimeout(420_000);
-  const tarballs = await packBuilt(mkdtempSync(join(tmpdir(), 'shadelab-copy-code-tgz-')), [
+  const tarballs = packBuilt(mkdtempSync(join(tmpdir(), 'shadelab-copy-code-tgz-')), [
     'sphere',
     'camera',
     'trackball',
@@ -113,17 +114,7 @@ test.beforeAll(async () => {
     'react',
   ]);
   const shared = await installedApp({
-    dependencies: {
-      three: '^0.187.0',
-      '@types/three': '^0.187.0',
-      vite: '^8.3.8',
-      typescript: '~5.9.3',
-      react: '^19.3.1',
-      'react-dom': '^19.3.1',
-      '@types/react': '^19.3.0',
-      '@types/react-dom': '^19.3.0',
-      '@react-three/fiber': '^9.4.0',
-    },
+    dependencies: { ...APP_DEPENDENCIES, ...R3F_DEPENDENCIES },
     tarballs,
   });
   for (const { tarball } of tarballs) rmSync(tarball, { force: true });

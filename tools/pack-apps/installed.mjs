@@ -2,15 +2,30 @@
 // Playwright run that asks for the same tarballs and dependencies, and by later runs while they stay the same
 // (the folder is named by a hash of the tarballs' bytes and the dependency list). A spec makes its own app folder
 // and links its node_modules here, so no spec pays for a second `npm install` of the same app
-// (tests/playground-copy-code.spec.ts; tests/pack.spec.ts can take its R3F app's install from here too).
-import { spawn, spawnSync } from 'node:child_process';
+// (tests/playground-copy-code.spec.ts and tests/pack.spec.ts's R3F app share one).
+import { spawn } from 'node:child_process';
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { join } from 'node:path';
 
-const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+/** What every fresh app depends on, at the versions the repository itself uses (npm's cache usually has them). */
+export const APP_DEPENDENCIES = {
+  three: '^0.187.0',
+  '@types/three': '^0.187.0',
+  vite: '^8.3.8',
+  // What most users have: our declarations must work with TypeScript 5, not only with the repo's TypeScript 7.
+  typescript: '~5.9.3',
+};
+
+/** What a React Three Fiber app adds (with the tarball of @shadelab/react). */
+export const R3F_DEPENDENCIES = {
+  react: '^19.3.1',
+  'react-dom': '^19.3.1',
+  '@types/react': '^19.3.0',
+  '@types/react-dom': '^19.3.0',
+  '@react-three/fiber': '^9.4.0',
+};
 
 /** Where the shared installs live. */
 export const INSTALLS = join(tmpdir(), 'shadelab-pack-apps');
@@ -42,55 +57,6 @@ export function run(cmd, args, cwd) {
       else reject(new Error(`\`${cmd} ${args.join(' ')}\` in ${cwd} failed with exit code ${code}:\n${out}`));
     });
   });
-}
-
-/**
- * `npm pack` the packages `folders` (under packages/) as they are built now (their dist/, from `npx tsc -b`),
- * without rebuilding them: another spec may be packing them at the same time (scripts/pack.mjs empties dist/
- * first). A tarball missing the build of one of its sources is packed again, up to `tries` times, 5 s apart.
- * @param {string} outDir @param {readonly string[]} folders @param {number} [tries]
- * @returns {Promise<{ name: string; tarball: string }[]>}
- */
-export async function packBuilt(outDir, folders, tries = 24) {
-  mkdirSync(outDir, { recursive: true });
-  const packed = [];
-  for (const folder of folders) {
-    for (let attempt = 1; ; attempt++) {
-      const r = spawnSync(
-        'npm',
-        [
-          'pack',
-          `./packages/${folder}`,
-          '--pack-destination',
-          outDir,
-          '--json',
-          '--ignore-scripts',
-          '--loglevel',
-          'error',
-        ],
-        { cwd: repo, encoding: 'utf8', maxBuffer: 64 * 1024 * 1024 },
-      );
-      if (r.status !== 0) throw new Error(`npm pack packages/${folder} failed:\n${r.stdout}\n${r.stderr}`);
-      const [info] = JSON.parse(r.stdout);
-      /** @type {string[]} */
-      const files = info.files.map((/** @type {{ path: string }} */ f) => f.path);
-      const missing = files
-        .filter((f) => /^src\/[^/]+\.(ts|tsx)$/.test(f) && !/\.test\.tsx?$/.test(f) && !f.endsWith('.d.ts'))
-        .map((f) => f.replace(/^src\/(.*)\.tsx?$/, 'dist/$1.js'))
-        .filter((js) => !files.includes(js));
-      if (missing.length === 0) {
-        packed.push({ name: info.name, tarball: join(outDir, info.filename) });
-        break;
-      }
-      if (attempt >= tries) {
-        throw new Error(
-          `packages/${folder} is not built (${missing.slice(0, 3).join(', ')} missing): run \`npx tsc -b\``,
-        );
-      }
-      await new Promise((done) => setTimeout(done, 5000));
-    }
-  }
-  return packed;
 }
 
 /**
