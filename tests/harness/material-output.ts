@@ -15,21 +15,15 @@ import {
 } from '@shadelab/material';
 import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
 import {
-  AmbientLight,
   Color,
-  DirectionalLight,
-  HemisphereLight,
-  type Light,
   type Material,
   Matrix3,
   Mesh,
   MeshNormalMaterial,
   type Object3D,
   PerspectiveCamera,
-  PointLight,
   Raycaster,
   Scene,
-  SpotLight,
   Vector2,
   Vector3,
   WebGLRenderer,
@@ -37,6 +31,7 @@ import {
 } from 'three';
 import { MeshNormalNodeMaterial, RenderTarget } from 'three/webgpu';
 import { hasRgb } from './lib/pixels';
+import { fiveThreeLights } from './lib/threeLights';
 import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 import { sphereGeometry } from './material-sphere';
 
@@ -114,56 +109,6 @@ function phongLights(): { lights: PhongLight[]; shade: ShadeLight[] } {
   };
 }
 
-/** three's five light kinds, with shade()'s description of each. */
-function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
-  const ambient = new AmbientLight(new Color(0.3, 0.25, 0.2), 0.5);
-  const hemisphere = new HemisphereLight(new Color(0.2, 0.3, 0.5), new Color(0.3, 0.2, 0.1), 0.8);
-  hemisphere.position.set(0.3, 1, 0.2);
-  const directional = new DirectionalLight(new Color(1, 0.95, 0.9), 0.8);
-  directional.position.set(-1, 2, 3);
-  const point = new PointLight(new Color(0.9, 0.9, 1), 4, 0, 2);
-  point.position.set(2, 1, 2);
-  const spot = new SpotLight(new Color(1, 0.8, 0.6), 6, 0, 0.35, 0.5, 2);
-  spot.position.set(-1, -2, 2.5);
-  for (const light of [hemisphere, directional, point, spot]) light.updateMatrixWorld();
-  spot.target.updateMatrixWorld();
-  const scaled = (c: Color, i: number) => [c.r * i, c.g * i, c.b * i];
-  return {
-    lights: [ambient, hemisphere, directional, point, spot],
-    shade: [
-      { type: 'ambient', color: scaled(ambient.color, ambient.intensity) },
-      {
-        type: 'hemisphere',
-        color: scaled(hemisphere.color, hemisphere.intensity),
-        groundColor: scaled(hemisphere.groundColor, hemisphere.intensity),
-        direction: hemisphere.position.clone().normalize().toArray(),
-      },
-      {
-        type: 'directional',
-        color: scaled(directional.color, directional.intensity),
-        direction: directional.position.clone().normalize().toArray(),
-      },
-      {
-        type: 'point',
-        color: scaled(point.color, point.intensity),
-        position: point.position.toArray(),
-        distance: 0,
-        decay: 2,
-      },
-      {
-        type: 'spot',
-        color: scaled(spot.color, spot.intensity),
-        position: spot.position.toArray(),
-        direction: spot.position.clone().sub(spot.target.position).normalize().toArray(),
-        distance: 0,
-        decay: 2,
-        coneCos: Math.cos(spot.angle),
-        penumbraCos: Math.cos(spot.angle * (1 - spot.penumbra)),
-      },
-    ],
-  };
-}
-
 /** The model: the lecture's sphere (a triangle soup with smooth vertex normals), turned and scaled. */
 function meshOf(material: Material, scale: readonly [number, number, number]): Mesh {
   const mesh = new Mesh(sphereGeometry(LEVEL, true), material);
@@ -220,7 +165,7 @@ async function draw(renderer: RendererKind, mesh: Mesh, lights: readonly Object3
 }
 
 function lightsOf(kind: Lights): { lights: Object3D[]; shade: (ShadeLight | ShadeThreeLight)[] } {
-  return kind === 'phong' ? phongLights() : threeLights();
+  return kind === 'phong' ? phongLights() : fiveThreeLights();
 }
 
 /** The case drawn: its pixels, and the mesh and lights it was drawn with. */

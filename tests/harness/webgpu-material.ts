@@ -26,9 +26,7 @@ import {
   Fog,
   FogExp2,
   FrontSide,
-  HemisphereLight,
   InstancedMesh,
-  type Light,
   LinearFilter,
   type Material,
   Matrix3,
@@ -38,12 +36,10 @@ import {
   Object3D,
   ObjectSpaceNormalMap,
   PerspectiveCamera,
-  PointLight,
   Raycaster,
   RGBAFormat,
   Scene,
   type Side,
-  SpotLight,
   SRGBColorSpace,
   Vector2,
   Vector3,
@@ -53,6 +49,7 @@ import {
 import { MeshLambertNodeMaterial, MeshPhongNodeMaterial, RenderTarget } from 'three/webgpu';
 import { thrown } from './lib/errors';
 import { hasRgb, maxRgbDelta } from './lib/pixels';
+import { fiveThreeLights } from './lib/threeLights';
 import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 
 type Shading = 'flat' | 'gouraud' | 'phong';
@@ -274,57 +271,6 @@ function geometryOf(scenario: Scenario, backend: Backend | 'webgl'): BufferGeome
   return geometry;
 }
 
-/** three's lights of the 'three-lights' scenario, with what shade() is given for each. */
-function threeLights(): { lights: Light[]; shade: ShadeThreeLight[] } {
-  const ambient = new AmbientLight(new Color(0.3, 0.25, 0.2), 0.5);
-  const hemisphere = new HemisphereLight(new Color(0.2, 0.3, 0.5), new Color(0.3, 0.2, 0.1), 0.8);
-  hemisphere.position.set(0.3, 1, 0.2);
-  const directional = new DirectionalLight(new Color(1, 0.95, 0.9), 0.8);
-  directional.position.set(-1, 2, 3);
-  const point = new PointLight(new Color(0.9, 0.9, 1), 4, 0, 2);
-  point.position.set(2, 1, 2);
-  // Aimed at the origin (its target's default), the cone's soft edge across the sphere.
-  const spot = new SpotLight(new Color(1, 0.8, 0.6), 6, 0, 0.35, 0.5, 2);
-  spot.position.set(-1, -2, 2.5);
-  spot.updateMatrixWorld();
-  spot.target.updateMatrixWorld();
-  const scaled = (c: Color, i: number) => [c.r * i, c.g * i, c.b * i];
-  return {
-    lights: [ambient, hemisphere, directional, point, spot],
-    shade: [
-      { type: 'ambient', color: scaled(ambient.color, ambient.intensity) },
-      {
-        type: 'hemisphere',
-        color: scaled(hemisphere.color, hemisphere.intensity),
-        groundColor: scaled(hemisphere.groundColor, hemisphere.intensity),
-        direction: hemisphere.position.clone().normalize().toArray(),
-      },
-      {
-        type: 'directional',
-        color: scaled(directional.color, directional.intensity),
-        direction: directional.position.clone().normalize().toArray(),
-      },
-      {
-        type: 'point',
-        color: scaled(point.color, point.intensity),
-        position: point.position.toArray(),
-        distance: 0,
-        decay: 2,
-      },
-      {
-        type: 'spot',
-        color: scaled(spot.color, spot.intensity),
-        position: spot.position.toArray(),
-        direction: spot.position.clone().sub(spot.target.position).normalize().toArray(),
-        distance: 0,
-        decay: 2,
-        coneCos: Math.cos(spot.angle),
-        penumbraCos: Math.cos(spot.angle * (1 - spot.penumbra)),
-      },
-    ],
-  };
-}
-
 function scene(
   material: Material,
   scenario: Scenario = 'lecture',
@@ -365,7 +311,7 @@ function scene(
   if (scenario === 'fog') s.fog = new Fog(new Color(0.2, 0.4, 0.6), 1.9, 3.2);
   let lights: (ShadeLight | ShadeThreeLight)[];
   if (scenario === 'three-lights') {
-    const three = threeLights();
+    const three = fiveThreeLights();
     s.add(...three.lights);
     lights = three.shade;
   } else {
