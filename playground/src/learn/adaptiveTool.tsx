@@ -14,7 +14,7 @@ import type { PlaygroundState } from '../state/schema';
 import type { StatsFeed } from '../ui/Stats';
 import type { Update } from '../ui/useFolder';
 import type { AdaptiveMeasured, AdaptiveRun, AdaptiveUnit } from './adaptiveRun';
-import { LEARN_PANEL } from './profileTool';
+import { LEARN_PANEL } from './learnTool';
 
 /** The heat map's colour of a choice: green Phong at full detail, teal coarser levels, blue Gouraud, orange flat. */
 export function heatColor(key: string): string {

@@ -3,12 +3,10 @@
  * slide live (`normalMatrixView.tsx`, loaded when first opened): the sphere shaded with (M⁻¹)ᵀ and with M side by
  * side, with the tangent and both normals at the probed point.
  */
-import { lazy, type RefObject, Suspense, useState } from 'react';
-import { createPortal } from 'react-dom';
+import { lazy, type RefObject, Suspense } from 'react';
 import type { Viewer } from '../engine/viewer/Viewer';
-import { isEmbedded } from '../state/embed';
 import type { PlaygroundState } from '../state/schema';
-import { LEARN_PANEL } from './profileTool';
+import { LEARN_PANEL, LearnTool } from './learnTool';
 
 const NormalMatrixView = lazy(() => import('./normalMatrixView'));
 
@@ -20,33 +18,21 @@ export function NormalMatrixTool({
   viewerRef: RefObject<Viewer | null>;
   state: PlaygroundState;
 }) {
-  const [open, setOpen] = useState(false);
-  if (isEmbedded()) return null;
-  // Over the canvas: in its parent, the stage (this button sits in the hint line).
-  const stage = open ? viewerRef.current?.canvas.parentElement : null;
   return (
-    <>
-      <button
-        type="button"
-        aria-pressed={open}
-        title="The sphere shaded with the normal matrix (M⁻¹)ᵀ and with M side by side, with the tangent and both normals at the probed point"
-        onClick={() => setOpen(!open)}
+    <LearnTool
+      viewerRef={viewerRef}
+      label="normal matrix"
+      title="The sphere shaded with the normal matrix (M⁻¹)ᵀ and with M side by side, with the tangent and both normals at the probed point"
+    >
+      <section
+        style={{ ...LEARN_PANEL, left: 8, right: 'auto', top: 8, width: 'min(360px, calc(100% - 16px))' }}
+        aria-label="The normal matrix"
+        data-testid="normal-matrix-panel"
       >
-        normal matrix
-      </button>
-      {stage &&
-        createPortal(
-          <section
-            style={{ ...LEARN_PANEL, left: 8, right: 'auto', top: 8, width: 'min(360px, calc(100% - 16px))' }}
-            aria-label="The normal matrix"
-            data-testid="normal-matrix-panel"
-          >
-            <Suspense fallback="Loading the figure…">
-              <NormalMatrixView viewerRef={viewerRef} state={state} />
-            </Suspense>
-          </section>,
-          stage,
-        )}
-    </>
+        <Suspense fallback="Loading the figure…">
+          <NormalMatrixView viewerRef={viewerRef} state={state} />
+        </Suspense>
+      </section>
+    </LearnTool>
   );
 }

@@ -8,10 +8,10 @@
 import { type RefObject, useEffect, useState } from 'react';
 import type { Viewer } from '../engine/viewer/Viewer';
 import type { PlaygroundState } from '../state/schema';
+import { LEARN_PANEL } from './learnTool';
 import { type CanvasPoint, linePixels } from './profileLine';
 import ProfilePlot from './profilePlot';
 import { type ProfileSamples, sampleProfile } from './profileSample';
-import { LEARN_PANEL } from './profileTool';
 
 /** A segment on the canvas, drawing-buffer pixels. */
 type Segment = { from: CanvasPoint; to: CanvasPoint };
