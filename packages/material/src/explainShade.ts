@@ -1,19 +1,16 @@
 // The lecture's equation at one point, term by term: what `shade()` sums, kept apart. Three-free.
 import { linearToSrgb8 } from './linearToSrgb8.js';
 import {
-  celDiffuse,
-  celSpecular,
-  MIN_ATTENUATION_DENOMINATOR,
+  lightFactors,
+  newLightFactors,
   RECIPROCAL_PI,
   type ShadeLight,
   type ShadeMaterial,
   type ShadeSample,
   type ShadeThreeLight,
-  smoothstep,
-  specularPower,
-  threeDistanceFalloff,
+  viewAndNormal,
 } from './shade.js';
-import { dot, length, normalizeOr, sub, type Vec3, type Vec3Like } from './vec3.js';
+import type { Vec3, Vec3Like } from './vec3.js';
 
 /** One light's part of the lecture's equation at a point (all vectors world space, unit length). */
 export interface LightExplanation {
@@ -77,10 +74,7 @@ export interface ShadeExplanation {
   readonly srgb8: [number, number, number];
 }
 
-const AXIS_Z: Vec3Like = [0, 0, 1];
 const WHITE: Vec3Like = [1, 1, 1];
-const ZERO: Vec3Like = [0, 0, 0];
-const UP: Vec3Like = [0, 1, 0];
 
 const copy = (a: Vec3Like): Vec3 => [a[0], a[1], a[2]];
 
@@ -127,145 +121,75 @@ export function explainShade(
   checkVector('sample.eye', sample?.eye, 3);
   if (!Array.isArray(lights))
     throw new TypeError(`explainShade: lights must be an array, got ${String(lights)}`);
-  const { position: p, normal, eye, tint = WHITE } = sample;
-  const { ka, kd, ks, shininess, lighting = 'phong', celBands = 0 } = material;
-  const eyeW = eye.length > 3 ? eye[3] : 1;
-  const toEye: Vec3 = [eye[0] - p[0] * eyeW, eye[1] - p[1] * eyeW, eye[2] - p[2] * eyeW];
+  const { position: p, tint = WHITE } = sample;
+  const { ka, kd, ks, lighting = 'phong', celBands = 0 } = material;
   const v: Vec3 = [0, 0, 0];
   const n: Vec3 = [0, 0, 0];
-  const hasView = normalizeOr(v, toEye, AXIS_Z);
-  normalizeOr(n, normal, v);
-  if (!hasView) {
-    v[0] = n[0];
-    v[1] = n[1];
-    v[2] = n[2];
-  }
+  viewAndNormal(sample, v, n);
+  const f = newLightFactors();
   const explained: LightExplanation[] = [];
   let r = 0;
   let g = 0;
   let b = 0;
   for (const light of lights) {
-    let ia: Vec3Like = ZERO;
-    let id: Vec3Like;
-    let is: Vec3Like;
-    let att = 1;
-    let falloff = 1;
-    let t: number | null = null;
-    const l: Vec3 = [0, 0, 0];
-    if ('type' in light) {
-      const { type, color, position = ZERO, direction = UP, distance = 0, decay = 2 } = light;
-      if (type === 'ambient' || type === 'hemisphere') {
-        if (type === 'ambient') ia = color;
-        else {
-          const ground = light.groundColor ?? ZERO;
-          const w = 0.5 * dot(n, direction) + 0.5;
-          ia = [0, 1, 2].map((k) => ground[k] + (color[k] - ground[k]) * w);
-        }
-        const ambient: Vec3 = [
-          tint[0] * ka[0] * ia[0] * RECIPROCAL_PI,
-          tint[1] * ka[1] * ia[1] * RECIPROCAL_PI,
-          tint[2] * ka[2] * ia[2] * RECIPROCAL_PI,
-        ];
-        r += ambient[0];
-        g += ambient[1];
-        b += ambient[2];
-        const none: Vec3 = [0, 0, 0];
-        explained.push({
-          kind: type,
-          l: null,
-          t: null,
-          attenuation: 0,
-          v: copy(v),
-          r: null,
-          h: null,
-          lDotN: null,
-          cosine: 0,
-          diffuseFactor: 0,
-          specularFactor: 0,
-          band: null,
-          ia: [ia[0] * RECIPROCAL_PI, ia[1] * RECIPROCAL_PI, ia[2] * RECIPROCAL_PI],
-          id: [0, 0, 0],
-          is: [0, 0, 0],
-          ambient,
-          diffuse: none,
-          specular: [0, 0, 0],
-        });
-        continue;
-      }
-      id = color;
-      is = color;
-      att = RECIPROCAL_PI;
-      if (type === 'directional') {
-        l[0] = direction[0];
-        l[1] = direction[1];
-        l[2] = direction[2];
-      } else {
-        sub(l, position, p);
-        t = length(l);
-        normalizeOr(l, l, n);
-        falloff = threeDistanceFalloff(t, distance, decay);
-        att *= falloff;
-        if (type === 'spot') {
-          const cone = smoothstep(light.coneCos ?? 0, light.penumbraCos ?? 0, dot(l, direction));
-          att *= cone;
-          falloff *= cone;
-        }
-      }
-    } else {
-      ({ ambient: ia, diffuse: id, specular: is } = light);
-      const { attenuation } = light;
-      sub(l, light.position, p);
-      t = length(l);
-      normalizeOr(l, l, n);
-      if (attenuation !== undefined) {
-        att =
-          1 /
-          Math.max(attenuation.a + attenuation.b * t + attenuation.c * t * t, MIN_ATTENUATION_DENOMINATOR);
-      }
-      falloff = att;
+    lightFactors(light, p, n, v, material, f);
+    const { ia, id, is, l, ndl } = f;
+    if (f.ambientOnly) {
+      // The same operations as shade()'s, so that the sum is its sum to the bit.
+      const ambient: Vec3 = [
+        tint[0] * ka[0] * ia[0] * RECIPROCAL_PI,
+        tint[1] * ka[1] * ia[1] * RECIPROCAL_PI,
+        tint[2] * ka[2] * ia[2] * RECIPROCAL_PI,
+      ];
+      r += ambient[0];
+      g += ambient[1];
+      b += ambient[2];
+      explained.push({
+        kind: (light as ShadeThreeLight).type,
+        l: null,
+        t: null,
+        attenuation: 0,
+        v: copy(v),
+        r: null,
+        h: null,
+        lDotN: null,
+        cosine: 0,
+        diffuseFactor: 0,
+        specularFactor: 0,
+        band: null,
+        ia: [ia[0] * RECIPROCAL_PI, ia[1] * RECIPROCAL_PI, ia[2] * RECIPROCAL_PI],
+        id: [0, 0, 0],
+        is: [0, 0, 0],
+        ambient,
+        diffuse: [0, 0, 0],
+        specular: [0, 0, 0],
+      });
+      continue;
     }
-    const ndl = dot(n, l);
-    let diffuse = Math.max(ndl, 0);
-    let spec = 0;
-    let x = 0;
-    let half: Vec3 | null = null;
-    let mirrored: Vec3 | null = null;
-    if (lighting === 'blinn-phong') {
-      half = [l[0] + v[0], l[1] + v[1], l[2] + v[2]];
-      const hl = length(half);
-      if (ndl > 0) x = hl > 0 ? Math.max(dot(n, half) / hl, 0) : 0;
-      half = hl > 0 ? [half[0] / hl, half[1] / hl, half[2] / hl] : [0, 0, 0];
-    } else {
-      mirrored = [2 * ndl * n[0] - l[0], 2 * ndl * n[1] - l[1], 2 * ndl * n[2] - l[2]];
-      if (ndl > 0) x = Math.max(2 * ndl * dot(v, n) - dot(v, l), 0);
-    }
-    if (ndl > 0) spec = specularPower(x, shininess);
-    let band: number | null = null;
-    if (celBands > 0) {
-      band = Math.min(Math.floor(diffuse * celBands), celBands - 1);
-      diffuse = celDiffuse(diffuse, celBands);
-      spec = celSpecular(spec);
-    }
-    const dTerm = att * diffuse;
-    const sTerm = att * spec;
+    const dTerm = f.att * f.diffuse;
+    const sTerm = f.att * f.spec;
     r += tint[0] * (ka[0] * ia[0] + dTerm * kd[0] * id[0]) + sTerm * ks[0] * is[0];
     g += tint[1] * (ka[1] * ia[1] + dTerm * kd[1] * id[1]) + sTerm * ks[1] * is[1];
     b += tint[2] * (ka[2] * ia[2] + dTerm * kd[2] * id[2]) + sTerm * ks[2] * is[2];
+    const { h, hl } = f;
     // three's lights carry three's 1/π in att; the explanation puts it into Id and Is, where the lecture has it.
     const scale = 'type' in light ? RECIPROCAL_PI : 1;
     explained.push({
       kind: 'type' in light ? light.type : 'phong',
       l: copy(l),
-      t,
-      attenuation: falloff,
+      t: Number.isNaN(f.t) ? null : f.t,
+      attenuation: f.falloff,
       v: copy(v),
-      r: mirrored,
-      h: half,
+      r:
+        lighting === 'blinn-phong'
+          ? null
+          : [2 * ndl * n[0] - l[0], 2 * ndl * n[1] - l[1], 2 * ndl * n[2] - l[2]],
+      h: lighting !== 'blinn-phong' ? null : hl > 0 ? [h[0] / hl, h[1] / hl, h[2] / hl] : [0, 0, 0],
       lDotN: ndl,
-      cosine: x,
-      diffuseFactor: diffuse,
-      specularFactor: spec,
-      band,
+      cosine: f.x,
+      diffuseFactor: f.diffuse,
+      specularFactor: f.spec,
+      band: celBands > 0 ? Math.min(Math.floor(Math.max(ndl, 0) * celBands), celBands - 1) : null,
       ia: copy(ia),
       id: [id[0] * scale, id[1] * scale, id[2] * scale],
       is: [is[0] * scale, is[1] * scale, is[2] * scale],

@@ -169,6 +169,174 @@ const AXIS_Z: Vec3Like = [0, 0, 1];
 const WHITE: Vec3Like = [1, 1, 1];
 const ZERO: Vec3Like = [0, 0, 0];
 const UP: Vec3Like = [0, 1, 0];
+/** shade()'s per-light scratch: the hot path allocates nothing per light. */
+const scratch = newLightFactors();
+
+/**
+ * The unit view vector `v` and unit normal `n` of a sample, as `shade` lights it: an eye at the point uses v = n,
+ * a zero normal n = v (+z when the eye is at the point too). @internal
+ */
+export function viewAndNormal(sample: ShadeSample, v: Vec3, n: Vec3): void {
+  const { position: p, normal, eye } = sample;
+  const eyeW = eye.length > 3 ? eye[3] : 1;
+  const toEye: Vec3 = [eye[0] - p[0] * eyeW, eye[1] - p[1] * eyeW, eye[2] - p[2] * eyeW];
+  const hasView = normalizeOr(v, toEye, AXIS_Z);
+  normalizeOr(n, normal, v); // a zero normal falls back to v (+z when the eye is at the point)
+  if (!hasView) {
+    v[0] = n[0];
+    v[1] = n[1];
+    v[2] = n[2];
+  }
+}
+
+/**
+ * One light's part of the equation at a point, as `lightFactors` leaves it: what `shade` sums and `explainShade`
+ * shows. @internal
+ */
+export interface LightFactors {
+  /** three's ambient or hemisphere light: only `ia` (its irradiance, three's 1/π not applied) counts. */
+  ambientOnly: boolean;
+  /** Ia, Id, Is as given (a PhongLight's; three's direct lights: colour × intensity for Id and Is, Ia = 0). */
+  ia: Vec3Like;
+  id: Vec3Like;
+  is: Vec3Like;
+  /** What multiplies the diffuse and specular factors: a PhongLight's attenuation, three's 1/π × falloff. */
+  att: number;
+  /** The attenuation without three's 1/π: att for a PhongLight, three's falloff (× the spot cone), 1. */
+  falloff: number;
+  /** The distance to the light; NaN for directional, ambient and hemisphere lights. */
+  t: number;
+  /** The unit vector towards the light (the light's direction for a directional one). */
+  readonly l: Vec3;
+  /** Blinn-Phong lighting: l + v (the half vector before normalisation) and its length. */
+  readonly h: Vec3;
+  hl: number;
+  /** l·n, the specular cosine (v·r or n·h, 0 where l·n ≤ 0), and the diffuse and specular factors (after cel). */
+  ndl: number;
+  x: number;
+  diffuse: number;
+  spec: number;
+}
+
+/** A new, zeroed {@link LightFactors} to pass to {@link lightFactors}. @internal */
+export function newLightFactors(): LightFactors {
+  return {
+    ambientOnly: false,
+    ia: ZERO,
+    id: ZERO,
+    is: ZERO,
+    att: 1,
+    falloff: 1,
+    t: Number.NaN,
+    l: [0, 0, 0],
+    h: [0, 0, 0],
+    hl: 0,
+    ndl: 0,
+    x: 0,
+    diffuse: 0,
+    spec: 0,
+  };
+}
+
+/**
+ * Writes into `f` one light's part of the equation at the point `p` with unit normal `n` and unit view vector `v`
+ * (see {@link shade} for the rules): the one evaluation `shade` and `explainShade` share. @internal
+ */
+export function lightFactors(
+  light: ShadeLight | ShadeThreeLight,
+  p: Vec3Like,
+  n: Vec3Like,
+  v: Vec3Like,
+  material: ShadeMaterial,
+  f: LightFactors,
+): LightFactors {
+  const { shininess, lighting = 'phong', celBands = 0 } = material;
+  const l = f.l;
+  f.ambientOnly = false;
+  f.ia = ZERO;
+  f.att = 1;
+  f.t = Number.NaN;
+  if ('type' in light) {
+    const { type, color, position = ZERO, direction = UP, distance = 0, decay = 2 } = light;
+    if (type === 'ambient' || type === 'hemisphere') {
+      f.ambientOnly = true;
+      if (type === 'ambient') f.ia = color;
+      else {
+        const ground = light.groundColor ?? ZERO;
+        const w = 0.5 * dot(n, direction) + 0.5;
+        f.ia = [0, 1, 2].map((k) => ground[k] + (color[k] - ground[k]) * w);
+      }
+      f.id = ZERO;
+      f.is = ZERO;
+      f.att = 0;
+      f.falloff = 0;
+      f.ndl = 0;
+      f.x = 0;
+      f.diffuse = 0;
+      f.spec = 0;
+      return f;
+    }
+    f.id = color;
+    f.is = color;
+    f.falloff = 1;
+    if (type === 'directional') {
+      l[0] = direction[0];
+      l[1] = direction[1];
+      l[2] = direction[2];
+    } else {
+      sub(l, position, p);
+      f.t = length(l);
+      normalizeOr(l, l, n);
+      f.falloff = threeDistanceFalloff(f.t, distance, decay);
+    }
+    f.att = RECIPROCAL_PI * f.falloff; // three's 1/π, times the falloff
+    if (type === 'spot') {
+      const cone = smoothstep(light.coneCos ?? 0, light.penumbraCos ?? 0, dot(l, direction));
+      f.att *= cone;
+      f.falloff *= cone;
+    }
+  } else {
+    f.ia = light.ambient;
+    f.id = light.diffuse;
+    f.is = light.specular;
+    const { attenuation } = light;
+    sub(l, light.position, p);
+    f.t = length(l);
+    normalizeOr(l, l, n);
+    if (attenuation !== undefined) {
+      f.att =
+        1 /
+        Math.max(
+          attenuation.a + attenuation.b * f.t + attenuation.c * f.t * f.t,
+          MIN_ATTENUATION_DENOMINATOR,
+        );
+    }
+    f.falloff = f.att;
+  }
+  const ndl = dot(n, l);
+  const h = f.h;
+  if (lighting === 'blinn-phong') {
+    h[0] = l[0] + v[0];
+    h[1] = l[1] + v[1];
+    h[2] = l[2] + v[2];
+    f.hl = length(h);
+  }
+  f.ndl = ndl;
+  f.x = 0;
+  f.diffuse = Math.max(ndl, 0);
+  f.spec = 0;
+  if (ndl > 0) {
+    if (lighting === 'blinn-phong') f.x = f.hl > 0 ? Math.max(dot(n, h) / f.hl, 0) : 0;
+    // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l.
+    else f.x = Math.max(2 * ndl * dot(v, n) - dot(v, l), 0);
+    f.spec = specularPower(f.x, shininess);
+  }
+  if (celBands > 0) {
+    f.diffuse = celDiffuse(f.diffuse, celBands);
+    f.spec = celSpecular(f.spec);
+  }
+  return f;
+}
 
 /**
  * The lighting equation at one point, summed over `lights` (linear RGB, not clamped):
@@ -195,92 +363,26 @@ export function shade(
   lights: readonly (ShadeLight | ShadeThreeLight)[],
   out: Vec3 = [0, 0, 0],
 ): Vec3 {
-  const { position: p, normal, eye, tint = WHITE } = sample;
-  const { ka, kd, ks, shininess, lighting = 'phong', celBands = 0 } = material;
-  const eyeW = eye.length > 3 ? eye[3] : 1;
-  const toEye: Vec3 = [eye[0] - p[0] * eyeW, eye[1] - p[1] * eyeW, eye[2] - p[2] * eyeW];
+  const { position: p, tint = WHITE } = sample;
+  const { ka, kd, ks } = material;
   const v: Vec3 = [0, 0, 0];
   const n: Vec3 = [0, 0, 0];
-  const hasView = normalizeOr(v, toEye, AXIS_Z);
-  normalizeOr(n, normal, v); // a zero normal falls back to v (+z when the eye is at the point)
-  if (!hasView) {
-    v[0] = n[0];
-    v[1] = n[1];
-    v[2] = n[2];
-  }
-  const l: Vec3 = [0, 0, 0];
-  const h: Vec3 = [0, 0, 0];
+  viewAndNormal(sample, v, n);
+  const f = scratch;
   let r = 0;
   let g = 0;
   let b = 0;
   for (const light of lights) {
-    let ia: Vec3Like = ZERO;
-    let id: Vec3Like;
-    let is: Vec3Like;
-    let att = 1;
-    if ('type' in light) {
-      const { type, color, position = ZERO, direction = UP, distance = 0, decay = 2 } = light;
-      if (type === 'ambient' || type === 'hemisphere') {
-        if (type === 'ambient') ia = color;
-        else {
-          const ground = light.groundColor ?? ZERO;
-          const w = 0.5 * dot(n, direction) + 0.5;
-          ia = [0, 1, 2].map((k) => ground[k] + (color[k] - ground[k]) * w);
-        }
-        r += tint[0] * ka[0] * ia[0] * RECIPROCAL_PI;
-        g += tint[1] * ka[1] * ia[1] * RECIPROCAL_PI;
-        b += tint[2] * ka[2] * ia[2] * RECIPROCAL_PI;
-        continue;
-      }
-      id = color;
-      is = color;
-      att = RECIPROCAL_PI; // three's 1/π, times the falloff below
-      if (type === 'directional') {
-        l[0] = direction[0];
-        l[1] = direction[1];
-        l[2] = direction[2];
-      } else {
-        sub(l, position, p);
-        const t = length(l);
-        normalizeOr(l, l, n);
-        att *= threeDistanceFalloff(t, distance, decay);
-        if (type === 'spot') att *= smoothstep(light.coneCos ?? 0, light.penumbraCos ?? 0, dot(l, direction));
-      }
-    } else {
-      ({ ambient: ia, diffuse: id, specular: is } = light);
-      const { attenuation } = light;
-      sub(l, light.position, p);
-      const t = length(l);
-      normalizeOr(l, l, n);
-      if (attenuation !== undefined) {
-        att =
-          1 /
-          Math.max(attenuation.a + attenuation.b * t + attenuation.c * t * t, MIN_ATTENUATION_DENOMINATOR);
-      }
+    lightFactors(light, p, n, v, material, f);
+    const { ia, id, is } = f;
+    if (f.ambientOnly) {
+      r += tint[0] * ka[0] * ia[0] * RECIPROCAL_PI;
+      g += tint[1] * ka[1] * ia[1] * RECIPROCAL_PI;
+      b += tint[2] * ka[2] * ia[2] * RECIPROCAL_PI;
+      continue;
     }
-    const ndl = dot(n, l);
-    let diffuse = Math.max(ndl, 0);
-    let spec = 0;
-    if (ndl > 0) {
-      let x: number;
-      if (lighting === 'blinn-phong') {
-        h[0] = l[0] + v[0];
-        h[1] = l[1] + v[1];
-        h[2] = l[2] + v[2];
-        const hl = length(h);
-        x = hl > 0 ? Math.max(dot(n, h) / hl, 0) : 0;
-      } else {
-        // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l.
-        x = Math.max(2 * ndl * dot(v, n) - dot(v, l), 0);
-      }
-      spec = specularPower(x, shininess);
-    }
-    if (celBands > 0) {
-      diffuse = celDiffuse(diffuse, celBands);
-      spec = celSpecular(spec);
-    }
-    const dTerm = att * diffuse;
-    const sTerm = att * spec;
+    const dTerm = f.att * f.diffuse;
+    const sTerm = f.att * f.spec;
     r += tint[0] * (ka[0] * ia[0] + dTerm * kd[0] * id[0]) + sTerm * ks[0] * is[0];
     g += tint[1] * (ka[1] * ia[1] + dTerm * kd[1] * id[1]) + sTerm * ks[1] * is[1];
     b += tint[2] * (ka[2] * ia[2] + dTerm * kd[2] * id[2]) + sTerm * ks[2] * is[2];
