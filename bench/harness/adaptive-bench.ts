@@ -12,7 +12,12 @@
 //   instance computed again and the allowance spent again), ms;
 // - choices(k): how many instances took each shading and level; model(k): what its error model predicted.
 import { type Shading, ShadingMaterial, swapMaterials } from '@shadelab/material';
-import { type AdaptiveChoice, AdaptiveShading, overFraction } from '@shadelab/material/adaptive';
+import {
+  type AdaptiveChoice,
+  AdaptiveShading,
+  overFraction,
+  pictureError,
+} from '@shadelab/material/adaptive';
 import {
   Color,
   Fog,
@@ -172,26 +177,15 @@ function errors(reference: number): PictureError[] {
   const ref = picture(reference);
   return prepared.map((_, k) => {
     const p = picture(k);
-    const deltas: number[] = [];
-    for (let i = 0; i < width * height; i++) {
-      const d = Math.max(
-        Math.abs(p[4 * i] - ref[4 * i]),
-        Math.abs(p[4 * i + 1] - ref[4 * i + 1]),
-        Math.abs(p[4 * i + 2] - ref[4 * i + 2]),
-      );
-      if (mask[i] || d > 0) deltas.push(d);
-    }
-    deltas.sort((a, b) => a - b);
-    const n = deltas.length;
-    const over = (t: number) => deltas.filter((d) => d > t).length / n;
-    return {
-      drawn: n,
-      p99: deltas[Math.min(n - 1, Math.floor(0.99 * n))],
-      max: deltas[n - 1],
-      over2: over(2),
-      over8: over(8),
-      over32: over(32),
-    };
+    // Drawn: covered by the scene (the coverage mask), or different from the reference anywhere.
+    const drawn = (i: number) =>
+      mask[i] === 1 ||
+      p[4 * i] !== ref[4 * i] ||
+      p[4 * i + 1] !== ref[4 * i + 1] ||
+      p[4 * i + 2] !== ref[4 * i + 2];
+    const at = (budget: number) => pictureError(ref, p, budget, drawn);
+    const { drawn: n, p99, max, over: over2 } = at(2);
+    return { drawn: n, p99, max, over2, over8: at(8).over, over32: at(32).over };
   });
 }
 

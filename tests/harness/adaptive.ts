@@ -6,7 +6,7 @@
 // MeshStandardMaterials), exported with three's GLTFExporter (binary GLB, nothing downloaded), loaded back with
 // GLTFLoader and given ShadingMaterials by swapMaterials, as an app would load one.
 import { ShadingMaterial, swapMaterials } from '@shadelab/material';
-import { AdaptiveShading } from '@shadelab/material/adaptive';
+import { AdaptiveShading, pictureError } from '@shadelab/material/adaptive';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   type BufferGeometry,
@@ -203,27 +203,10 @@ function honesty(kind: Field, cameraKind: CameraKind, budget: number, zoom = 1):
     choices[k] = (choices[k] ?? 0) + 1;
   }
   adaptive.dispose();
-  const deltas: number[] = [];
-  for (let i = 0; i < reference.length; i += 4) {
-    const bg = (p: Uint8Array) => p[i] === 0 && p[i + 1] === 0 && p[i + 2] === 0;
-    if (bg(reference) && bg(picture)) continue;
-    deltas.push(
-      Math.max(
-        Math.abs(reference[i] - picture[i]),
-        Math.abs(reference[i + 1] - picture[i + 1]),
-        Math.abs(reference[i + 2] - picture[i + 2]),
-      ),
-    );
-  }
-  deltas.sort((a, b) => a - b);
-  const drawn = deltas.length;
-  return {
-    drawn,
-    p99: drawn ? deltas[Math.min(drawn - 1, Math.floor(0.99 * drawn))] : 0,
-    over: drawn ? deltas.filter((d) => d > budget).length / drawn : 0,
-    max: drawn ? deltas[drawn - 1] : 0,
-    choices,
-  };
+  // Drawn: not the black background in either picture.
+  const bg = (p: Uint8Array, i: number) => p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 0;
+  const error = pictureError(reference, picture, budget, (i) => !bg(reference, i) || !bg(picture, i));
+  return { ...error, choices };
 }
 
 function instances(frames: number): InstancesReport {

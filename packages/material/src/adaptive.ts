@@ -2,7 +2,8 @@
  * Adaptive shading under an error budget: `AdaptiveShading` picks, every frame, the cheapest shading (and a
  * subdivision sphere's level) per object and per group of instances that keeps the image within `maxError`
  * 8-bit sRGB levels of Phong shading at full detail; `measureShadingError`, the measured error model it uses;
- * `shadingCost` and `chooseFlatPath`, the measured costs.
+ * `shadingCost` and `chooseFlatPath`, the measured costs; `pictureError`, the error its budget bounds, measured on
+ * two pictures.
  * @module @shadelab/material/adaptive
  */
 export {
@@ -20,6 +21,7 @@ export {
   shadingCost,
 } from './adaptiveCosts.js';
 export { type AllocationUnit, allocateShading } from './allocateShading.js';
+export { type PictureError, pictureError } from './pictureError.js';
 export {
   ERROR_BUDGETS,
   fibonacciDirections,

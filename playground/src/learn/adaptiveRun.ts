@@ -6,7 +6,7 @@
  * the same scene drawn with Phong shading at full detail (two offscreen renders read back).
  */
 import { ShadingMaterial } from '@shadelab/material';
-import { type AdaptiveChoice, AdaptiveShading } from '@shadelab/material/adaptive';
+import { type AdaptiveChoice, AdaptiveShading, pictureError } from '@shadelab/material/adaptive';
 import * as THREE from 'three';
 import type { Viewer } from '../engine/viewer/Viewer';
 
@@ -202,26 +202,7 @@ export class AdaptiveRun {
   }
 }
 
-/** Per-pixel max |Δ| over RGB where either picture is drawn (alpha > 0): its 99th percentile, max, share over. */
+/** `pictureError` of the adaptive picture where either picture is drawn (alpha > 0), with its budget. */
 export function compare(reference: Uint8Array, picture: Uint8Array, budget: number): AdaptiveMeasured {
-  const deltas: number[] = [];
-  for (let i = 0; i < reference.length; i += 4) {
-    if (reference[i + 3] === 0 && picture[i + 3] === 0) continue;
-    deltas.push(
-      Math.max(
-        Math.abs(reference[i] - picture[i]),
-        Math.abs(reference[i + 1] - picture[i + 1]),
-        Math.abs(reference[i + 2] - picture[i + 2]),
-      ),
-    );
-  }
-  deltas.sort((a, b) => a - b);
-  const n = deltas.length;
-  return {
-    budget,
-    drawn: n,
-    p99: n ? deltas[Math.min(n - 1, Math.floor(0.99 * n))] : 0,
-    max: n ? deltas[n - 1] : 0,
-    over: n ? deltas.filter((d) => d > budget).length / n : 0,
-  };
+  return { budget, ...pictureError(reference, picture, budget) };
 }
