@@ -15,13 +15,20 @@ export async function frames(page: Page): Promise<number> {
   return Number((await page.getByTestId('viewport').getAttribute('data-frames')) ?? 0);
 }
 
-/** Rendering is on demand: wait for a first frame, then until no frame came for `quietMs`. */
-export async function settle(page: Page, quietMs = 400): Promise<void> {
-  await expect(page.getByTestId('viewport')).toHaveAttribute('data-frames', /[1-9]/);
-  let last = -1;
+/**
+ * Rendering is on demand: wait for a first frame, then until the page rests: no frame came for `quietMs` and none
+ * is asked for (the canvas's `data-render-pending`, set while the viewer has a frame scheduled: an animation, such
+ * as a damped spin, asks for its next frame while it draws, so it never looks at rest between two slow frames).
+ */
+export async function settle(page: Page, quietMs = 200): Promise<void> {
+  const viewport = page.getByTestId('viewport');
+  await expect(viewport).toHaveAttribute('data-frames', /[1-9]/);
+  let last = '';
   for (let i = 0; i < 50; i++) {
-    const n = await frames(page);
-    if (n === last) return;
+    const [n, pending] = await viewport.evaluate(
+      (canvas) => [canvas.dataset['frames'] ?? '', canvas.hasAttribute('data-render-pending')] as const,
+    );
+    if (n === last && !pending) return;
     last = n;
     await page.waitForTimeout(quietMs);
   }
@@ -30,7 +37,7 @@ export async function settle(page: Page, quietMs = 400): Promise<void> {
 /** Opens the playground (optionally on a state) with fresh storage and waits until it rests. */
 export async function open(page: Page, state?: object): Promise<void> {
   await page.goto(state ? stateUrl(state) : '/');
-  await settle(page);
+  await settle(page, 400); // a page load also waits for what loads after the first frame
 }
 
 /** The canvas's own pixels (no overlays) as a PNG data URL: equal strings = equal pixels. */

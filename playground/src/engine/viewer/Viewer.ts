@@ -166,11 +166,13 @@ export class Viewer implements ViewerHost {
   /** Drops the edit and goes back to the generated program. */
   clearShaderOverride = () => this.shader.clear();
 
-  /** Renders at the next animation frame (coalesces many requests into one frame). */
+  /** Renders at the next animation frame (coalesces many requests into one frame; see FrameCounter.pending). */
   requestRender() {
     if (this.scheduled || this.disposed) return;
+    this.frames.pending(true);
     this.scheduled = requestAnimationFrame(() => {
       this.scheduled = 0;
+      this.frames.pending(false);
       this.render();
     });
   }

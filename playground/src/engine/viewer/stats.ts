@@ -56,6 +56,14 @@ export class FrameCounter {
     private readonly onFirstFrame?: (ms: number) => void,
   ) {}
 
+  /**
+   * Whether a frame is asked for (the canvas's `data-render-pending`): a page at rest has neither it nor new
+   * frames, which is what tests wait for (an animation asks for its next frame while it draws).
+   */
+  pending(on: boolean): void {
+    this.canvas.toggleAttribute('data-render-pending', on);
+  }
+
   /** Counts a frame (in the canvas's `data-frames` too); the first is reported with its time since navigation. */
   count(): void {
     this.frames += 1;
