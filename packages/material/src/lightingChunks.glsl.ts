@@ -12,15 +12,17 @@ import { shadowedLight, shadowLightMacros } from './shadowChunks.glsl.js';
  * One light's factors, from the unit normal `n`, view vector `v` and light direction `l`: `ndl` = l·n,
  * `diffuse` = max(l·n, 0), `spec` = (r·v)^α (Phong, r = 2(l·n)n − l) or (n·h)^α (Blinn-Phong, h = (l + v)/|l + v|),
  * with 0⁰ = 1 (shininess 0 lights the whole lit side), 0^α = 0 and no highlight where l·n ≤ 0; cel shading
- * quantises both (CEL_BANDS diffuse shades, the highlight on or off).
+ * quantises both (CEL_BANDS diffuse shades, the highlight on or off). `blinn` is the statement that sets the
+ * Blinn-Phong x = max(n·h, 0) from `h` = l + v and `h2` = |h|².
  */
-const lightFactors = /* glsl */ `
+function lightFactors(blinn: string): string {
+  return /* glsl */ `
   float ndl = dot(n, l);
   float diffuse = max(ndl, 0.0);
 #ifdef LIGHTING_BLINN
   vec3 h = l + v;
   float h2 = dot(h, h);
-  float x = h2 > 0.0 ? max(dot(n, h) * inversesqrt(h2), 0.0) : 0.0;
+  ${blinn}
 #else
   // v·r with r = 2(l·n)n − l
   float x = max(2.0 * ndl * dot(v, n) - dot(v, l), 0.0);
@@ -35,6 +37,16 @@ const lightFactors = /* glsl */ `
   spec = step(0.5, spec);
 #endif
 ${outputFactors}`;
+}
+
+/** A PhongLight's Blinn-Phong factor: no highlight where l = −v (h = 0), selected (the lecture's text). */
+const lectureBlinn = 'float x = h2 > 0.0 ? max(dot(n, h) * inversesqrt(h2), 0.0) : 0.0;';
+/**
+ * One of three's lights': the same value with one instruction less, as cost is compared with three's materials
+ * here. |l + v|² of unit vectors is 0 or far above 1e-30 (unless the vectors are denormal-close to opposite, where
+ * both forms give x below 1e-15), so max(h², 1e-30) changes no result: h = 0 gives 0 · 1e15 = 0.
+ */
+const threeBlinn = 'float x = max(dot(n, h) * inversesqrt(max(h2, 1e-30)), 0.0);';
 
 /**
  * The light's term from its factors and `kdId` = kd·Id (× tint), `ksIs` = ks·Is: their sum, or, with a texture on
@@ -127,7 +139,7 @@ ${shadowLightMacros}
 vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
   vec3 kdId = c * ( shadingKd * shadingTint ); // kd × tint once for every light
   vec3 ksIs = c * shadingKs;
-${lightFactors}${lightReturn}}
+${lightFactors(threeBlinn)}${lightReturn}}
 // three's getDistanceAttenuation at distance t (t2 = t²), compiled for what the scene's lights use: the cut-off
 // window only when some light has a distance, 1/max(t², 0.01) when every decay is 2 (no pow).
 float threeFalloff(float t, float t2, float cutoff, float decay) {
@@ -225,7 +237,7 @@ vec3 lightTerm(vec3 p, vec3 n, vec3 v, vec3 lightPos, vec3 kdId, vec3 ksIs, vec3
   float t2 = dot(toLight, toLight);
   float invT = inversesqrt(t2);
   vec3 l = t2 > 0.0 ? toLight * invT : n;
-${lightFactors}
+${lightFactors(lectureBlinn)}
 #ifdef USE_ATTENUATION
   float t = t2 > 0.0 ? t2 * invT : 0.0;
   float att = 1.0 / max(k.x + k.y * t + k.z * t2, 1e-6);
@@ -245,10 +257,18 @@ vec3 shadeColor(vec3 p, vec3 normal) {
 #endif
   vec3 toEye = shadingEye.xyz - p * shadingEye.w;
   float e2 = dot(toEye, toEye);
+#if defined( SHADING_THREE_LIGHTS ) && ( defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES ) )
+  // Lit at a drawn fragment, which lies beyond the near plane: never at the eye (e2 > 0), as three's materials
+  // assume. Two selects less where cost is compared with theirs; the lecture's programs keep the guard.
+  vec3 v = toEye * inversesqrt(e2);
+  float n2 = dot(normal, normal);
+  vec3 n = n2 > 0.0 ? normal * inversesqrt(n2) : v;
+#else
   vec3 v = e2 > 0.0 ? toEye * inversesqrt(e2) : vec3(0.0, 0.0, 1.0);
   float n2 = dot(normal, normal);
   vec3 n = n2 > 0.0 ? normal * inversesqrt(n2) : v;
   v = e2 > 0.0 ? v : n;
+#endif
 ${outputNormal}
 #ifdef SHADING_TINT
   vec3 color = ambientTerm * shadingTint;
