@@ -729,7 +729,7 @@ function swap(r) {
   const phongLit = r.ratiosVsByHand?.['ShadingMaterial phong (by hand, lighting phong)'];
   const costCause =
     t.cost.met === false && diff?.length === 0 && phongLit && o
-      ? `Cost: the swap adds nothing to the material (swapped / by hand ${ratio3(r.ratiosVsByHand['swapped phong'])}, one program); the same material with the lecture's Phong lighting (reflection vector) in place of the \`${o.lighting}\` the swap carries over costs ${ratio3(phongLit)} × it and ${ratio3(r.ratiosVsMeshPhong['ShadingMaterial phong (by hand, lighting phong)'])} × MeshPhongMaterial: what puts the swap above MeshPhongMaterial is the Blinn-Phong half vector (h = l + v normalised: an add, two dots, an inversesqrt and a select per light and fragment, where Phong's r·v = 2(l·n)(v·n) − v·l takes one dot per light, v·n being the same for every light), which the swap takes to match MeshPhongMaterial's highlight.`
+      ? `Cost: the swap adds nothing to the material (swapped / by hand ${ratio3(r.ratiosVsByHand['swapped phong'])}, one program); the same material with the lecture's Phong lighting (reflection vector) in place of the \`${o.lighting}\` the swap carries over costs ${ratio3(phongLit)} × it and ${ratio3(r.ratiosVsMeshPhong['ShadingMaterial phong (by hand, lighting phong)'])} × MeshPhongMaterial: what puts the swap above MeshPhongMaterial is the Blinn-Phong half vector (h = l + v normalised: an add, two dots, a max and an inversesqrt per light and fragment, where Phong's r·v = 2(l·n)(v·n) − v·l takes one dot per light, v·n being the same for every light), which the swap takes to match MeshPhongMaterial's highlight.`
       : '';
   const program = !diff
     ? ''
