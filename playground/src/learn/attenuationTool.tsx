@@ -3,10 +3,10 @@
  * light's 1/(a + b·t + c·t²) over the distances the scene spans, with the object's range of t marked
  * (`attenuationPlot.tsx`, loaded when first opened).
  */
-import { lazy, type RefObject, Suspense } from 'react';
+import { lazy, type RefObject } from 'react';
 import type { Viewer } from '../engine/viewer/Viewer';
 import type { PlaygroundState } from '../state/schema';
-import { LEARN_PANEL, LearnTool } from './learnTool';
+import { LearnTool } from './learnTool';
 
 const AttenuationPlot = lazy(() => import('./attenuationPlot'));
 
@@ -23,16 +23,14 @@ export function AttenuationTool({
       viewerRef={viewerRef}
       label="attenuation curve"
       title="Plot each light's attenuation 1/(a + b·t + c·t²) against the distance, with the object's range marked"
+      panel={{
+        name: 'Attenuation curve',
+        testId: 'attenuation-panel',
+        style: { bottom: 52, maxHeight: 'calc(50% - 56px)' },
+        loading: 'Loading the plot…',
+      }}
     >
-      <section
-        style={{ ...LEARN_PANEL, bottom: 52, maxHeight: 'calc(50% - 56px)' }}
-        aria-label="Attenuation curve"
-        data-testid="attenuation-panel"
-      >
-        <Suspense fallback="Loading the plot…">
-          <AttenuationPlot viewerRef={viewerRef} state={state} />
-        </Suspense>
-      </section>
+      <AttenuationPlot viewerRef={viewerRef} state={state} />
     </LearnTool>
   );
 }

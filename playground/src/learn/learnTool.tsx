@@ -1,9 +1,10 @@
 /**
  * What the learning tools of the hint line under the view share: a toggle button that, while on, shows the tool
  * over the canvas (in its parent, the stage; the tool's code is `lazy`, loaded when first turned on, in a
- * `Suspense` of the tool's); Esc turns it off. Not shown in embed mode. The tools' panel style lives here too.
+ * `Suspense`: the `panel` given here, or the tool's own); Esc turns it off. Not shown in embed mode. The tools' panel
+ * style lives here too.
  */
-import { type ReactNode, type RefObject, useEffect, useState } from 'react';
+import { type CSSProperties, type ReactNode, type RefObject, Suspense, useEffect, useState } from 'react';
 import { createPortal } from 'react-dom';
 import type { Viewer } from '../engine/viewer/Viewer';
 import { isEmbedded } from '../state/embed';
@@ -22,16 +23,32 @@ export const LEARN_PANEL = {
   overflow: 'auto',
 } as const;
 
-/** The toggle (`label`, with `title` as its tooltip) and, while it is on, `children` over the canvas. */
+/**
+ * A tool's panel: its accessible name, test id, where it sits ({@link LEARN_PANEL} + `style`) and the text shown
+ * while its code loads.
+ */
+export interface LearnPanelProps {
+  name: string;
+  testId: string;
+  style: CSSProperties;
+  loading: string;
+}
+
+/**
+ * The toggle (`label`, with `title` as its tooltip) and, while it is on, `children` over the canvas: in a
+ * {@link LEARN_PANEL} section when `panel` is given.
+ */
 export function LearnTool({
   viewerRef,
   label,
   title,
+  panel,
   children,
 }: {
   viewerRef: RefObject<Viewer | null>;
   label: string;
   title: string;
+  panel?: LearnPanelProps;
   children: ReactNode;
 }) {
   const [on, setOn] = useState(false);
@@ -48,7 +65,21 @@ export function LearnTool({
       <button type="button" aria-pressed={on} title={title} onClick={() => setOn(!on)}>
         {label}
       </button>
-      {stage && createPortal(children, stage)}
+      {stage &&
+        createPortal(
+          panel ? (
+            <section
+              style={{ ...LEARN_PANEL, ...panel.style }}
+              aria-label={panel.name}
+              data-testid={panel.testId}
+            >
+              <Suspense fallback={panel.loading}>{children}</Suspense>
+            </section>
+          ) : (
+            children
+          ),
+          stage,
+        )}
     </>
   );
 }

@@ -3,10 +3,10 @@
  * slide live (`normalMatrixView.tsx`, loaded when first opened): the sphere shaded with (M⁻¹)ᵀ and with M side by
  * side, with the tangent and both normals at the probed point.
  */
-import { lazy, type RefObject, Suspense } from 'react';
+import { lazy, type RefObject } from 'react';
 import type { Viewer } from '../engine/viewer/Viewer';
 import type { PlaygroundState } from '../state/schema';
-import { LEARN_PANEL, LearnTool } from './learnTool';
+import { LearnTool } from './learnTool';
 
 const NormalMatrixView = lazy(() => import('./normalMatrixView'));
 
@@ -23,16 +23,14 @@ export function NormalMatrixTool({
       viewerRef={viewerRef}
       label="normal matrix"
       title="The sphere shaded with the normal matrix (M⁻¹)ᵀ and with M side by side, with the tangent and both normals at the probed point"
+      panel={{
+        name: 'The normal matrix',
+        testId: 'normal-matrix-panel',
+        style: { left: 8, right: 'auto', top: 8, width: 'min(360px, calc(100% - 16px))' },
+        loading: 'Loading the figure…',
+      }}
     >
-      <section
-        style={{ ...LEARN_PANEL, left: 8, right: 'auto', top: 8, width: 'min(360px, calc(100% - 16px))' }}
-        aria-label="The normal matrix"
-        data-testid="normal-matrix-panel"
-      >
-        <Suspense fallback="Loading the figure…">
-          <NormalMatrixView viewerRef={viewerRef} state={state} />
-        </Suspense>
-      </section>
+      <NormalMatrixView viewerRef={viewerRef} state={state} />
     </LearnTool>
   );
 }
