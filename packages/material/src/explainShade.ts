@@ -1,6 +1,7 @@
 // The lecture's equation at one point, term by term: what `shade()` sums, kept apart. Three-free.
 import { linearToSrgb8 } from './linearToSrgb8.js';
 import {
+  halfVector,
   lightFactors,
   newLightFactors,
   RECIPROCAL_PI,
@@ -10,7 +11,13 @@ import {
   type ShadeThreeLight,
   viewAndNormal,
 } from './shade.js';
-import type { Vec3, Vec3Like } from './vec3.js';
+import { length, type Vec3, type Vec3Like } from './vec3.js';
+
+/** `h` normalised; zero where it is zero (l = −v). */
+function unitOrZero(h: Vec3): Vec3 {
+  const hl = length(h);
+  return hl > 0 ? [h[0] / hl, h[1] / hl, h[2] / hl] : [0, 0, 0];
+}
 
 /** One light's part of the lecture's equation at a point (all vectors world space, unit length). */
 export interface LightExplanation {
@@ -171,7 +178,6 @@ export function explainShade(
     r += tint[0] * (ka[0] * ia[0] + dTerm * kd[0] * id[0]) + sTerm * ks[0] * is[0];
     g += tint[1] * (ka[1] * ia[1] + dTerm * kd[1] * id[1]) + sTerm * ks[1] * is[1];
     b += tint[2] * (ka[2] * ia[2] + dTerm * kd[2] * id[2]) + sTerm * ks[2] * is[2];
-    const { h, hl } = f;
     // three's lights carry three's 1/π in att; the explanation puts it into Id and Is, where the lecture has it.
     const scale = 'type' in light ? RECIPROCAL_PI : 1;
     explained.push({
@@ -184,7 +190,7 @@ export function explainShade(
         lighting === 'blinn-phong'
           ? null
           : [2 * ndl * n[0] - l[0], 2 * ndl * n[1] - l[1], 2 * ndl * n[2] - l[2]],
-      h: lighting !== 'blinn-phong' ? null : hl > 0 ? [h[0] / hl, h[1] / hl, h[2] / hl] : [0, 0, 0],
+      h: lighting === 'blinn-phong' ? unitOrZero(halfVector(l, v)) : null,
       lDotN: ndl,
       cosine: f.x,
       diffuseFactor: f.diffuse,

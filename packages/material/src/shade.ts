@@ -171,6 +171,15 @@ const ZERO: Vec3Like = [0, 0, 0];
 const UP: Vec3Like = [0, 1, 0];
 /** shade()'s per-light scratch: the hot path allocates nothing per light. */
 const scratch = newLightFactors();
+const HALF: Vec3 = [0, 0, 0];
+
+/** l + v, Blinn-Phong's half vector before normalisation, into `out`. @internal */
+export function halfVector(l: Vec3Like, v: Vec3Like, out: Vec3 = [0, 0, 0]): Vec3 {
+  out[0] = l[0] + v[0];
+  out[1] = l[1] + v[1];
+  out[2] = l[2] + v[2];
+  return out;
+}
 
 /**
  * The unit view vector `v` and unit normal `n` of a sample, as `shade` lights it: an eye at the point uses v = n,
@@ -208,9 +217,6 @@ export interface LightFactors {
   t: number;
   /** The unit vector towards the light (the light's direction for a directional one). */
   readonly l: Vec3;
-  /** Blinn-Phong lighting: l + v (the half vector before normalisation) and its length. */
-  readonly h: Vec3;
-  hl: number;
   /** l·n, the specular cosine (v·r or n·h, 0 where l·n ≤ 0), and the diffuse and specular factors (after cel). */
   ndl: number;
   x: number;
@@ -229,8 +235,6 @@ export function newLightFactors(): LightFactors {
     falloff: 1,
     t: Number.NaN,
     l: [0, 0, 0],
-    h: [0, 0, 0],
-    hl: 0,
     ndl: 0,
     x: 0,
     diffuse: 0,
@@ -314,19 +318,16 @@ export function lightFactors(
     f.falloff = f.att;
   }
   const ndl = dot(n, l);
-  const h = f.h;
-  if (lighting === 'blinn-phong') {
-    h[0] = l[0] + v[0];
-    h[1] = l[1] + v[1];
-    h[2] = l[2] + v[2];
-    f.hl = length(h);
-  }
   f.ndl = ndl;
   f.x = 0;
   f.diffuse = Math.max(ndl, 0);
   f.spec = 0;
   if (ndl > 0) {
-    if (lighting === 'blinn-phong') f.x = f.hl > 0 ? Math.max(dot(n, h) / f.hl, 0) : 0;
+    if (lighting === 'blinn-phong') {
+      const h = halfVector(l, v, HALF);
+      const hl = length(h);
+      f.x = hl > 0 ? Math.max(dot(n, h) / hl, 0) : 0;
+    }
     // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l.
     else f.x = Math.max(2 * ndl * dot(v, n) - dot(v, l), 0);
     f.spec = specularPower(f.x, shininess);
