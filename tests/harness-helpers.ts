@@ -1,4 +1,4 @@
-import type { Page } from '@playwright/test';
+import { test as base, type Page } from '@playwright/test';
 
 /**
  * Opens a harness page (`/harness/<name>.html`) and waits until it says it is ready; returns the page errors and
@@ -15,3 +15,41 @@ export async function openHarness(page: Page, name: string): Promise<string[]> {
   await page.waitForFunction(() => document.body.dataset.ready === '1');
   return problems;
 }
+
+/** A harness page and the page and console errors seen since the test that asked for it began. */
+export interface SharedHarness {
+  page: Page;
+  problems: string[];
+}
+
+/**
+ * Playwright's test with `harness(name)`: the harness page shared by the tests one worker runs in a row, so that
+ * the page loads, its renderers are made and SwiftShader compiles their programs and pipelines once rather than
+ * once per test. Tests that count what a fresh page holds (programs, pipelines, console messages since load) or
+ * that break the page (a lost device) open their own with {@link openHarness}.
+ */
+export const test = base.extend<
+  { harness: (name: string) => Promise<SharedHarness> },
+  { sharedHarnessSlot: { current?: SharedHarness & { key: string } } }
+>({
+  sharedHarnessSlot: [
+    async ({ browser }, use) => {
+      const slot: { current?: SharedHarness & { key: string } } = {};
+      await use(slot);
+      if (browser.isConnected()) await slot.current?.page.close();
+    },
+    { scope: 'worker' },
+  ],
+  harness: async ({ browser, baseURL, viewport, sharedHarnessSlot: slot }, use) => {
+    await use(async (name) => {
+      const key = JSON.stringify([name, baseURL, viewport]);
+      if (slot.current?.key !== key || slot.current.page.isClosed()) {
+        await slot.current?.page.close();
+        const page = await browser.newPage({ baseURL, viewport });
+        slot.current = { key, page, problems: await openHarness(page, name) };
+      }
+      slot.current.problems.length = 0;
+      return slot.current;
+    });
+  },
+});

@@ -1,8 +1,9 @@
 import { createHash } from 'node:crypto';
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { activeGlsl } from '../playground/src/learn/compiledShader';
 import { withoutUseFog } from './glsl-active';
 import type { ProgramSource, SceneConfig, SceneInstance, SceneStats } from './harness/material';
+import { test } from './harness-helpers';
 
 // ShadingMaterial in an ordinary three.js scene (issue 14, phase 1): three's program parameters (instancing,
 // batching, skinning, morph targets, fog, clipping, tone mapping, output colour space) through three's shader
@@ -88,18 +89,18 @@ for (const [name, variant] of SHADINGS) {
   const config = { shading: 'phong', ...variant } as const;
   const flat = config.shading === 'flat';
   test(`InstancedMesh, ${name}: 3 instances at x = −2, 0, 2 where MeshPhongMaterial draws them; instanceColor × ka, kd = shade()`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { ...config, object: 'instanced', instances: THREE_INSTANCES });
     expectOracleCoverage(stats, 7000);
     expectShade(stats, flat ? 4500 : 6500);
   });
 
   test(`BatchedMesh, ${name}: 3 instances with colours, where MeshPhongMaterial draws them, colours = shade()`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { ...config, object: 'batched', instances: THREE_INSTANCES });
     expectOracleCoverage(stats, 7000);
     expectShade(stats, flat ? 4500 : 6500);
@@ -111,26 +112,26 @@ for (const [name, variant] of SHADINGS.filter(([n]) => !n.includes('analytic')))
   const config = { shading: 'phong', ...variant } as const;
   const flat = config.shading === 'flat';
   test(`SkinnedMesh with a moved bone, ${name}: MeshPhongMaterial's silhouette, colours = shade() of three's CPU skinning`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { ...config, object: 'skinned', bone: 0.7 });
     expectOracleCoverage(stats, 3000);
     expectShade(stats, flat ? 2500 : 3000);
   });
 
   test(`morph targets at full influence (positions and normals), ${name}: MeshPhongMaterial's silhouette, shade() colours`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { ...config, object: 'morphed' });
     expectOracleCoverage(stats, 4500);
     expectShade(stats, flat ? 3000 : 4000);
   });
 }
 
-test('per-instance morph weights (InstancedMesh.setMorphAt) move every instance', async ({ page }) => {
-  await open(page);
+test('per-instance morph weights (InstancedMesh.setMorphAt) move every instance', async ({ harness }) => {
+  const { page } = await harness('material');
   const instances: SceneInstance[] = [
     { position: [-1.5, 0, 0], scale: [0.7, 0.7, 0.7] },
     { position: [1.5, 0, 0], scale: [0.7, 0.7, 0.7] },
@@ -143,9 +144,9 @@ test('per-instance morph weights (InstancedMesh.setMorphAt) move every instance'
 });
 
 test('instancing × skinning × flat shading: a skinned mesh with instance matrices (three combines both chunks)', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   const instances: SceneInstance[] = [
     { position: [-1.5, 0, 0] },
     { position: [1.5, 0.2, 0], rotation: [0, 0.4, 0.5], scale: [0.8, 1.1, 0.9] },
@@ -163,9 +164,9 @@ test('instancing × skinning × flat shading: a skinned mesh with instance matri
 });
 
 test('non-uniform and sheared instance matrices: normals through the instance matrix (sign(det)·cofactor), = shade()', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   const instances: SceneInstance[] = [
     { position: [-1.8, 0, 0], scale: [0.4, 1.4, 0.8], rotation: [0.3, 0.5, 0.2], color: [1, 0.8, 0.6] },
     { position: [0.2, 0, 0], scale: [1.2, 0.5, 0.9], shear: 0.8 },
@@ -183,9 +184,9 @@ test('non-uniform and sheared instance matrices: normals through the instance ma
 });
 
 test('extremes: a mirrored instance (negative determinant) keeps outward normals (lit as shade() lights them)', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   // three sets the front face per object, not per instance: a mirrored instance shows its inner side (for
   // MeshPhongMaterial too); its outward normals face away from the eye and the light, as shade() says.
   const instances: SceneInstance[] = [
@@ -204,9 +205,9 @@ test('extremes: a mirrored instance (negative determinant) keeps outward normals
 });
 
 test('extremes: an instance with a zero scale draws the flattened disc with finite normals, = shade()', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   const instances: SceneInstance[] = [
     { position: [-1.5, 0, 0], scale: [0.9, 0.9, 0] },
     { position: [1.5, 0, 0], scale: [0.9, 0.9, 0.9] },
@@ -222,9 +223,9 @@ test('extremes: an instance with a zero scale draws the flattened disc with fini
 });
 
 test('extremes: instances with 1e20 and 1e-20 scales render without NaN (no black pixel)', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const scale of [
     [1e20, 0.8, 0.8],
     [0.8, 1e-20, 0.8],
@@ -255,9 +256,9 @@ const FOGS = [
 
 for (const [name, fog] of FOGS) {
   test(`scene.fog ${name}: the fog blend of MeshPhongMaterial at every depth, and shade() blended by fogFactor()`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     // Constant colour (ka·Ia only) against MeshPhongMaterial's emissive: the same fog factor at every pixel.
     expectOracleColours(
       await scene(page, { shading: 'phong', fog, scale: [2, 1, 2], constant: true }),
@@ -272,9 +273,9 @@ for (const [name, fog] of FOGS) {
 }
 
 test('fog × logarithmic depth: the same fog as MeshPhongMaterial with a logarithmic depth buffer', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const [, fog] of FOGS) {
     const config = { shading: 'phong', fog, scale: [2, 1, 2], logarithmic: true } as const;
     expectOracleColours(await scene(page, { ...config, constant: true }), 10000);
@@ -287,9 +288,9 @@ test('fog × logarithmic depth: the same fog as MeshPhongMaterial with a logarit
 });
 
 test('extremes: fog near = far is a step at that depth, density 0 no fog, density 1e6 all fog: finite, = fogFactor()', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const fog of [{ near: 2.2, far: 2.2 }, { density: 0 }, { density: 1e6 }]) {
     const stats = await scene(page, { shading: 'phong', fog, scale: [2, 1, 2] });
     expectOracleCoverage(stats, 11000);
@@ -322,8 +323,8 @@ const CLIPS = [
 ] as const;
 
 for (const [name, clip] of CLIPS) {
-  test(`clipping: ${name} cuts where MeshPhongMaterial is cut, colours = shade()`, async ({ page }) => {
-    await open(page);
+  test(`clipping: ${name} cuts where MeshPhongMaterial is cut, colours = shade()`, async ({ harness }) => {
+    const { page } = await harness('material');
     for (const [, variant] of SHADINGS) {
       const stats = await scene(page, {
         shading: 'phong',
@@ -338,9 +339,9 @@ for (const [name, clip] of CLIPS) {
 }
 
 test('clipping × outline: createOutline shares the planes, the hull is cut with the mesh', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const clip of [{ planes: [[1, 0, 0, 0]] }, { planes: [[1, 0, 0, 0]], global: true }] as Array<
     SceneConfig['clip']
   >) {
@@ -353,9 +354,9 @@ test('clipping × outline: createOutline shares the planes, the hull is cut with
 });
 
 test("tone mapping (ACES, exposure 2) and toneMapped: three's own tone mapping, as MeshPhongMaterial's", async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const level of [0.05, 0.3, 1, 4]) {
     const ka: [number, number, number] = [level, level * 0.6, level * 0.3];
     const stats = await scene(page, {
@@ -373,8 +374,8 @@ test("tone mapping (ACES, exposure 2) and toneMapped: three's own tone mapping, 
   expectShade(await scene(page, off), 10000);
 });
 
-test('output colour space: a linear-sRGB canvas gets the linear colours of shade()', async ({ page }) => {
-  await open(page);
+test('output colour space: a linear-sRGB canvas gets the linear colours of shade()', async ({ harness }) => {
+  const { page } = await harness('material');
   for (const [, variant] of SHADINGS) {
     const stats = await scene(page, { shading: 'phong', ...variant, linearOutput: true, scale: [2, 1, 2] });
     expectOracleCoverage(stats, 11000);
@@ -383,9 +384,9 @@ test('output colour space: a linear-sRGB canvas gets the linear colours of shade
 });
 
 test('the impostor is fogged and clipped like a mesh (the same chunks): MeshPhongMaterial on a fine sphere', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const extra of [
     { fog: { near: 1.5, far: 4 } },
     { clip: { planes: [[1, 0, 0, 0]] } },
@@ -456,9 +457,9 @@ const THREE_LIGHTS = [
 
 for (const [name, variant] of SHADINGS) {
   test(`three's Ambient, Hemisphere, Directional, Point and Spot lights with a PhongLight, ${name}: = shade() (Id = Is = colour × intensity / π, three's falloff)`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { shading: 'phong', ...variant, threeLights: THREE_LIGHTS });
     expectOracleCoverage(stats, 3000);
     expectShade(stats, 'shading' in variant && variant.shading === 'flat' ? 1500 : 2500);
@@ -476,9 +477,9 @@ for (const [name, light, object] of [
   ['a SpotLight on instances', THREE_LIGHTS[4], 'instanced'],
 ] as const) {
   test(`${name} alone lights the pixels MeshPhongMaterial lights (and only those), colours = shade()`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const config = {
       shading: 'phong',
       phongLight: false,
@@ -532,8 +533,8 @@ for (const [name, variant] of [
     { object: 'instanced', instances: THREE_INSTANCES, threeLights: THREE_LIGHTS },
   ],
 ] as const) {
-  test(`a PhongLight in the scene lights ${name} without being listed (= shade())`, async ({ page }) => {
-    await open(page);
+  test(`a PhongLight in the scene lights ${name} without being listed (= shade())`, async ({ harness }) => {
+    const { page } = await harness('material');
     const stats = await scene(page, { shading: 'phong', ...variant, listed: false });
     expectOracleCoverage(stats, 3000);
     expectShade(stats, 'shading' in variant && variant.shading === 'flat' ? 1500 : 2500);
@@ -544,9 +545,9 @@ for (const side of ['double', 'back'] as const)
   for (const mirrored of [false, true])
     for (const shading of ['phong', 'gouraud', 'flat'] as const)
       test(`side ${side === 'double' ? 'DoubleSide' : 'BackSide'}${mirrored ? ' × mirrored (det < 0)' : ''}, ${shading}: a back face is lit with its flipped normal (= shade())`, async ({
-        page,
+        harness,
       }) => {
-        await open(page);
+        const { page } = await harness('material');
         const stats = await page.evaluate((c) => window.materialHarness.sideCompare(c), {
           side,
           mirrored,
@@ -577,9 +578,9 @@ for (const [name, config] of [
   ],
 ] as const) {
   test(`flat shading without preparation, ${name}: drawn where MeshPhongMaterial (flatShading) draws, = shade() with the derivative face normal at the fragment`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { shading: 'flat', ...config } as SceneConfig);
     expectOracleCoverage(stats, 2500);
     expectShade(stats, 1500);
@@ -587,9 +588,9 @@ for (const [name, config] of [
 }
 
 test('flat shading without preparation, DoubleSide and BackSide: a back face is lit with its flipped normal', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const side of ['double', 'back'] as const)
     for (const mirrored of [false, true]) {
       const stats = await page.evaluate((c) => window.materialHarness.sideCompare(c), {
