@@ -21,6 +21,21 @@ describe('startXvfb', () => {
     expect(serves(server.display)).toBe(false);
   });
 
+  it("keeps the process alive while stop() waits (regression: a runner with nothing else pending exited there with code 0, its failed run's exit code lost)", () => {
+    // A process whose only pending work is stop(): it must go on after it and end with its own exit code.
+    const script = [
+      `import { startXvfb } from ${JSON.stringify(new URL('../dist/xvfb.js', import.meta.url).href)};`,
+      'const server = await startXvfb();',
+      'await server.stop();',
+      "console.log('after stop');",
+      'process.exitCode = 3;',
+    ].join('\n');
+    const run = spawnSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8' });
+    expect(run.stderr).toBe('');
+    expect(run.stdout).toBe('after stop\n');
+    expect(run.status).toBe(3);
+  });
+
   it('finds none on a PATH without it, says when the binary cannot start, and refuses a bad screen', async () => {
     expect(findXvfb({ PATH: '/nonexistent' })).toBeNull();
     await expect(startXvfb({ screen: 'big' })).rejects.toThrow(

@@ -100,6 +100,10 @@ export async function startXvfb({
     stop() {
       stopped ??= (async () => {
         process.removeListener('exit', onExit);
+        // Referenced again while it exits: waiting on an unreferenced child alone would let Node's event loop
+        // run empty and end the process with code 0 there (Playwright's runner, in a global teardown: its
+        // summary unprinted and a failed run's exit code lost).
+        child.ref();
         if (child.exitCode === null && child.signalCode === null) child.kill('SIGTERM');
         await exited;
       })();
