@@ -4,10 +4,10 @@
 // density 0 and 1e6, opacity and alphaTest 0 and 1 (against three's MeshPhongNodeMaterial), 0, 1 and 64 lights of
 // each kind (compiled, finite, pipelines bounded), a lost device, 1,000 create/dispose cycles of the node
 // materials, and 1,000 feature flips. Harness: tests/harness/webgpu-reliability.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { Backend, LightKind, WebGPUReliabilityHarness } from './harness/webgpu-reliability';
-import { openHarness } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -34,9 +34,9 @@ const proof = (backend: Backend) => ({
 for (const backend of BACKENDS) {
   for (const shading of ['phong', 'gouraud', 'flat'] as const) {
     test(`${backend}, ${shading}: instances with a negative determinant, a zero scale (a box flattened to a square, and all zero) and a 1e20 scale are lit with unit outward finite normals: each face = shade() of its expected normal`, async ({
-      page,
+      harness,
     }) => {
-      const problems = await open(page);
+      const { page, problems } = await harness('webgpu-reliability');
       const r = await run(page, 'instanceExtremes', backend, shading);
       const info = JSON.stringify(r);
       expect(r.backend, info).toEqual(proof(backend));
@@ -56,9 +56,9 @@ for (const backend of BACKENDS) {
   }
 
   test(`${backend}: fog near = far, density 0 and 1e6, opacity 0 and 1, alphaTest 0 and 1: finite (float target), drawn where MeshPhongNodeMaterial draws and within 2/255 of it; density 0 = no fog, 1e6 = the fog colour, near = far a step`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-reliability');
     const r = await run(page, 'surfaceExtremes', backend);
     const info = JSON.stringify(r);
     expect(r.backend, info).toEqual(proof(backend));
@@ -83,9 +83,9 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: no light, and 1 of each kind (ambient, hemisphere, directional, point, spot, PhongLight) alone and all together, in flat, gouraud and phong: compiled, finite, drawn; 200 flips among them add no pipeline`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-reliability');
     const r = await run(page, 'lightExtremes', backend, ['flat', 'gouraud', 'phong'], [0, 1], 'both', 200);
     const info = JSON.stringify({ ...r, before: undefined, swept: undefined, peak: undefined });
     expect(r.backend, info).toEqual(proof(backend));
@@ -112,9 +112,9 @@ for (const backend of BACKENDS) {
       ['point', 'spot', 'phong'],
     ] as LightKind[][]) {
       test(`${backend}, ${shading}: 64 lights of one kind (${kinds.join(', ')}; phong = PhongLight): compiled, finite, drawn; 30 flips among them add no pipeline`, async ({
-        page,
+        harness,
       }) => {
-        const problems = await open(page);
+        const { page, problems } = await harness('webgpu-reliability');
         const r = await run(page, 'lightExtremes', backend, [shading], [64], 'each', 30, kinds);
         const info = JSON.stringify({ ...r, before: undefined, swept: undefined, peak: undefined });
         expect(r.backend, info).toEqual(proof(backend));
@@ -133,12 +133,12 @@ for (const backend of BACKENDS) {
   }
 
   test(`${backend}: 64 lights of every kind in one scene (384 lights), phong: compiled, finite, drawn`, async ({
-    page,
+    harness,
   }) => {
     // One shading: its shader takes about 15 s to compile on an idle machine (SwiftShader), three times that on a
     // busy one; the other shadings are covered per kind above.
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-reliability');
     const r = await run(page, 'lightExtremes', backend, ['phong'], [64], 'together', 0);
     const info = JSON.stringify(r.results);
     expect(r.backend, info).toEqual(proof(backend));
@@ -225,9 +225,9 @@ for (const backend of BACKENDS) {
   for (let part = 1; part <= runs; part++) {
     const seed = 987654321 + 7919 * part;
     test(`${backend}: flipping every feature (shading, lighting, celBands, map, emissiveMap, alphaMap, transparent, alphaTest, side, fog, the outline's fog) keeps pipelines, programs and node builds bounded and releases them on dispose (flips ${125 * (part - 1) + 1}–${125 * part} of ${125 * runs})`, async ({
-      page,
+      harness,
     }) => {
-      const problems = await open(page);
+      const { page, problems } = await harness('webgpu-reliability');
       const r = await run(page, 'flipFeatures', backend, 125, seed);
       const info = JSON.stringify(r);
       expect(r.backend, info).toEqual(proof(backend));

@@ -4,10 +4,10 @@
 // against MeshPhongMaterial and shade()), within 2/255 away from triangle edges; for where and whether something
 // is drawn, three's MeshPhongNodeMaterial on the same WebGPURenderer; flat shading by derivatives against shade()
 // per fragment with the deformed face's normal. Harness: tests/harness/webgpu-scene.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { Diff, SceneCase, WebGPUSceneHarness } from './harness/webgpu-scene';
-import { openHarness } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -55,10 +55,10 @@ const SHADINGS: Pick<SceneCase, 'shading' | 'lighting'>[] = [
 for (const backend of BACKENDS) {
   for (const kind of KINDS) {
     test(`${backend}: ${kind === 'skinned' ? 'SkinnedMesh (a bone rotated and moved)' : kind === 'morphed' ? 'morph targets (positions and normals at influence 0.5)' : kind === 'batched' ? 'BatchedMesh (two instances, different matrices and colours)' : 'InstancedMesh (two instances, different matrices and colours)'}, phong, gouraud and flat: drawn where MeshPhongNodeMaterial draws, colours = WebGLRenderer + ShadingMaterial within 2/255; flat = shade() with the deformed face normal`, async ({
-      page,
+      harness,
     }) => {
       test.setTimeout(90_000);
-      const problems = await open(page);
+      const { page, problems } = await harness('webgpu-scene');
       for (const s of SHADINGS) {
         const c: SceneCase = { kind, ...s };
         const stats = await run<[string, SceneCase], SceneStats>(page, 'sceneCompare', backend, c);
@@ -87,10 +87,10 @@ for (const backend of BACKENDS) {
   }
 
   test(`${backend}: exact flat shading of a triangle soup and of a flatShadingGeometry made for this backend's provoking vertex, for a SkinnedMesh, a morphed mesh and an InstancedMesh (two instances): exactly one colour per face, = shade() at the moved face's centroid with its face normal, = WebGLRenderer + ShadingMaterial within 2/255, drawn where MeshPhongNodeMaterial draws`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     for (const flatGeometry of ['soup', 'prepared'] as const) {
       for (const kind of ['skinned', 'morphed', 'instanced', 'mesh'] as const) {
         for (const lighting of ['phong', 'blinn-phong'] as const) {
@@ -131,10 +131,10 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: ClippingGroup (around the object, nested as the renderer's global planes, clipIntersection) cuts where MeshPhongNodeMaterial is cut; the clipped pixels are exactly background, the rest unchanged, = WebGL ShadingMaterial with material and renderer clipping planes`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(90_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     for (const clip of ['local', 'global', 'intersection'] as const) {
       for (const shading of ['phong', 'flat'] as const) {
         const c: SceneCase = { kind: shading === 'flat' ? 'morphed' : 'mesh', shading, clip };
@@ -164,9 +164,9 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: material.clippingPlanes is ignored by WebGPURenderer (its clipping is ClippingGroup), for ShadingNodeMaterial as for MeshPhongNodeMaterial`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     const c: SceneCase = { kind: 'mesh', shading: 'phong', clip: 'material-planes' };
     const r = await run<[string, SceneCase], { removed: number; keptChanged: number; phongNode: Diff }>(
       page,
@@ -186,10 +186,10 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: ACES tone mapping and the sRGB or linear output colour space = WebGLRenderer + ShadingMaterial on its canvas within 2/255; linear output = the linear target; toneMapped = false changes nothing, as for MeshPhongNodeMaterial (WebGPURenderer tones the whole frame)`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(90_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     const cases: SceneCase[] = [
       { kind: 'skinned', shading: 'phong', output: 'srgb', toneMapping: true },
       { kind: 'morphed', shading: 'gouraud', output: 'srgb', toneMapping: true },
@@ -247,9 +247,9 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: materials of different variants drawn together in one scene each draw their own variant`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     const d = await run<[string], Diff>(page, 'mixedVariants', backend);
     expect(d.coverageMismatches, JSON.stringify(d)).toBe(0);
     expect(d.covered).toBeGreaterThan(1500);
@@ -258,9 +258,9 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: a variant changed through the setters after the first frame (shading, lighting, celBands) draws as a new material of that variant`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     const from: SceneCase = { kind: 'mesh', shading: 'phong' };
     for (const to of [{ shading: 'gouraud' }, { lighting: 'blinn-phong' }, { celBands: 4 }] as const) {
       const r = await run<[string, SceneCase, Partial<SceneCase>], { changed: number; againstFresh: Diff }>(
@@ -363,10 +363,10 @@ interface Counts {
 
 for (const backend of BACKENDS) {
   test(`${backend}: 1,000 ShadingNodeMaterials created, drawn for one frame and disposed: renderer.info.memory, the pipelines, programs and node builds back to where they were; same-variant materials share one pipeline; the picture unchanged`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     const r = await run<
       [string, number, number],
       {
@@ -437,10 +437,10 @@ function expectShadow(s: ShadowStats, label: string, backend: string, shadeable:
 
 for (const backend of BACKENDS) {
   test(`${backend}: receiveShadow from three's DirectionalLight, SpotLight and PointLight (cube map) in flat, gouraud and phong shading: shadowed exactly where MeshPhongNodeMaterial is, colours = shade() with the light × shadow factor and = WebGLRenderer + ShadingMaterial within 2/255`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     for (const shading of ['flat', 'gouraud', 'phong'] as const) {
       for (const light of ['directional', 'spot', 'point'] as const) {
         const c: ShadowCase = { shading, light, ks: light === 'directional' ? 0 : 0.5 };
@@ -457,10 +457,10 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: shadows with shadow.intensity 0.5, a texture, DoubleSide, and receiveShadow false (lit everywhere), in gouraud and flat shading (the terms recorded per vertex or face, shadowed per fragment)`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(90_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     for (const shading of ['flat', 'gouraud'] as const) {
       for (const extra of [{ intensity: 0.5 }, { map: true, ks: 0.5 }, { doubleSide: true }] as const) {
         const c: ShadowCase = { shading, light: 'directional', ...extra };
@@ -478,10 +478,10 @@ for (const backend of BACKENDS) {
   });
 
   test(`${backend}: a PhongLight with castShadow = true casts no shadow and breaks no material: the picture (ShadingNodeMaterial and three's MeshPhongNodeMaterial receiving a DirectionalLight's shadow) is exactly the one with castShadow false, no console error; three's light still shadows a ground lit by that PhongLight (= shade()); WebGLRenderer warns that it has no shadow and draws the same`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(60_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-scene');
     const r = await run<[string], { differing: number; drawn: number; black: number; backend: unknown }>(
       page,
       'phongCaster',

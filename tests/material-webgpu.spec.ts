@@ -3,9 +3,9 @@
 // into a RenderTarget and read back; every shading × lighting × cel variant against the CPU shade(), the same
 // scene against WebGLRenderer + ShadingMaterial, and the bad-input errors against ShadingMaterial's.
 // Harness: tests/harness/webgpu-material.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
-import { openHarness } from './harness-helpers';
+import { test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -86,9 +86,6 @@ interface Harness {
   sceneLights(b: Backend): Promise<Record<string, boolean>>;
 }
 
-/** Opens the harness; returns the page errors and console errors seen (none are expected). */
-const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-material');
-
 const VARIANTS: Variant[] = (['flat', 'gouraud', 'phong'] as const).flatMap((shading) =>
   (['phong', 'blinn-phong'] as const).flatMap((lighting) =>
     [0, 4].map((celBands) => ({ shading, lighting, celBands })),
@@ -96,9 +93,9 @@ const VARIANTS: Variant[] = (['flat', 'gouraud', 'phong'] as const).flatMap((sha
 );
 
 test('WebGPURenderer runs the WebGPU backend on a WebGPU device (no silent WebGL2 fallback), and forceWebGL the WebGL2 one', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('webgpu-material');
   expect(
     await page.evaluate(() => (window as never as { harness: Harness }).harness.backendInfo('webgpu')),
   ).toEqual({ isWebGPUBackend: true, isWebGLBackend: false, device: true, adapter: true });
@@ -111,10 +108,10 @@ test('WebGPURenderer runs the WebGPU backend on a WebGPU device (no silent WebGL
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
   test(`${backend} backend: every shading × lighting × cel variant = shade() within 2/255 away from edges; flat is one colour per face`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     for (const variant of VARIANTS) {
       const stats = await page.evaluate(
         ([b, v]) => (window as never as { harness: Harness }).harness.compare(b, v),
@@ -133,10 +130,10 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: three's ambient, hemisphere, directional, point and spot lights, an attenuated PhongLight with shininess 0 (0⁰ = 1), a sphere without normals, flat shading of an indexed geometry (by derivatives) and of an InstancedMesh's soup (each face one colour at its centroid, as ShadingMaterial) = shade() within 2/255`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     const cases: [Scenario, Variant[]][] = [
       ['three-lights', VARIANTS],
       ['attenuated', VARIANTS.filter((v) => v.celBands === 0)],
@@ -168,10 +165,10 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: a flatShadingGeometry made for this backend's provoking vertex is one exact colour per face; one made for the other backend is lit by derivatives with one warning`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     const warnings: string[] = [];
     page.on('console', (m) => {
       if (m.type() === 'warning') warnings.push(m.text());
@@ -201,9 +198,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: a mesh scaled to y = 0 (a disc; the robust normal matrix), a sphere drawn BackSide and an open cylinder drawn DoubleSide (back faces lit with the normal turned round, per vertex too) = WebGLRenderer + ShadingMaterial`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     for (const scenario of ['flattened', 'backside', 'doubleside'] as const) {
       for (const variant of VARIANTS.filter((v) => v.celBands === 0 && v.lighting === 'phong')) {
         const stats = await page.evaluate(
@@ -220,9 +217,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: a PhongLight added to or removed from the scene lights the material from that frame on; a material's lights list excludes the scene's others`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     const result = await page.evaluate(
       (b) => (window as never as { harness: Harness }).harness.sceneLights(b),
       backend,
@@ -237,9 +234,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: ka or a PhongLight edited in place to a bad value is reported once and drawn with the last valid values`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('webgpu-material');
     const frames = await page.evaluate(
       (b) => (window as never as { harness: Harness }).harness.inPlaceEdits(b),
       backend,
@@ -259,9 +256,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: the lecture scene, and the same in three's Fog, = WebGLRenderer + ShadingMaterial within 2/255, same coverage`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     for (const variant of [
       { shading: 'phong', lighting: 'phong', celBands: 0 },
       { shading: 'gouraud', lighting: 'blinn-phong', celBands: 4 },
@@ -307,10 +304,10 @@ const SURFACE_VARIANTS: Variant[] = (['flat', 'gouraud', 'phong'] as const).map(
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
   test(`${backend} backend: map, vertexColors, instanceColor, emissive, emissiveMap, opacity, transparent, alphaTest and alphaMap in each shading = shade() with the tint (texel × vertex colour × instance colour on ka and kd, never ks; per fragment in every shading), emissive and alpha, within 2/255`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(180_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     for (const surface of SURFACES) {
       for (const variant of [
         ...SURFACE_VARIANTS,
@@ -336,10 +333,10 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: the surface features = WebGLRenderer + ShadingMaterial within 2/255, same coverage, front, back and both sides`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(180_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     const cases: SurfaceCase[] = [
       ...SURFACES,
       { map: true, vertexColors: 'rgb', emissive: true, side: 'double' },
@@ -366,10 +363,10 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
   test(`${backend} backend: normalMap (tangent space through the derivative tangent frame, and object space) perturbs the material's own normal in phong shading: = shade() with the perturbed normal within 2/255, with a map too, and = WebGLRenderer + ShadingMaterial within 2/255; gouraud and flat shading ignore it with one console warning each`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     const warnings: string[] = [];
     page.on('console', (m) => {
       if (m.type() === 'warning' && m.text().includes('normalMap')) warnings.push(m.text());
@@ -435,9 +432,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: in three's Fog and FogExp2 (sRGB output), ShadingNodeMaterial({ ka: c, kd: c, ks: 0 }) = MeshPhongNodeMaterial({ color: c, specular: 0 }) and MeshLambertNodeMaterial({ color: c }) within 2/255: fog blended in linear before the output conversion, as three's node materials blend it (WebGLRenderer blends it in the output colour space)`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-material');
     for (const fog of ['none', 'range', 'exp2'] as const) {
       const r = await page.evaluate(
         ([b, f]) => (window as never as { harness: Harness }).harness.fogParity(b, f),
@@ -465,9 +462,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
 }
 
 test("bad input throws ShadingMaterial's errors (same class, same message but for the material's name)", async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('webgpu-material');
   const rows = await page.evaluate(() => (window as never as { harness: Harness }).harness.errors());
   expect(rows.length).toBeGreaterThan(10);
   for (const row of rows) {
