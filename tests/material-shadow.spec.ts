@@ -1,5 +1,6 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { ShadowConfig, ShadowStats } from './harness/material-shadow';
+import { test } from './harness-helpers';
 
 // ShadingMaterial receiving three's shadows (issue 14): a ground plane in the shadow of an occluder, lit by one of
 // three's shadow-casting lights and an AmbientLight. Where the shadow falls is three's own MeshPhongMaterial's
@@ -31,9 +32,9 @@ function expectShade(stats: ShadowStats): void {
 
 for (const shading of ['flat', 'gouraud', 'phong'] as const) {
   test(`receiveShadow, DirectionalLight, ${shading}: shadowed where MeshPhongMaterial is, colours = shade() with the light × shadow factor`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material-shadow');
     const stats = await compare(page, { shading, light: 'directional' });
     expectOracleShadow(stats);
     expectShade(stats);
@@ -42,9 +43,9 @@ for (const shading of ['flat', 'gouraud', 'phong'] as const) {
 
 for (const light of ['spot', 'point'] as const) {
   test(`receiveShadow, ${light === 'spot' ? 'SpotLight' : 'PointLight (cube shadow map)'}, phong: where MeshPhongMaterial is shadowed, = shade()`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material-shadow');
     const stats = await compare(page, { shading: 'phong', light, ks: 0.5 });
     expectOracleShadow(stats);
     expectShade(stats);
@@ -52,9 +53,9 @@ for (const light of ['spot', 'point'] as const) {
 }
 
 test('gouraud and flat with a SpotLight and a PointLight: the shadow falls where MeshPhongMaterial has it', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   for (const shading of ['flat', 'gouraud'] as const) {
     for (const light of ['spot', 'point'] as const) {
       expectOracleShadow(await compare(page, { shading, light }));
@@ -63,9 +64,9 @@ test('gouraud and flat with a SpotLight and a PointLight: the shadow falls where
 });
 
 test("shadow.intensity 0.5: half of the light is kept in the shadow (three's 1 − intensity), = shade()", async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   for (const shading of ['gouraud', 'phong'] as const) {
     const stats = await compare(page, { shading, light: 'directional', intensity: 0.5 });
     expectOracleShadow(stats);
@@ -74,9 +75,9 @@ test("shadow.intensity 0.5: half of the light is kept in the shadow (three's 1 �
 });
 
 test('PCF shadow maps: the soft shadow falls where MeshPhongMaterial has it; cel bands keep the shadow', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   expectOracleShadow(await compare(page, { shading: 'phong', light: 'directional', mapType: 'pcf' }));
   const cel = await compare(page, { shading: 'phong', light: 'directional', celBands: 3 });
   expectOracleShadow(cel);
@@ -84,9 +85,9 @@ test('PCF shadow maps: the soft shadow falls where MeshPhongMaterial has it; cel
 });
 
 test('receiveShadow false: no shadow on ShadingMaterial (the light is kept everywhere, = shade())', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   const stats = await compare(page, { shading: 'phong', light: 'directional', receive: false });
   expect(stats.shadowed, JSON.stringify(stats)).toBe(0);
   expect(stats.compared).toBeGreaterThan(20000);
@@ -100,9 +101,9 @@ test('flipping receiveShadow and castShadow 1,000 times keeps programs bounded',
 });
 
 test('a texture on gouraud and flat shading (the ka/kd part × texel and the ks part shadowed apart), DoubleSide: = shade()', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   for (const shading of ['flat', 'gouraud'] as const) {
     // Shininess 0: the highlight is uniform, so per-vertex and per-face colours are exact on the plane.
     const stats = await compare(page, {
@@ -128,18 +129,18 @@ test('a texture on gouraud and flat shading (the ka/kd part × texel and the ks 
 });
 
 test('the impostor and the outline in a scene with a shadow-casting light draw as without it', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   const { drawn, differing } = await page.evaluate(() => window.shadowHarness.othersWithShadows());
   expect(drawn).toBeGreaterThan(1000);
   expect(differing).toBe(0);
 });
 
 test("three's lights with an attenuated PhongLight, lit per fragment in view space (perspective, orthographic) or in world space (a scaled camera): = shade()", async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material-shadow');
   for (const camera of ['perspective', 'orthographic', 'scaled'] as const) {
     for (const shading of ['phong', 'gouraud'] as const) {
       const stats = await compare(page, {

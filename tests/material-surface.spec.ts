@@ -1,5 +1,6 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { SceneConfig, SceneStats, SceneSurface } from './harness/material';
+import { test } from './harness-helpers';
 
 // ShadingMaterial's surface (issue 14): three's map, vertexColors, emissive/emissiveMap, opacity/transparent,
 // alphaTest and alphaMap, by three's property names and chunks. Where and whether a pixel is drawn (alpha-tested
@@ -57,8 +58,8 @@ const SURFACES: Array<[string, SceneSurface]> = [
 ];
 
 for (const [name, surface] of SURFACES) {
-  test(`${name}: every shading, = shade() and MeshPhongMaterial's coverage`, async ({ page }) => {
-    await open(page);
+  test(`${name}: every shading, = shade() and MeshPhongMaterial's coverage`, async ({ harness }) => {
+    const { page } = await harness('material');
     for (const [shadingName, variant] of SHADINGS) {
       const stats = await scene(page, { ...variant, object: 'uv-sphere', surface });
       expectSurface(stats, shadingName.startsWith('flat') ? 1000 : 2000);
@@ -66,8 +67,8 @@ for (const [name, surface] of SURFACES) {
   });
 }
 
-test('the surface with three’s lights and fog', async ({ page }) => {
-  await open(page);
+test('the surface with three’s lights and fog', async ({ harness }) => {
+  const { page } = await harness('material');
   for (const [, variant] of SHADINGS) {
     const stats = await scene(page, {
       ...variant,
@@ -108,9 +109,9 @@ for (const [name, surface] of [
   ['object space (normalMapType)', { normalMap: 'object' }],
 ] as Array<[string, SceneSurface]>) {
   test(`normalMap, ${name}: the normal through three's tangent frame in world space, = shade() with that normal`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     const stats = await scene(page, { ...PLANE, surface });
     expectSurface(stats, 3000);
     // The map matters: shade() with the unperturbed normal is far from what is drawn.
@@ -140,9 +141,9 @@ test('normalMap with gouraud or flat shading: ignored (no per-fragment normal), 
 
 for (const side of ['double', 'back'] as const)
   test(`normalMap on a back face (${side === 'double' ? 'DoubleSide' : 'BackSide'}): lit with the flipped perturbed normal, = shade()`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     // The plane turned away: its back face looks at the camera and the light.
     const config = {
       ...PLANE,
@@ -159,9 +160,9 @@ for (const side of ['double', 'back'] as const)
 
 for (const side of ['double', 'back'] as const)
   test(`a textured, vertex-coloured back face (${side === 'double' ? 'DoubleSide' : 'BackSide'}), every shading: the ka/kd and ks parts of each side, = shade() with the flipped normal`, async ({
-    page,
+    harness,
   }) => {
-    await open(page);
+    const { page } = await harness('material');
     for (const [rotation, minCompared] of [
       [[-0.5, 0.35, 0.1], 3000], // front faces (DoubleSide only)
       [[0.5, Math.PI - 0.35, 0.1], 3000], // back faces

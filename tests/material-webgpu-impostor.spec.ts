@@ -2,9 +2,9 @@
 // backend (forceWebGL), rendered offscreen into a RenderTarget and read back: against WebGLRenderer +
 // SphereImpostorMaterial in the same scene (coverage and colours), its depth against a mesh box and a subdivided
 // mesh sphere, and its bad-input errors against SphereImpostorMaterial's. Harness: tests/harness/webgpu-impostor.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
-import { openHarness } from './harness-helpers';
+import { test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
@@ -76,16 +76,15 @@ interface Harness {
 }
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
-const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-impostor');
 
 const VARIANTS: Variant[] = (['phong', 'blinn-phong'] as const).flatMap((lighting) =>
   [0, 4].map((celBands) => ({ lighting, celBands })),
 );
 
 test('WebGLRenderer + SphereImpostorMaterial: the whole scene scaled by 1e15 and by 1e-18 = the scene unscaled (same coverage but for silhouette pixels, colours within 2/255 away from edges); neither did before its inverse matrix was scaled by a power of two (1e15: the coverage wrong off the silhouette; 1e-18: nothing drawn)', async ({
-  page,
+  harness,
 }) => {
-  const problems = await open(page);
+  const { page, problems } = await harness('webgpu-impostor');
   for (const variant of VARIANTS) {
     for (const scenario of ['huge', 'tiny'] as const) {
       const stats = await page.evaluate(
@@ -104,10 +103,10 @@ test('WebGLRenderer + SphereImpostorMaterial: the whole scene scaled by 1e15 and
 
 for (const backend of ['webgpu', 'webgl2'] as const) {
   test(`${backend} backend: the impostor (an ellipsoid 2, 1, 2 and a unit sphere, one mesh each and two instances of an InstancedMesh; mirrored; orthographic; in three's Fog; cut by clipping planes; spheres scaled by 1e±20 that draw nothing; the eye inside) = WebGLRenderer + SphereImpostorMaterial; the scene scaled by 1e15 and 1e-18 = the scene unscaled: same coverage but for silhouette pixels, colours within 2/255 away from edges`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-impostor');
     const info = await page.evaluate(
       (b) => (window as never as { harness: Harness }).harness.backendInfo(b),
       backend,
@@ -167,10 +166,10 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: the impostor writes its exact depth: a mesh box through it is hidden where it is behind, as with WebGLRenderer + SphereImpostorMaterial and as with a subdivided mesh sphere`, async ({
-    page,
+    harness,
   }) => {
     test.setTimeout(120_000);
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-impostor');
     for (const variant of [VARIANTS[0], VARIANTS[3]]) {
       const stats = await page.evaluate(
         ([b, v]) => (window as never as { harness: Harness }).harness.crossRenderer(b, v, 'box'),
@@ -199,9 +198,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   });
 
   test(`${backend} backend: the impostor's depth in a logarithmic and in a reversed-Z depth buffer hides the box as a subdivided mesh sphere does`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-impostor');
     for (const mode of ['logarithmic', 'reversed'] as const) {
       const o = await page.evaluate(
         ([b, v, m]) => (window as never as { harness: Harness }).harness.occlusion(b, v, m),
@@ -222,9 +221,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
 }
 
 test("bad input throws SphereImpostorMaterial's errors (same class, same message but for the material's name)", async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('webgpu-impostor');
   const { rows, setters, valid } = await page.evaluate(() =>
     (window as never as { harness: Harness }).harness.errors(),
   );

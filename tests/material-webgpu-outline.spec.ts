@@ -3,15 +3,14 @@
 // against the hull built on the CPU from three's own deformation (drawn by three's MeshBasicNodeMaterial on the
 // same renderer: where the outline is) and against WebGLRenderer + createOutline's OutlineMaterial in the same
 // scene (the same coverage). Harness: tests/harness/webgpu-outline.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { Backend, Instance, OutlineConfig, WebGPUOutlineHarness } from './harness/webgpu-outline';
-import { openHarness } from './harness-helpers';
+import { test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
-const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-outline');
 
 function outline(page: Page, backend: Backend, config: OutlineConfig) {
   return page.evaluate(
@@ -69,9 +68,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
     ['instanced, instanced × skinning', CASES.slice(4)],
   ] as const) {
     test(`${backend} backend: createOutlineNode on ${group}: the hull of the deformed surface, where the CPU hull of three's deformation is and where WebGLRenderer + OutlineMaterial draws it`, async ({
-      page,
+      harness,
     }) => {
-      const problems = await open(page);
+      const { page, problems } = await harness('webgpu-outline');
       for (const [name, config, moved] of cases) {
         const stats = await outline(page, backend, { ...config, thickness: 0.12 });
         const info = `${backend} ${name}: ${JSON.stringify(stats)}`;
@@ -97,9 +96,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
   }
 
   test(`${backend} backend: the outline of instances with a negative determinant, a zero and a 1e20 scale: finite (no stray pixel), the same coverage as WebGLRenderer + OutlineMaterial (the robust normal sign(det)·cof)`, async ({
-    page,
+    harness,
   }) => {
-    const problems = await open(page);
+    const { page, problems } = await harness('webgpu-outline');
     const stats = await outline(page, backend, {
       object: 'instanced',
       instances: EXTREME_INSTANCES,
@@ -116,9 +115,9 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
 }
 
 test("OutlineNodeMaterial's options: OutlineMaterial's defaults, and its errors for bad input (same class, same message but for the material's name)", async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('webgpu-outline');
   const { rows, defaults } = await page.evaluate(() =>
     (window as never as { harness: WebGPUOutlineHarness }).harness.errors(),
   );

@@ -1,5 +1,6 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { CompareConfig, CompareStats } from './harness/material';
+import { test } from './harness-helpers';
 
 // GPU against CPU, pixel by pixel: the lecture's scene (tetrahedron sphere level 6, scale (2, 1, 2), camera
 // at (0, 0, 3) looking at the origin, fovy 90, light at (−5, 10, 20) with Ia 0.2, Id 1, Is 0.8) rendered
@@ -28,9 +29,9 @@ for (const shading of ['phong', 'gouraud', 'flat'] as const) {
   for (const lighting of ['phong', 'blinn-phong'] as const) {
     for (const celBands of [0, 3]) {
       test(`${shading} shading × ${lighting} lighting${celBands ? ` × ${celBands} cel bands` : ''} matches shade()`, async ({
-        page,
+        harness,
       }) => {
-        await open(page);
+        const { page } = await harness('material');
         const stats = await compare(page, { shading, lighting, celBands });
         expectMatch(stats, shading === 'flat' ? 6000 : 8000);
         if (shading === 'flat') {
@@ -46,9 +47,9 @@ for (const shading of ['phong', 'gouraud', 'flat'] as const) {
 }
 
 test('flat shading of a flatShadingGeometry (indexed, each face on its own last vertex) matches shade() too', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   for (const lighting of ['phong', 'blinn-phong'] as const) {
     for (const celBands of [0, 3]) {
       const stats = await compare(page, { shading: 'flat', lighting, celBands, flatCorners: true });
@@ -69,21 +70,21 @@ test('flat shading of a flatShadingGeometry (indexed, each face on its own last 
 });
 
 test('gouraud with analytic sphere normals (no normal attribute) and phong with a normal attribute', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   expectMatch(await compare(page, { shading: 'gouraud', lighting: 'phong', analytic: true }));
   expectMatch(await compare(page, { shading: 'phong', lighting: 'blinn-phong', analytic: false }));
 });
 
-test('an orthographic camera uses the constant view direction', async ({ page }) => {
-  await open(page);
+test('an orthographic camera uses the constant view direction', async ({ harness }) => {
+  const { page } = await harness('material');
   expectMatch(await compare(page, { shading: 'phong', lighting: 'phong', orthographic: true }), 5000);
   expectMatch(await compare(page, { shading: 'gouraud', lighting: 'blinn-phong', orthographic: true }), 5000);
 });
 
-test('a rotated, mirrored model (negative determinant) keeps outward normals', async ({ page }) => {
-  await open(page);
+test('a rotated, mirrored model (negative determinant) keeps outward normals', async ({ harness }) => {
+  const { page } = await harness('material');
   const rotation: [number, number, number] = [0.4, -0.9, 0.3];
   expectMatch(await compare(page, { shading: 'phong', lighting: 'phong', scale: [-2, 1, 2], rotation }));
   expectMatch(await compare(page, { shading: 'flat', lighting: 'phong', scale: [2, -1, 2], rotation }), 6000);
@@ -100,16 +101,16 @@ const extremes: Array<[string, CompareConfig]> = [
   ],
 ];
 for (const [name, config] of extremes) {
-  test(`extremes: ${name} matches shade()`, async ({ page }) => {
-    await open(page);
+  test(`extremes: ${name} matches shade()`, async ({ harness }) => {
+    const { page } = await harness('material');
     expectMatch(await compare(page, config));
   });
 }
 
 test('extremes: a light at the surface (t = 0, a = 0) stays finite: no black (NaN) pixel', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   // The light sits on the sphere's front vertex (0, 0, 2) with a = 0: attenuation up to 10⁶. The colour
   // there is ill-conditioned (l is tangent to the surface, scaled by 1/t), so only finiteness is checked.
   for (const shading of ['phong', 'gouraud', 'flat'] as const) {
@@ -124,8 +125,8 @@ test('extremes: a light at the surface (t = 0, a = 0) stays finite: no black (Na
   }
 });
 
-test('extremes: zero, 1e-20 and 1e20 scales render without NaN (no black pixel)', async ({ page }) => {
-  await open(page);
+test('extremes: zero, 1e-20 and 1e20 scales render without NaN (no black pixel)', async ({ harness }) => {
+  const { page } = await harness('material');
   for (const scale of [
     [2, 1, 0],
     [2, 1, 1e-20],
@@ -165,18 +166,18 @@ test('1,000 option flips keep renderer.info.programs bounded by the variants use
 });
 
 test('one material drawing two differently transformed objects in a row renders each correctly', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   const result = await page.evaluate(() => window.materialHarness.sharedMaterial());
   expect(result.covered).toBeGreaterThan(2000);
   expect(result.differing).toBe(0);
 });
 
 test('createOutline draws a black inverted-hull ring around a cel sphere and leaves the sphere unchanged', async ({
-  page,
+  harness,
 }) => {
-  await open(page);
+  const { page } = await harness('material');
   const result = await page.evaluate(() => window.materialHarness.outline(0.08));
   expect(result.covered).toBeGreaterThan(3000);
   expect(result.insideChanged).toBe(0);
