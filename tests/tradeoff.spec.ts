@@ -1,14 +1,10 @@
 // The ray-cast impostor against the exact CPU reference (renderReference, computed in the page for the same
 // view): colours within 1/255 over the interior (the issue's bound is 2/255), the silhouette exact to half a
 // pixel, depth exact.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { TradeOption, TradeView } from '../playground/src/tradeoff/tradeoffScene';
 import type { CompareResult } from './harness/tradeoff';
-
-async function open(page: Page) {
-  await page.goto('/harness/tradeoff.html');
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
-}
+import { test } from './harness-helpers';
 
 const impostor: TradeOption = { shading: 'impostor' };
 
@@ -30,9 +26,10 @@ function expectExact(r: CompareResult) {
 }
 
 test.describe('impostor vs reference', () => {
-  test.beforeEach(async ({ page }) => open(page));
-
-  test('the lecture scene at 1280×720: within 1/255 inside, silhouette within 0.5 px', async ({ page }) => {
+  test('the lecture scene at 1280×720: within 1/255 inside, silhouette within 0.5 px', async ({
+    harness,
+  }) => {
+    const { page } = await harness('tradeoff');
     const r = await compare(page, { width: 1280, height: 720 });
     test.info().annotations.push({ type: 'impostor', description: JSON.stringify(r) });
     expectExact(r);
@@ -50,7 +47,8 @@ test.describe('impostor vs reference', () => {
     ['small and far (30 px)', { width: 320, height: 240, eye: [0, 0, 9.5], fovy: 20 }],
   ];
   for (const [name, view] of views) {
-    test(name, async ({ page }) => {
+    test(name, async ({ harness }) => {
+      const { page } = await harness('tradeoff');
       const r = await compare(page, view);
       expectExact(r);
     });
@@ -105,7 +103,8 @@ test.describe('impostor vs reference', () => {
     ],
   ];
   for (const [name, view] of extremes) {
-    test(`extremes: ${name}`, async ({ page }) => {
+    test(`extremes: ${name}`, async ({ harness }) => {
+      const { page } = await harness('tradeoff');
       const r = await compare(page, view);
       test.info().annotations.push({ type: 'impostor', description: JSON.stringify(r) });
       expectExact(r);
@@ -123,7 +122,8 @@ test.describe('impostor vs reference', () => {
     ['standard', [{ width: 320, height: 240, near: 1e-3, far: 1e4 }, ...farViews]],
     ['logarithmic', [{ width: 320, height: 240, near: 1e-3, far: 1e4 }, ...farViews]],
   ] as const) {
-    test(`extremes: far/near up to 1e9 with a ${depth} depth buffer`, async ({ page }) => {
+    test(`extremes: far/near up to 1e9 with a ${depth} depth buffer`, async ({ harness }) => {
+      const { page } = await harness('tradeoff');
       for (const view of views) {
         const r = await page.evaluate(([v, o, d]) => window.tradeoff.compare(v, o, d), [
           view,
@@ -138,14 +138,18 @@ test.describe('impostor vs reference', () => {
     });
   }
 
-  test('cel bands: exact except where a band edge rounds differently in float32', async ({ page }) => {
+  test('cel bands: exact except where a band edge rounds differently in float32', async ({ harness }) => {
+    const { page } = await harness('tradeoff');
     const r = await compare(page, { width: 320, height: 240, celBands: 4 });
     expect(r.silhouettePx).toBeLessThanOrEqual(0.5);
     expect(r.rmse).toBeLessThan(2);
     expect(r.blackPixels).toBe(0);
   });
 
-  test('depth is exact: a plane through the ellipsoid hides exactly the part behind it', async ({ page }) => {
+  test('depth is exact: a plane through the ellipsoid hides exactly the part behind it', async ({
+    harness,
+  }) => {
+    const { page } = await harness('tradeoff');
     for (const planeZ of [1.6, 1.8, 1.9]) {
       const r = await page.evaluate(
         ([o, z]) => window.tradeoff.depthCheck({ width: 320, height: 240 }, o, z),
@@ -159,8 +163,9 @@ test.describe('impostor vs reference', () => {
 
   for (const depth of ['logarithmic', 'reversed'] as const) {
     test(`a ${depth} depth buffer: the same exact pixels, and exact depth against a mesh plane`, async ({
-      page,
+      harness,
     }) => {
+      const { page } = await harness('tradeoff');
       for (const view of [
         { width: 320, height: 240 },
         { width: 320, height: 240, projection: 'orthographic' },
@@ -185,15 +190,17 @@ test.describe('impostor vs reference', () => {
     });
   }
 
-  test('eye inside the ellipsoid: nothing drawn (front surface clipped), no NaN', async ({ page }) => {
+  test('eye inside the ellipsoid: nothing drawn (front surface clipped), no NaN', async ({ harness }) => {
+    const { page } = await harness('tradeoff');
     const r = await compare(page, { width: 160, height: 120, eye: [0, 0, 0.5] });
     expect(r.blackPixels).toBe(0);
     expect(r.mismatchedPixels).toBe(0);
   });
 
   test('extreme model scales (1e-20, 1e20) and a huge far/near view stay finite and agree with the reference', async ({
-    page,
+    harness,
   }) => {
+    const { page } = await harness('tradeoff');
     for (const scale of [1e-20, 1e20]) {
       const r = await compare(page, { width: 160, height: 120, scale: [scale, scale, scale] });
       expect(r.blackPixels).toBe(0);
@@ -206,8 +213,9 @@ test.describe('impostor vs reference', () => {
   });
 
   test('two impostors sharing one material: per-object uniforms are re-uploaded between draws', async ({
-    page,
+    harness,
   }) => {
+    const { page } = await harness('tradeoff');
     const r = await page.evaluate(() => window.tradeoff.sharedMaterialCheck());
     expect(r.coveredA).toBeGreaterThan(500);
     expect(r.coveredB).toBeGreaterThan(500);
@@ -215,8 +223,9 @@ test.describe('impostor vs reference', () => {
   });
 
   test('a zero scale: every mesh shading draws the flattened disc as the reference does (normal towards the viewer)', async ({
-    page,
+    harness,
   }) => {
+    const { page } = await harness('tradeoff');
     // The docs/design.md row "model matrix with a zero scale": face on, and rotated in an oblique view. (The
     // impostor draws nothing at a zero scale: its quad's inverse matrix is singular; see the material README.)
     for (const view of [
@@ -236,7 +245,8 @@ test.describe('impostor vs reference', () => {
     }
   });
 
-  test('the meshes converge on the same reference (phong, icosahedron 5 vs 1)', async ({ page }) => {
+  test('the meshes converge on the same reference (phong, icosahedron 5 vs 1)', async ({ harness }) => {
+    const { page } = await harness('tradeoff');
     const fine = await compare(
       page,
       { width: 320, height: 240 },
