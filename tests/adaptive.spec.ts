@@ -2,17 +2,14 @@
 // scene (honesty: at most the budget at the 99th percentile of the drawn pixels, at most 0.5% of them over it; a
 // field of spheres, of torus knots and of a glTF model exported and loaded back in the page), and
 // 1,000 instances moving for 600 frames with a bounded number of draw calls and uploads.
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import type { CameraKind, Field } from './harness/adaptive';
-
-test.beforeEach(async ({ page }) => {
-  await page.goto('/harness/adaptive.html');
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
-});
+import { test } from './harness-helpers';
 
 for (const field of ['spheres', 'knots', 'model'] as Field[]) {
   for (const camera of ['perspective', 'orthographic'] as CameraKind[]) {
-    test(`honesty: a ${field} field, ${camera} camera, budgets 2, 8 and 32`, async ({ page }) => {
+    test(`honesty: a ${field} field, ${camera} camera, budgets 2, 8 and 32`, async ({ harness }) => {
+      const { page } = await harness('adaptive');
       for (const budget of [2, 8, 32]) {
         // The model's orthographic view zoomed in (2.5×): there some of its meshes take a cheaper shading.
         const zoom = field === 'model' ? 2.5 : 1;
@@ -34,8 +31,9 @@ for (const field of ['spheres', 'knots', 'model'] as Field[]) {
 }
 
 test('the loaded model is what GLTFLoader gave back: three meshes, swapped to ShadingMaterial per field slot', async ({
-  page,
+  harness,
 }) => {
+  const { page } = await harness('adaptive');
   const meshes = await page.evaluate(() => window.adaptiveHarness.loadedModel());
   expect(meshes.map((m) => m.name).sort()).toEqual(['ring', 'rock', 'vase']);
   for (const m of meshes) {
@@ -44,7 +42,8 @@ test('the loaded model is what GLTFLoader gave back: three meshes, swapped to Sh
   }
 });
 
-test('1,000 instances moving for 600 frames: bounded draw calls and uploads', async ({ page }) => {
+test('1,000 instances moving for 600 frames: bounded draw calls and uploads', async ({ harness }) => {
+  const { page } = await harness('adaptive');
   const r = await page.evaluate(() => window.adaptiveHarness.instances(600));
   test.info().annotations.push({ type: 'instances', description: JSON.stringify(r) });
   expect(r.instances).toBe(1000);
