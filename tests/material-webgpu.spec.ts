@@ -71,6 +71,10 @@ interface Harness {
     scenario?: Scenario,
     surface?: SurfaceCase,
   ): Promise<{ covered: number; maxDelta: number; differing: number; coverageMismatch: number }>;
+  emissiveEdits(b: Backend): Promise<{
+    frames: { step: string; is: 'black' | 'red' | 'other'; version: number }[];
+    impostorVersions: number[];
+  }>;
   errors(): { options: string; webgl: string; node: string }[];
   fogEffect(b: Backend, v: Variant): Promise<number>;
   fogParity(
@@ -253,6 +257,43 @@ for (const backend of ['webgpu', 'webgl2'] as const) {
       [],
     ]);
     expect(frames.map((f) => f.sameAsFirst)).toEqual([true, true, true, true, false]);
+  });
+
+  test(`${backend} backend: the emissive is built in only while it is not black (as ShadingMaterial's): set black → red → black, the next frame is a new black or red material's picture; edited in place, from the frame after; steady frames rebuild nothing, nor does an emissive impostor (which adds none)`, async ({
+    harness,
+  }) => {
+    const { page, problems } = await harness('webgpu-material');
+    const r = await page.evaluate(
+      (b) => (window as never as { harness: Harness }).harness.emissiveEdits(b),
+      backend,
+    );
+    const info = JSON.stringify(r);
+    expect(
+      r.frames.map((f) => `${f.step}: ${f.is}`),
+      info,
+    ).toEqual([
+      'black: black',
+      'black, steady: black',
+      'set red: red',
+      'red, steady: red',
+      'red, steady: red',
+      'set black: black',
+      // The in-place edit is seen while the frame's bindings are refreshed, after its pipeline was chosen.
+      'red in place: black',
+      'red in place, next frame: red',
+      'red in place, steady: red',
+      'black in place: black',
+      'black in place, next frame: black',
+      'black in place, steady: black',
+    ]);
+    // needsUpdate raises the version: once at each change of whether the emissive is built in (an in-place edit
+    // during the frame that sees it), never on a steady frame.
+    expect(
+      r.frames.map((f) => f.version - r.frames[0].version),
+      info,
+    ).toEqual([0, 0, 1, 1, 1, 2, 3, 3, 3, 4, 4, 4]);
+    expect(new Set(r.impostorVersions).size, info).toBe(1);
+    expect(problems).toEqual([]);
   });
 
   test(`${backend} backend: the lecture scene, and the same in three's Fog, = WebGLRenderer + ShadingMaterial within 2/255, same coverage`, async ({

@@ -11,7 +11,8 @@ import {
   ShadingMaterial,
   shade,
 } from '@shadelab/material';
-import { ShadingNodeMaterial } from '@shadelab/material/webgpu';
+import { createImpostorQuad } from '@shadelab/material/impostor';
+import { ShadingNodeMaterial, SphereImpostorNodeMaterial } from '@shadelab/material/webgpu';
 import { SubdivisionSphereGeometry } from '@shadelab/sphere';
 import {
   AmbientLight,
@@ -997,6 +998,81 @@ async function inPlaceEdits(backend: Backend) {
 }
 
 /**
+ * The emissive is built in only while it is not black (as ShadingMaterial's SHADING_EMISSIVE): frames of one
+ * material whose emissive is set through the setter (black → red → black), then edited in place (black → red →
+ * black), each frame's pixels against the same scene drawn by a new material made black or red; and
+ * `material.version` over steady frames (a rebuild raises it), for it and for an emissive impostor (whose
+ * lighting adds no emissive).
+ */
+async function emissiveEdits(backend: Backend) {
+  const renderer = await gpuRenderer(backend);
+  const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
+  const draw = async (material: ShadingNodeMaterial) => {
+    const { scene: s, camera } = scene(material);
+    renderer.setRenderTarget(target);
+    renderer.setClearColor(0x0000ff, 1);
+    renderer.clear();
+    renderer.render(s, camera);
+    const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
+    renderer.setRenderTarget(null);
+    return Array.from(pixels);
+  };
+  const RED = [0.2, 0, 0] as const;
+  const fresh = async (emissive: readonly number[]) => {
+    const m = new ShadingNodeMaterial({ lights: [], emissive: [...emissive] as [number, number, number] });
+    const pixels = await draw(m);
+    m.dispose();
+    return pixels;
+  };
+  const black = await fresh([0, 0, 0]);
+  const red = await fresh(RED);
+  const material = new ShadingNodeMaterial({ lights: [] });
+  const frames: { step: string; is: 'black' | 'red' | 'other'; version: number }[] = [];
+  const frame = async (step: string) => {
+    const pixels = await draw(material);
+    const same = (p: number[]) => p.every((v, k) => v === pixels[k]);
+    frames.push({ step, is: same(black) ? 'black' : same(red) ? 'red' : 'other', version: material.version });
+  };
+  try {
+    await frame('black');
+    await frame('black, steady');
+    material.emissive = [...RED] as [number, number, number];
+    await frame('set red');
+    await frame('red, steady');
+    await frame('red, steady');
+    material.emissive = 0;
+    await frame('set black');
+    material.emissive.setRGB(...RED);
+    await frame('red in place');
+    await frame('red in place, next frame');
+    await frame('red in place, steady');
+    material.emissive.setRGB(0, 0, 0);
+    await frame('black in place');
+    await frame('black in place, next frame');
+    await frame('black in place, steady');
+    const impostor = new SphereImpostorNodeMaterial({
+      lights: [],
+      emissive: [...RED] as [number, number, number],
+    });
+    const versions: number[] = [];
+    const { scene: s, camera, mesh } = scene(impostor);
+    mesh.geometry = createImpostorQuad();
+    for (let i = 0; i < 3; i++) {
+      renderer.setRenderTarget(target);
+      renderer.render(s, camera);
+      renderer.setRenderTarget(null);
+      versions.push(impostor.version);
+    }
+    mesh.geometry.dispose();
+    impostor.dispose();
+    return { frames, impostorVersions: versions };
+  } finally {
+    target.dispose();
+    material.dispose();
+  }
+}
+
+/**
  * The scene's PhongLights followed frame by frame, and a material's `lights` list: pixels of (0) the lecture's
  * scene, (1) after adding a second PhongLight, (2) a new material in that two-light scene, (3) after removing
  * it again, (4) the two-light scene drawn by a material listing only the first light.
@@ -1044,6 +1120,16 @@ async function sceneLights(backend: Backend) {
   };
 }
 
-const api = { backendInfo, compare, crossRenderer, errors, fogEffect, fogParity, inPlaceEdits, sceneLights };
+const api = {
+  backendInfo,
+  compare,
+  crossRenderer,
+  emissiveEdits,
+  errors,
+  fogEffect,
+  fogParity,
+  inPlaceEdits,
+  sceneLights,
+};
 (window as unknown as { harness: typeof api }).harness = api;
 document.body.dataset.ready = '1';

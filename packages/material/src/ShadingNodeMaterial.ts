@@ -201,6 +201,9 @@ export class ShadingNodeMaterial extends NodeMaterial {
   readonly #shininessNode = uniform(SHADING_DEFAULTS.shininess);
   // What the GPU adds: emissive as last found valid.
   readonly #emissiveNode: N = uniform(new Color(0, 0, 0));
+  // Whether the last build added the emissive (see #emits); null until this class's setupLighting has run (a
+  // subclass's own lighting, the impostor's, adds none).
+  #emissiveBuilt: boolean | null = null;
   // The warning that normalMap needs phong shading was given.
   #warnedNormalMap = false;
   /** Per build of an InstancedMesh of a sphere without a normal attribute: its normal, turned by the instance. */
@@ -231,6 +234,22 @@ export class ShadingNodeMaterial extends NodeMaterial {
     (this.#uniforms.kd.value as Color).copy(this.kd);
     (this.#uniforms.ks.value as Color).copy(this.ks);
     (this.#emissiveNode.value as Color).copy(this.emissive);
+    // Edited in place from black: built in from the next frame on (the setter rebuilds at once).
+    this.#emissiveChanged();
+  }
+
+  /**
+   * Whether the colour output adds the emissive (its last valid value): only when it is not black or an
+   * `emissiveMap` is set, as ShadingMaterial compiles it (SHADING_EMISSIVE); a black one costs nothing per
+   * fragment.
+   */
+  #emits(): boolean {
+    const e = this.#emissiveNode.value as Color;
+    return this.output === 'color' && (this.emissiveMap !== null || e.r > 0 || e.g > 0 || e.b > 0);
+  }
+
+  #emissiveChanged(): void {
+    if (this.#emissiveBuilt !== null && this.#emits() !== this.#emissiveBuilt) this.needsUpdate = true;
   }
 
   static {
@@ -244,7 +263,11 @@ export class ShadingNodeMaterial extends NodeMaterial {
 
   #optionChanged(kind: shared.PropertyChange, changed: boolean): void {
     if (kind === 'shininess') this.#shininessNode.value = this.shininess;
-    else if (changed) this.needsUpdate = true;
+    else if (kind === 'emissive') {
+      // Set through the setter (so valid): the uniform now, and a rebuild when it turns black or stops being so.
+      (this.#emissiveNode.value as Color).copy(this.emissive);
+      this.#emissiveChanged();
+    } else if (changed) this.needsUpdate = true;
   }
 
   /**
@@ -347,6 +370,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
 
   /** Builds the lighting of the variant (three calls it when it compiles the material), plus the emissive. */
   override setupLighting(builder: N): N {
+    this.#emissiveBuilt = this.#emits();
     if (this.normalMap !== null && this.shading !== 'phong' && !this.#warnedNormalMap) {
       this.#warnedNormalMap = true;
       console.warn(
@@ -360,6 +384,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
       const data = this.output === 'normal' || this.output === 'attenuation';
       return data ? (colorSpaceToWorking as N)(vec4(lit, 1), SRGBColorSpace).rgb : lit;
     }
+    if (!this.#emissiveBuilt) return this.#lit(builder);
     const emissive: N =
       this.emissiveMap !== null
         ? this.#emissiveNode.mul((materialReference('emissiveMap', 'texture') as N).rgb)
@@ -500,10 +525,10 @@ export class ShadingNodeMaterial extends NodeMaterial {
   /**
    * three's program cache key, made this material's own: its uniforms (ka, kd, ks, emissive, the listed lights'
    * nodes) are its own nodes, so two materials never share a node build (their pipelines are still shared when
-   * the generated code is the same).
+   * the generated code is the same); and whether the emissive is built in.
    */
   override customProgramCacheKey(): string {
-    return `${super.customProgramCacheKey()},${this.id}`;
+    return `${super.customProgramCacheKey()},${this.id},${this.#emits()}`;
   }
 
   /**

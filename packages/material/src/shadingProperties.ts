@@ -152,7 +152,7 @@ export interface ShadingProperties {
 }
 
 /** Which kind of option changed, for the material's hook. */
-export type PropertyChange = 'variant' | 'shininess' | 'lights';
+export type PropertyChange = 'variant' | 'shininess' | 'lights' | 'emissive';
 
 /**
  * What a material tells the shared accessors: its class name for errors, and what to do when an option
@@ -246,6 +246,8 @@ export function installShadingProperties(target: { prototype: Material }, hooks:
       },
       set(this: Material, value: ColorInput) {
         setColor(`${hooks.owner(this)}.${key}`, stateOf(this)[key], value);
+        // Whether the emissive is compiled in depends on it being black (see the materials).
+        if (key === 'emissive') hooks.change(this, 'emissive', true);
       },
     };
   }
