@@ -409,8 +409,13 @@ export class ShadingNodeMaterial extends NodeMaterial {
         `${this.#owner}: ${this.shading} shading needs a normal attribute on ${geometry.type} (or a sphere flagged with userData.${SPHERE_FLAG})`,
       );
     }
-    // Per fragment, diffuseColor.rgb (texel × vertex colour × instance colour) multiplies ka and kd.
-    const fragmentTint = { tint: (diffuseColor as N).rgb };
+    // Per fragment, diffuseColor.rgb (texel × vertex colour × instance colour) multiplies ka and kd. Without a
+    // texel or vertex colours it is the instance's (or batch's) colour or 1: lightSurface's own default, which
+    // multiplies nothing when there is none.
+    const vertexColours =
+      this.vertexColors && (geometry.hasAttribute('color') || geometry.morphAttributes.color !== undefined);
+    const fragmentTint =
+      this.colorNode !== null || this.map !== null || vertexColours ? { tint: (diffuseColor as N).rgb } : {};
     // A sphere's normal is its position: on an InstancedMesh, as it was before the instance moved it, turned by the
     // instance's normal matrix (setupPosition).
     const localNormal: N = hasNormal
