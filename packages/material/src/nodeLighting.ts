@@ -159,6 +159,11 @@ function isDirectLight(node: N): boolean {
 export class LectureLightingModel extends LightingModel {
   /** How many direct lights light the material (found in start(), before their direct() calls). */
   #directLights = 0;
+  /**
+   * Whether anything but direct lights lights the material (an ambient or hemisphere light, a light probe, a
+   * light map, the environment): otherwise three's irradiance stays zero, and its term is left out.
+   */
+  #irradiance = true;
 
   /** Whether the output keeps the ambient term (the colour and the ambient output). */
   get #ambient(): boolean {
@@ -189,13 +194,14 @@ export class LectureLightingModel extends LightingModel {
     );
     const hemispheres = nodes.filter((node) => node.light?.isHemisphereLight === true);
     this.#directLights = nodes.filter(isDirectLight).length;
+    this.#irradiance = this.#directLights < nodes.length;
     lightsNode.setupLights(
       builder,
       nodes.filter((node) => !hemispheres.includes(node)),
     );
     const { n, back } = this.surface;
     const { ka } = this.uniforms;
-    const ambient = this.#ambient;
+    const ambient = this.#ambient && this.#irradiance;
     // The ambient lights' irradiance is the same on both sides; the hemispheres' is not.
     if (ambient) back?.addAssign(builder.context.irradiance.mul(ka).mul(RECIPROCAL_PI));
     for (const node of hemispheres) {
@@ -325,7 +331,7 @@ export class LectureLightingModel extends LightingModel {
 
   override indirect(builder: N): void {
     // three's ambient and hemisphere lights: Ia = their irradiance / π.
-    if (!this.#ambient) return;
+    if (!this.#ambient || !this.#irradiance) return;
     const { irradiance, reflectedLight } = builder.context;
     reflectedLight.indirectDiffuse.addAssign(irradiance.mul(this.uniforms.ka).mul(RECIPROCAL_PI));
   }
