@@ -219,7 +219,7 @@ export class LectureLightingModel extends LightingModel {
     this.indirect(builder);
   }
 
-  override direct(data: N): void {
+  override direct(data: N, builder: N): void {
     const { n, v, back, backSpecular } = this.surface;
     const { ka, kd, ks, shininess } = this.uniforms;
     let ambient: N = null;
@@ -262,6 +262,7 @@ export class LectureLightingModel extends LightingModel {
     }
     const ndl = n.dot(l);
     const h = this.material.lighting === 'blinn-phong' ? l.add(v) : null;
+    const masks = builder?.renderer?.backend?.isWebGLBackend === true;
     // One side's diffuse and specular factors, for the normal n·sign (the back side: −n).
     const side = (sign: number): [N, N] => {
       const cos = sign > 0 ? ndl : ndl.negate();
@@ -270,22 +271,36 @@ export class LectureLightingModel extends LightingModel {
       if (h !== null) {
         const hl = h.length();
         const nh = sign > 0 ? n.dot(h) : n.dot(h).negate();
-        x = select(hl.greaterThan(0), max(nh.div(max(hl, 1e-30)), 0), float(0));
+        // h = 0 gives n·h = 0, so x = 0 with no test.
+        x = max(nh.div(max(hl, 1e-30)), 0);
       } else {
         // r = 2(l·n)n − l, so v·r = 2(l·n)(v·n) − v·l (the same for −n).
         x = max(ndl.mul(2).mul(v.dot(n)).sub(v.dot(l)), 0);
       }
-      // 0⁰ = 1: shininess 0 gives a uniform highlight over the lit side.
-      const power = select(
-        x.greaterThan(0),
-        x.pow(shininess),
-        select(shininess.equal(0), float(1), float(0)),
-      );
-      let spec: N = select(cos.greaterThan(0), power, float(0));
+      // 0⁰ = 1: shininess 0 gives a uniform highlight over the lit side. On the WebGL2 backend as 0/1 masks (exact:
+      // the power is finite, at most 1): three compiles a select() to an if/else block, which costs SwiftShader's
+      // GLSL more than the products, while its WGSL runs the selects faster (bench/webgpu.bench.mjs, the
+      // realistic scene).
+      let spec: N;
+      if (masks) {
+        const positive = float(x.greaterThan(0));
+        const power = max(x, 1e-30)
+          .pow(shininess)
+          .mul(positive)
+          .add(float(shininess.equal(0)).mul(float(1).sub(positive)));
+        spec = power.mul(float(cos.greaterThan(0)));
+      } else {
+        const power = select(
+          x.greaterThan(0),
+          x.pow(shininess),
+          select(shininess.equal(0), float(1), float(0)),
+        );
+        spec = select(cos.greaterThan(0), power, float(0));
+      }
       const bands = this.material.celBands;
       if (bands > 0) {
         diffuse = min(diffuse.mul(bands).floor(), bands - 1).div(bands - 1);
-        spec = select(spec.greaterThanEqual(0.5), float(1), float(0));
+        spec = float(spec.greaterThanEqual(0.5));
       }
       // The term outputs leave the other terms out.
       if (output === 'ambient' || output === 'specular') diffuse = float(0);
