@@ -47,7 +47,12 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { MeshLambertNodeMaterial, MeshPhongNodeMaterial, RenderTarget } from 'three/webgpu';
+import {
+  MeshLambertNodeMaterial,
+  MeshPhongNodeMaterial,
+  RenderTarget,
+  type WebGPURenderer,
+} from 'three/webgpu';
 import { thrown } from './lib/errors';
 import { hasRgb, maxRgbDelta } from './lib/pixels';
 import { fiveThreeLights } from './lib/threeLights';
@@ -345,6 +350,22 @@ function scene(
 
 const shininessOf = (scenario: Scenario): number => (scenario === 'attenuated' ? 0 : 32);
 
+/** `s` drawn into `target` over the blue clear colour and read back: rows bottom-up, RGBA8, linear. */
+async function drawInto(
+  renderer: WebGPURenderer,
+  target: RenderTarget,
+  s: Scene,
+  camera: PerspectiveCamera,
+): Promise<Uint8Array> {
+  renderer.setRenderTarget(target);
+  renderer.setClearColor(0x0000ff, 1);
+  renderer.clear();
+  renderer.render(s, camera);
+  const pixels = await readTarget(renderer, target, SIZE);
+  renderer.setRenderTarget(null);
+  return pixels;
+}
+
 /** Rows bottom-up, RGBA8, linear (a render target has no output colour space conversion). */
 async function renderGpu(
   backend: Backend,
@@ -363,12 +384,7 @@ async function renderGpu(
   if (surface?.normalMap === 'object') material.normalMapType = ObjectSpaceNormalMap;
   const setup = scene(material, scenario, backend, surface);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
-  renderer.setRenderTarget(target);
-  renderer.setClearColor(0x0000ff, 1);
-  renderer.clear();
-  renderer.render(setup.scene, setup.camera);
-  const pixels = await readTarget(renderer, target, SIZE);
-  renderer.setRenderTarget(null);
+  const pixels = await drawInto(renderer, target, setup.scene, setup.camera);
   target.dispose();
   material.dispose();
   return { pixels, setup, material, backend: renderer.backend };
@@ -964,12 +980,7 @@ async function inPlaceEdits(backend: Backend) {
     logged.push(args.map(String).join(' '));
   };
   const frame = async () => {
-    renderer.setRenderTarget(target);
-    renderer.setClearColor(0x0000ff, 1);
-    renderer.clear();
-    renderer.render(s, camera);
-    const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
-    renderer.setRenderTarget(null);
+    const pixels = await drawInto(renderer, target, s, camera);
     const errors = logged.splice(0);
     return { pixels: Array.from(pixels), errors };
   };
@@ -1009,13 +1020,7 @@ async function emissiveEdits(backend: Backend) {
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
   const draw = async (material: ShadingNodeMaterial) => {
     const { scene: s, camera } = scene(material);
-    renderer.setRenderTarget(target);
-    renderer.setClearColor(0x0000ff, 1);
-    renderer.clear();
-    renderer.render(s, camera);
-    const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
-    renderer.setRenderTarget(null);
-    return Array.from(pixels);
+    return Array.from(await drawInto(renderer, target, s, camera));
   };
   const RED = [0.2, 0, 0] as const;
   const fresh = async (emissive: readonly number[]) => {
@@ -1085,15 +1090,7 @@ async function sceneLights(backend: Backend) {
   const second = new PhongLight({ ambient: 0, diffuse: [0.2, 0.6, 1], specular: 0.3 });
   second.position.set(4, -2, 3);
   const target = new RenderTarget(SIZE, SIZE, { depthBuffer: true });
-  const frame = async () => {
-    renderer.setRenderTarget(target);
-    renderer.setClearColor(0x0000ff, 1);
-    renderer.clear();
-    renderer.render(s, camera);
-    const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, SIZE, SIZE)) as Uint8Array;
-    renderer.setRenderTarget(null);
-    return Array.from(pixels);
-  };
+  const frame = async () => Array.from(await drawInto(renderer, target, s, camera));
   const frames: number[][] = [];
   frames.push(await frame());
   s.add(second);
