@@ -40,10 +40,13 @@ export const test = base.extend<
     },
     { scope: 'worker' },
   ],
-  harness: async ({ browser, baseURL, viewport, sharedHarnessSlot: slot }, use) => {
+  harness: async ({ browser, baseURL, viewport, sharedHarnessSlot: slot }, use, testInfo) => {
     await use(async (name) => {
       const key = JSON.stringify([name, baseURL, viewport]);
       if (slot.current?.key !== key || slot.current.page.isClosed()) {
+        // The page's load and first compiles are every later test's set-up too, not this test's own work: they
+        // get their own minute (18 s measured for the first test beside pack.spec's installs).
+        testInfo.setTimeout(testInfo.timeout + 60_000);
         await slot.current?.page.close();
         const page = await browser.newPage({ baseURL, viewport });
         slot.current = { key, page, problems: await openHarness(page, name) };
