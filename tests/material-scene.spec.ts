@@ -183,6 +183,32 @@ test('non-uniform and sheared instance matrices: normals through the instance ma
   }
 });
 
+test('instances that are rotations × scales (mirrored, non-uniform) take the cheaper normal A·(n/|aᵢ|²) and light as the cofactor does, = shade(); one sheared instance puts the mesh back on the cofactor', async ({
+  harness,
+}) => {
+  const { page } = await harness('material');
+  const orthogonal: SceneInstance[] = [
+    { position: [-2, 0, 0], scale: [0.4, 1.2, 0.8], rotation: [0.3, 0.5, 0.2], color: [1, 0.8, 0.6] },
+    { position: [0, 0, 0], scale: [-0.8, 0.5, 0.7], rotation: [0, 0.7, -0.3] },
+    { position: [2, 0, 0], scale: [0.6, 0.6, 1.2], rotation: [-0.4, 0.9, 0] },
+  ];
+  const sheared: SceneInstance[] = [...orthogonal, { position: [0, 0, -40], shear: 0.3 }];
+  for (const variant of [
+    { shading: 'phong', analytic: true },
+    { shading: 'phong' },
+    { shading: 'gouraud' },
+    { shading: 'flat', flatCorners: true },
+  ] as const) {
+    const fast = await scene(page, { ...variant, object: 'instanced', instances: orthogonal });
+    expect(fast.defines, variant.shading).toHaveProperty('SHADING_INSTANCE_ORTHOGONAL');
+    expectOracleCoverage(fast, 4000);
+    expectShade(fast, 3000);
+    const cofactor = await scene(page, { ...variant, object: 'instanced', instances: sheared });
+    expect(cofactor.defines, variant.shading).not.toHaveProperty('SHADING_INSTANCE_ORTHOGONAL');
+    expectShade(cofactor, 3000);
+  }
+});
+
 test('extremes: a mirrored instance (negative determinant) keeps outward normals (lit as shade() lights them)', async ({
   harness,
 }) => {

@@ -1019,6 +1019,8 @@ export interface SceneStats {
   black: number;
   clippedBlack: number;
   worst: unknown;
+  /** The defines ShadingMaterial compiled for the draw (its variant). */
+  defines: Record<string, unknown>;
 }
 
 const WHITE_LIGHT: [number, number, number] = [1, 1, 1];
@@ -1306,6 +1308,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
   const camera = makeCamera(false);
   const [r, restore] = sceneRenderer(config, size);
   const ours = readPixels(r, scene, camera, size);
+  const defines = { ...material.defines };
   // The oracle: three's own material on the same objects.
   const oracle = new MeshPhongMaterial(
     config.constant
@@ -1359,6 +1362,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
     black: 0,
     clippedBlack: 0,
     worst: null,
+    defines,
   };
   for (let y = 0; y < size; y++) {
     for (let x = 0; x < size; x++) {

@@ -14,6 +14,7 @@
 //   SHADING_OUTPUT_<NAME>, SHADING_OUTPUT_TERM, …  output ≠ 'color': one term, the attenuation or the normal
 //                                                  (see outputChunks.glsl.ts)
 //   SHADING_MODEL_NORMALS                          normalMatrix 'model': normals × M, the lecture's wrong way
+//   SHADING_INSTANCE_ORTHOGONAL                    every instance matrix is a rotation × a scale (orthogonalInstances.ts)
 //   SHADING_THREE_LIGHTS (SHADING_LIGHT_CUTOFF, SHADING_INVERSE_SQUARE, SHADING_VIEW_SPACE)  three's lights
 // three's DOUBLE_SIDED / FLIP_SIDED (side): a back face is lit with its flipped normal (gl_FrontFacing).
 // and by three's program parameters (USE_INSTANCING, USE_SKINNING, USE_FOG, NUM_CLIPPING_PLANES, …: see
@@ -79,7 +80,7 @@ ${include.shadowVertex}
 /** Fragment stage. */
 export const fragmentShader = /* glsl */ `
 #include <logdepthbuf_pars_fragment>
-#include <fog_pars_fragment>
+${include.fogParsFragment}
 #include <clipping_planes_pars_fragment>
 ${include.sceneFeatures}
 ${include.surfaceFragmentPars}

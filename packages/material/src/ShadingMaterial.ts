@@ -4,6 +4,7 @@ import {
   type Camera,
   Color,
   type Group,
+  type InstancedMesh,
   type Light,
   Matrix3,
   type Matrix4,
@@ -25,6 +26,7 @@ import { eyeOf } from './eyeOf.js';
 import { facePositionTexture, faceSkinTexture } from './facePositionTexture.js';
 import { FLAT_CORNER_INDEX, FLAT_CORNERS, FLAT_PROVOKING_VERTEX, SPHERE_FLAG } from './geometryFlags.js';
 import type { ShadingOutput } from './options.js';
+import { hasOrthogonalInstances } from './orthogonalInstances.js';
 import { PhongLight } from './PhongLight.js';
 import { fragmentShader, vertexShader } from './ShadingMaterial.glsl.js';
 import {
@@ -216,6 +218,8 @@ export class ShadingMaterial extends ShaderMaterial {
   #inverseSquare = true;
   // Per-fragment lighting with three's lights (whose uniforms are in view space) runs in view space.
   #viewSpace = false;
+  // Every instance matrix of the drawn InstancedMesh is a rotation × a scale (see hasOrthogonalInstances).
+  #orthogonalInstances = false;
   /**
    * Whether per-fragment lighting with three's lights may run in view space (see `onBeforeRender`); false for
    * a subclass whose fragment stage lights in world space itself (the impostor). @internal
@@ -352,6 +356,11 @@ export class ShadingMaterial extends ShaderMaterial {
       this.#threeLights &&
       (this.shading === 'phong' || (this.shading === 'flat' && this.#flatDerivatives)) &&
       isRigid(view);
+    // Instance normals from the vertex normal: the cheaper normal matrix when every instance allows it.
+    this.#orthogonalInstances =
+      (object as InstancedMesh).isInstancedMesh === true &&
+      !(this.shading === 'flat' && this.#flatDerivatives) &&
+      hasOrthogonalInstances(object as InstancedMesh);
     this.#updateSurface();
     this.#syncDefines();
     this.#updateLightUniforms(this.#viewSpace ? view : null);
@@ -381,6 +390,7 @@ export class ShadingMaterial extends ShaderMaterial {
     if (e.r > 0 || e.g > 0 || e.b > 0) defines.SHADING_EMISSIVE = '';
     for (const name of OUTPUT_DEFINES[this.output]) defines[name] = '';
     if (this.normalMatrix === 'model') defines.SHADING_MODEL_NORMALS = '';
+    if (this.#orthogonalInstances) defines.SHADING_INSTANCE_ORTHOGONAL = '';
     const old = this.defines ?? {};
     const keys = Object.keys(defines);
     const same = keys.length === Object.keys(old).length && keys.every((k) => old[k] === defines[k]);

@@ -1,9 +1,11 @@
 // The lecture's lighting equation in GLSL, written once: `lightFactors` is one light's diffuse and specular
-// factors (l·n, the Phong r or the Blinn h, 0⁰ = 1, cel quantisation) and `lightReturn` its ka/kd and ks parts;
-// both are included in `lightTerm` (a PhongLight, with the lecture's attenuation) and in `threeDirect` (one of
-// three's lights, whose falloff is in its colour). `shade()` (shade.ts) is the CPU truth both are tested against.
-// Statement chunks rather than a function of their own: a PhongLight program then compiles exactly the code it
-// compiled before (tests/material-scene.spec.ts compares the active lines of every lecture program).
+// factors (l·n, the Phong r or the Blinn h, 0⁰ = 1, cel quantisation), included in `lightTerm` (a PhongLight,
+// with the lecture's attenuation: `lightReturn` makes its kd and ks parts) and in `threeDirect` (one of three's
+// lights, whose falloff is in its colour: the factors × colour are summed over the lights, and the sums
+// multiplied by kd·tint and ks once, four vector operations a light fewer). `shade()` (shade.ts) is the CPU
+// truth both are tested against. Statement chunks rather than a function of their own: a PhongLight program then
+// compiles exactly the code it compiled before (tests/material-scene.spec.ts compares the active lines of every
+// lecture program).
 
 import { directLightCount, outputFactors, outputNormal } from './outputChunks.glsl.js';
 import { shadowedLight, shadowLightMacros } from './shadowChunks.glsl.js';
@@ -94,8 +96,9 @@ const phongLights = /* glsl */ `${Array.from(
 /**
  * One kind of three's direct lights, in its unrolled loop (as three's own loops, which three unrolls: a shadow
  * map array needs a constant index): `toLight` sets the unit direction `l` (and `t`, `t2`) when the light has a
- * position, `colour` is its colour and `falloff` (none: 1) its falloff; a shadow-casting light's term is shadowed
- * (see shadowChunks.glsl.ts). The attenuation output's term is the falloff (over the direct lights' count).
+ * position, `colour` is its colour and `falloff` (none: 1) its falloff; `threeDirect` adds the light's factors ×
+ * `light` to the sums, shadowed when the light casts a shadow (see shadowChunks.glsl.ts). The attenuation output's
+ * light is the falloff (over the direct lights' count), added as is.
  */
 function threeLightLoop(
   kind: 'Dir' | 'Point' | 'Spot',
@@ -110,14 +113,12 @@ function threeLightLoop(
   #pragma unroll_loop_start
   for ( int i = 0; i < ${count}; i ++ ) {
     ${toLight}
-    SHADING_SHADOW_BEGIN
 #ifdef SHADING_OUTPUT_ATTENUATION
-    term = vec3( ${falloff ?? '1.0'} ) / float( SHADING_DIRECT_LIGHTS );
+    light = vec3( ${falloff ?? '1.0'} ) / float( SHADING_DIRECT_LIGHTS );
 #else
-    term = threeDirect( n, v, l, ${colour} );
+    light = ${colour};
 #endif
-${shadowedLight(kind)}
-    c += term;
+${shadowedLight(kind, 'threeDirect( n, v, l, light, litDiffuse, litSpecular );')}
   }
   #pragma unroll_loop_end
 #endif`;
@@ -135,11 +136,18 @@ uniform vec3 shadingKa, shadingKd, shadingKs;
 #define shadingTint 1.0
 #endif
 ${shadowLightMacros}
-// One of three's direct lights of colour c (× its falloff, and three's 1/π folded into shadingKa/Kd/Ks).
-vec3 threeDirect(vec3 n, vec3 v, vec3 l, vec3 c) {
-  vec3 kdId = c * ( shadingKd * shadingTint ); // kd × tint once for every light
-  vec3 ksIs = c * shadingKs;
-${lightFactors(threeBlinn)}${lightReturn}}
+// One of three's direct lights of colour light (× its falloff, and three's 1/π folded into shadingKa/Kd/Ks): its
+// diffuse and specular factors × light added to the sums, which threeLights multiplies by kd·tint and ks once for
+// all the lights (the attenuation output adds the light as is).
+void threeDirect(vec3 n, vec3 v, vec3 l, vec3 light, inout vec3 litDiffuse, inout vec3 litSpecular) {
+#ifdef SHADING_OUTPUT_ATTENUATION
+  litDiffuse += light;
+#else
+${lightFactors(threeBlinn)}
+  litDiffuse += diffuse * light;
+  litSpecular += spec * light;
+#endif
+}
 // three's getDistanceAttenuation at distance t (t2 = t²), compiled for what the scene's lights use: the cut-off
 // window only when some light has a distance, 1/max(t², 0.01) when every decay is 2 (no pow).
 float threeFalloff(float t, float t2, float cutoff, float decay) {
@@ -169,7 +177,7 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
   n = normalize((viewMatrix * vec4(n, 0.0)).xyz);
   v = normalize((viewMatrix * vec4(v, 0.0)).xyz);
 #endif
-  vec3 c = ambientLightColor, l, term;
+  vec3 c = ambientLightColor, l, light;
   float t, t2;
 #if NUM_HEMI_LIGHTS > 0
   for (int i = 0; i < NUM_HEMI_LIGHTS; i++) c += getHemisphereLightIrradiance(hemisphereLights[i], n);
@@ -178,6 +186,8 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
 #ifdef SHADING_NO_AMBIENT
   c = vec3( 0.0 );
 #endif
+  // Σ diffuse factor × light and Σ specular factor × light over the direct lights, then × kd·tint and ks once.
+  vec3 litDiffuse = vec3( 0.0 ), litSpecular = vec3( 0.0 ), kdTint = shadingKd * shadingTint;
 ${threeLightLoop('Dir', 'NUM_DIR_LIGHTS', 'l = directionalLights[ i ].direction;', 'directionalLights[ i ].color')}
 ${threeLightLoop(
   'Point',
@@ -193,7 +203,14 @@ ${threeLightLoop(
   'spotLights[ i ].color',
   'getSpotAttenuation( spotLights[ i ].coneCos, spotLights[ i ].penumbraCos, dot( l, spotLights[ i ].direction ) ) * threeFalloff( t, t2, spotLights[ i ].distance, spotLights[ i ].decay )',
 )}
-  return c;
+#if defined( SHADING_OUTPUT_ATTENUATION )
+  return c + litDiffuse;
+#elif defined( SHADING_SPLIT )
+  shadingSpecular += litSpecular * shadingKs;
+  return c + litDiffuse * kdTint;
+#else
+  return c + litDiffuse * kdTint + litSpecular * shadingKs;
+#endif
 }
 #endif
 `;

@@ -168,6 +168,16 @@ vec3 shadingCofactorTimes( mat3 a, vec3 n ) {
   m = mirrored ? - m : m;
   return s > 0.0 ? m : vec3( 0.0 );
 }
+// The instance's normal of n (a direction, normalised later). When every instance matrix is a rotation times a
+// scale (SHADING_INSTANCE_ORTHOGONAL, checked on the CPU: orthogonalInstances.ts), A·(n / |aᵢ|²) = A⁻ᵀn, the
+// direction of sign(det A)·cof(A)·n, for a fraction of the cofactor's cost; else the cofactor, rescaled.
+vec3 shadingInstanceNormal( mat3 a, vec3 n ) {
+#ifdef SHADING_INSTANCE_ORTHOGONAL
+  return a * ( n / vec3( dot( a[ 0 ], a[ 0 ] ), dot( a[ 1 ], a[ 1 ] ), dot( a[ 2 ], a[ 2 ] ) ) );
+#else
+  return shadingRescale( shadingCofactorTimes( a, n ) );
+#endif
+}
 #endif
 `;
 
@@ -266,6 +276,26 @@ export const clippingFragment = /* glsl */ `
   vec4 diffuseColor = vec4( 1.0 );
 #endif
   #include <clipping_planes_fragment>
+`;
+
+/**
+ * Fragment declarations of fog: three's `fog_pars_fragment`, except where the fragment's position is in view
+ * space already (phong shading and flat from derivatives, lit in view space: SHADING_VIEW_SPACE), whose depth is
+ * the fog depth three's `fog_vertex` passes (−mvPosition.z): one varying less to interpolate.
+ */
+export const fogParsFragment = /* glsl */ `
+#if defined( USE_FOG ) && defined( SHADING_VIEW_SPACE ) && ( defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES ) )
+uniform vec3 fogColor;
+#define vFogDepth ( - vWorldPosition.z )
+#ifdef FOG_EXP2
+uniform float fogDensity;
+#else
+uniform float fogNear;
+uniform float fogFar;
+#endif
+#else
+#include <fog_pars_fragment>
+#endif
 `;
 
 /**
@@ -402,7 +432,7 @@ ${flatDeformVertex}
   float m = max(max(abs(faceNormal.x), abs(faceNormal.y)), abs(faceNormal.z));
   faceNormal = m > 0.0 ? faceNormal / m : vec3(0.0); // rescaled so it neither overflows nor underflows
 #ifdef SHADING_INSTANCE
-  faceNormal = shadingRescale( shadingCofactorTimes( mat3( shadingInstance ), faceNormal ) );
+  faceNormal = shadingInstanceNormal( mat3( shadingInstance ), faceNormal );
 #endif
 `;
 
@@ -427,7 +457,7 @@ export const worldVertex = /* glsl */ `
 #ifdef SHADING_INSTANCE
   shadingLocal = shadingInstance * shadingLocal;
 #ifndef FLAT_DERIVATIVES
-  objectNormal = shadingRescale( shadingCofactorTimes( mat3( shadingInstance ), objectNormal ) );
+  objectNormal = shadingInstanceNormal( mat3( shadingInstance ), objectNormal );
 #endif
 #endif
   vec3 worldPosition = ( modelMatrix * shadingLocal ).xyz;

@@ -65,14 +65,20 @@ export const shadowFeatures = /* glsl */ `
 `;
 
 /**
- * What the lighting chunk's unrolled loop runs for light `UNROLLED_LOOP_INDEX` of `kind` after computing its
- * `term` (diffuse + specular): apply or record its shadow when that light casts one (three sorts the
- * shadow-casting lights first), nothing otherwise.
+ * The lighting chunk's unrolled loop, light `UNROLLED_LOOP_INDEX` of `kind`: `call` (which adds the light's
+ * diffuse and specular factors × `light` to the loop's sums), with its shadow when that light casts one (three sorts
+ * the shadow-casting lights first): `light` multiplied by three's factor, or the light's term recorded.
  */
-export function shadowedLight(kind: 'Dir' | 'Spot' | 'Point'): string {
+export function shadowedLight(kind: 'Dir' | 'Spot' | 'Point', call: string): string {
   const k = KINDS.find((candidate) => candidate.name === kind) as ShadowKind;
-  return `#if defined( SHADING_SHADOWS ) && ( UNROLLED_LOOP_INDEX < ${k.count} ) && ${k.guard}
-    SHADING_${kind.toUpperCase()}_SHADOW( UNROLLED_LOOP_INDEX )
+  const shadowed = `defined( SHADING_SHADOWS ) && ( UNROLLED_LOOP_INDEX < ${k.count} ) && ${k.guard}`;
+  const macro = `SHADING_${kind.toUpperCase()}_SHADOW`;
+  return `#if ${shadowed}
+    ${macro}_BEFORE( UNROLLED_LOOP_INDEX )
+#endif
+    ${call}
+#if ${shadowed}
+    ${macro}_AFTER( UNROLLED_LOOP_INDEX )
 #endif`;
 }
 
@@ -107,27 +113,39 @@ ${termVaryings(kind, 'out')}
 `;
 
 /**
- * The macros the lighting chunk's loops call around a shadow-casting light: `SHADING_SHADOW_BEGIN` before its
- * term (with a texture on flat and gouraud shading the term's ks part goes to `shadingSpecular`: its value before
- * is kept), then `SHADING_<KIND>_SHADOW( k )` applies, records or does nothing.
+ * The macros the lighting chunk's loops call around a shadow-casting light's call (see {@link shadowedLight}):
+ * per fragment, `light` × three's factor before; per vertex or face, the sums before, then the light's term (the
+ * sums' change × kd·tint and ks; its ks part apart with a texture, SHADING_SPLIT) recorded after. They use the
+ * loop's `light`, `litDiffuse`, `litSpecular` and `kdTint` (see `threeLights` in lightingChunks.glsl.ts).
  */
 export const shadowLightMacros = /* glsl */ `
-#if defined( SHADING_SHADOW_TERMS ) && defined( SHADING_SHADOWS ) && defined( SHADING_SPLIT )
-vec3 shadingSpecularBefore;
-#define SHADING_SHADOW_BEGIN shadingSpecularBefore = shadingSpecular;
-#define SHADING_SHADOW_SPEC( array, k ) array[ k ] = shadingSpecular - shadingSpecularBefore;
+#if defined( SHADING_SHADOW_TERMS ) && defined( SHADING_SHADOWS )
+vec3 shadingDiffuseBefore, shadingSpecularBefore;
+#define SHADING_SHADOW_BEGIN shadingDiffuseBefore = litDiffuse; shadingSpecularBefore = litSpecular;
+#if defined( SHADING_OUTPUT_ATTENUATION )
+#define SHADING_SHADOW_TERM ( litDiffuse - shadingDiffuseBefore )
+#elif defined( SHADING_SPLIT )
+#define SHADING_SHADOW_TERM ( ( litDiffuse - shadingDiffuseBefore ) * kdTint )
 #else
-#define SHADING_SHADOW_BEGIN
+#define SHADING_SHADOW_TERM ( ( litDiffuse - shadingDiffuseBefore ) * kdTint + ( litSpecular - shadingSpecularBefore ) * shadingKs )
+#endif
+#ifdef SHADING_SPLIT
+#define SHADING_SHADOW_SPEC( array, k ) array[ k ] = ( litSpecular - shadingSpecularBefore ) * shadingKs;
+#else
 #define SHADING_SHADOW_SPEC( array, k )
 #endif
+#endif
 ${each((kind) => {
-  const macro = `SHADING_${kind.name.toUpperCase()}_SHADOW( k )`;
+  const macro = `SHADING_${kind.name.toUpperCase()}_SHADOW`;
   return `#if defined( SHADING_SHADOW_FACTOR ) && defined( SHADING_SHADOWS )
-#define ${macro} term *= receiveShadow ? ${kind.factor('k')} : 1.0;
+#define ${macro}_BEFORE( k ) light *= receiveShadow ? ${kind.factor('k')} : 1.0;
+#define ${macro}_AFTER( k )
 #elif defined( SHADING_SHADOW_TERMS ) && defined( SHADING_SHADOWS )
-#define ${macro} shading${kind.name}Term[ k ] = term; SHADING_SHADOW_SPEC( shading${kind.name}Spec, k )
+#define ${macro}_BEFORE( k ) SHADING_SHADOW_BEGIN
+#define ${macro}_AFTER( k ) shading${kind.name}Term[ k ] = SHADING_SHADOW_TERM; SHADING_SHADOW_SPEC( shading${kind.name}Spec, k )
 #else
-#define ${macro}
+#define ${macro}_BEFORE( k )
+#define ${macro}_AFTER( k )
 #endif
 `;
 })}`;
