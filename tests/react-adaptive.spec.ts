@@ -174,6 +174,10 @@ Object.assign(window, {
 });
 `;
 
+// One worker runs the file's tests in order: its beforeAll builds into one folder, which a second worker's beforeAll
+// would delete while the first serves it (the page then failed to load, as it did once in a full run).
+test.describe.configure({ mode: 'default' });
+
 test.beforeAll(async () => {
   test.setTimeout(180_000);
   rmSync(out, { recursive: true, force: true });

@@ -136,9 +136,7 @@ uniform vec3 shadingKa, shadingKd, shadingKs;
 #define shadingTint 1.0
 #endif
 ${shadowLightMacros}
-// One of three's direct lights of colour light (× its falloff, and three's 1/π folded into shadingKa/Kd/Ks): its
-// diffuse and specular factors × light added to the sums, which threeLights multiplies by kd·tint and ks once for
-// all the lights (the attenuation output adds the light as is).
+// One of three's direct lights (colour × falloff; three's 1/π is in shadingKa/Kd/Ks): its factors × light summed.
 void threeDirect(vec3 n, vec3 v, vec3 l, vec3 light, inout vec3 litDiffuse, inout vec3 litSpecular) {
 #ifdef SHADING_OUTPUT_ATTENUATION
   litDiffuse += light;
@@ -186,7 +184,6 @@ vec3 threeLights(vec3 p, vec3 n, vec3 v) {
 #ifdef SHADING_NO_AMBIENT
   c = vec3( 0.0 );
 #endif
-  // Σ diffuse factor × light and Σ specular factor × light over the direct lights, then × kd·tint and ks once.
   vec3 litDiffuse = vec3( 0.0 ), litSpecular = vec3( 0.0 ), kdTint = shadingKd * shadingTint;
 ${threeLightLoop('Dir', 'NUM_DIR_LIGHTS', 'l = directionalLights[ i ].direction;', 'directionalLights[ i ].color')}
 ${threeLightLoop(

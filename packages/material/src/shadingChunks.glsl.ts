@@ -133,6 +133,10 @@ export const emissiveFragment = /* glsl */ `
  * Vertex declarations for instancing and batching: the instance's normal matrix, made as `computeNormalMatrix`
  * makes the object's (sign(det A)·cof(A) of A / max|A|: finite for a singular or huge instance matrix, outward
  * under mirroring, right under shear), and the rescaling that keeps a product of normal matrices in range.
+ * `shadingInstanceNormal(A, n)` is the instance's normal of n (a direction, normalised later): where every
+ * instance matrix is a rotation times a scale (SHADING_INSTANCE_ORTHOGONAL, checked on the CPU by
+ * `hasOrthogonalInstances`), A·(n / |aᵢ|²) = A⁻ᵀn, the direction of sign(det A)·cof(A)·n, for a fraction of the
+ * cofactor's cost; else the cofactor, rescaled.
  */
 export const instanceChunk = /* glsl */ `
 #ifdef SHADING_INSTANCE
@@ -168,9 +172,6 @@ vec3 shadingCofactorTimes( mat3 a, vec3 n ) {
   m = mirrored ? - m : m;
   return s > 0.0 ? m : vec3( 0.0 );
 }
-// The instance's normal of n (a direction, normalised later). When every instance matrix is a rotation times a
-// scale (SHADING_INSTANCE_ORTHOGONAL, checked on the CPU: orthogonalInstances.ts), A·(n / |aᵢ|²) = A⁻ᵀn, the
-// direction of sign(det A)·cof(A)·n, for a fraction of the cofactor's cost; else the cofactor, rescaled.
 vec3 shadingInstanceNormal( mat3 a, vec3 n ) {
 #ifdef SHADING_INSTANCE_ORTHOGONAL
   return a * ( n / vec3( dot( a[ 0 ], a[ 0 ] ), dot( a[ 1 ], a[ 1 ] ), dot( a[ 2 ], a[ 2 ] ) ) );
@@ -281,10 +282,10 @@ export const clippingFragment = /* glsl */ `
 /**
  * Fragment declarations of fog: three's `fog_pars_fragment`, except where the fragment's position is in view
  * space already (phong shading and flat from derivatives, lit in view space: SHADING_VIEW_SPACE), whose depth is
- * the fog depth three's `fog_vertex` passes (−mvPosition.z): one varying less to interpolate.
+ * the fog depth three's `fog_vertex` passes (−mvPosition.z): one varying less to interpolate. (No blank line
+ * before or after: the learning view's active lines of the lecture's programs stay as they were.)
  */
-export const fogParsFragment = /* glsl */ `
-#if defined( USE_FOG ) && defined( SHADING_VIEW_SPACE ) && ( defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES ) )
+export const fogParsFragment = /* glsl */ `#if defined( USE_FOG ) && defined( SHADING_VIEW_SPACE ) && ( defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES ) )
 uniform vec3 fogColor;
 #define vFogDepth ( - vWorldPosition.z )
 #ifdef FOG_EXP2
@@ -295,8 +296,7 @@ uniform float fogFar;
 #endif
 #else
 #include <fog_pars_fragment>
-#endif
-`;
+#endif`;
 
 /**
  * Fragment stage, last lines: three's tone mapping and output colour space, then fog as three's

@@ -72,13 +72,12 @@ export const shadowFeatures = /* glsl */ `
 export function shadowedLight(kind: 'Dir' | 'Spot' | 'Point', call: string): string {
   const k = KINDS.find((candidate) => candidate.name === kind) as ShadowKind;
   const shadowed = `defined( SHADING_SHADOWS ) && ( UNROLLED_LOOP_INDEX < ${k.count} ) && ${k.guard}`;
-  const macro = `SHADING_${kind.toUpperCase()}_SHADOW`;
   return `#if ${shadowed}
-    ${macro}_BEFORE( UNROLLED_LOOP_INDEX )
+    SHADING_SHADOW_BEFORE( ${k.factor('UNROLLED_LOOP_INDEX')} )
 #endif
     ${call}
 #if ${shadowed}
-    ${macro}_AFTER( UNROLLED_LOOP_INDEX )
+    SHADING_SHADOW_AFTER( shading${kind}Term[ UNROLLED_LOOP_INDEX ], shading${kind}Spec[ UNROLLED_LOOP_INDEX ] )
 #endif`;
 }
 
@@ -119,36 +118,22 @@ ${termVaryings(kind, 'out')}
  * loop's `light`, `litDiffuse`, `litSpecular` and `kdTint` (see `threeLights` in lightingChunks.glsl.ts).
  */
 export const shadowLightMacros = /* glsl */ `
-#if defined( SHADING_SHADOW_TERMS ) && defined( SHADING_SHADOWS )
-vec3 shadingDiffuseBefore, shadingSpecularBefore;
-#define SHADING_SHADOW_BEGIN shadingDiffuseBefore = litDiffuse; shadingSpecularBefore = litSpecular;
-#if defined( SHADING_OUTPUT_ATTENUATION )
-#define SHADING_SHADOW_TERM ( litDiffuse - shadingDiffuseBefore )
-#elif defined( SHADING_SPLIT )
-#define SHADING_SHADOW_TERM ( ( litDiffuse - shadingDiffuseBefore ) * kdTint )
-#else
-#define SHADING_SHADOW_TERM ( ( litDiffuse - shadingDiffuseBefore ) * kdTint + ( litSpecular - shadingSpecularBefore ) * shadingKs )
-#endif
-#ifdef SHADING_SPLIT
-#define SHADING_SHADOW_SPEC( array, k ) array[ k ] = ( litSpecular - shadingSpecularBefore ) * shadingKs;
-#else
-#define SHADING_SHADOW_SPEC( array, k )
-#endif
-#endif
-${each((kind) => {
-  const macro = `SHADING_${kind.name.toUpperCase()}_SHADOW`;
-  return `#if defined( SHADING_SHADOW_FACTOR ) && defined( SHADING_SHADOWS )
-#define ${macro}_BEFORE( k ) light *= receiveShadow ? ${kind.factor('k')} : 1.0;
-#define ${macro}_AFTER( k )
+#if defined( SHADING_SHADOW_FACTOR ) && defined( SHADING_SHADOWS )
+#define SHADING_SHADOW_BEFORE( factor ) light *= receiveShadow ? factor : 1.0;
+#define SHADING_SHADOW_AFTER( term, spec )
 #elif defined( SHADING_SHADOW_TERMS ) && defined( SHADING_SHADOWS )
-#define ${macro}_BEFORE( k ) SHADING_SHADOW_BEGIN
-#define ${macro}_AFTER( k ) shading${kind.name}Term[ k ] = SHADING_SHADOW_TERM; SHADING_SHADOW_SPEC( shading${kind.name}Spec, k )
+vec3 shadingDiffuseBefore, shadingSpecularBefore;
+#define SHADING_SHADOW_BEFORE( factor ) shadingDiffuseBefore = litDiffuse; shadingSpecularBefore = litSpecular;
+#define SHADING_LIT_SPECULAR ( ( litSpecular - shadingSpecularBefore ) * shadingKs )
+#if defined( SHADING_OUTPUT_ATTENUATION )
+#define SHADING_SHADOW_AFTER( term, spec ) term = litDiffuse - shadingDiffuseBefore;
+#elif defined( SHADING_SPLIT )
+#define SHADING_SHADOW_AFTER( term, spec ) term = ( litDiffuse - shadingDiffuseBefore ) * kdTint; spec = SHADING_LIT_SPECULAR;
 #else
-#define ${macro}_BEFORE( k )
-#define ${macro}_AFTER( k )
+#define SHADING_SHADOW_AFTER( term, spec ) term = ( litDiffuse - shadingDiffuseBefore ) * kdTint + SHADING_LIT_SPECULAR;
+#endif
 #endif
 `;
-})}`;
 
 /**
  * Vertex stage, end of `main`: three's shadow coordinates at the vertex's world position, offset along the
