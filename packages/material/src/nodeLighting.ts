@@ -164,6 +164,12 @@ export class LectureLightingModel extends LightingModel {
    * light map, the environment): otherwise three's irradiance stays zero, and its term is left out.
    */
   #irradiance = true;
+  /**
+   * three's direct lights on the front side, summed as their diffuse and specular factors × colour / π and
+   * multiplied by kd and ks once after the last light (four vector operations a light fewer, as ShadingMaterial
+   * sums them); vec3 variables made in start(), null for the attenuation output (which adds its factor as is).
+   */
+  #sums: { diffuse: N; specular: N } | null = null;
 
   /** Whether the output keeps the ambient term (the colour and the ambient output). */
   get #ambient(): boolean {
@@ -195,10 +201,23 @@ export class LectureLightingModel extends LightingModel {
     const hemispheres = nodes.filter((node) => node.light?.isHemisphereLight === true);
     this.#directLights = nodes.filter(isDirectLight).length;
     this.#irradiance = this.#directLights < nodes.length;
+    const { kd, ks } = this.uniforms;
+    const { reflectedLight } = builder.context;
+    // Only where three's direct lights light the material (a PhongLight-only program is as it was).
+    const threeDirect = nodes.some((node) => isDirectLight(node) && !(node instanceof PhongLightNode));
+    const sums =
+      threeDirect && this.material.output !== 'attenuation'
+        ? { diffuse: vec3(0).toVar(), specular: vec3(0).toVar() }
+        : null;
+    this.#sums = sums;
     lightsNode.setupLights(
       builder,
       nodes.filter((node) => !hemispheres.includes(node)),
     );
+    if (sums !== null) {
+      reflectedLight.directDiffuse.addAssign(sums.diffuse.mul(kd));
+      (this.specular ?? reflectedLight.directSpecular).addAssign(sums.specular.mul(ks));
+    }
     const { n, back } = this.surface;
     const { ka } = this.uniforms;
     const ambient = this.#ambient && this.#irradiance;
@@ -315,10 +334,23 @@ export class LectureLightingModel extends LightingModel {
       const [diffuse, spec] = side(sign);
       return [kd.mul(id).mul(diffuse.mul(att)), ks.mul(is).mul(spec.mul(att))];
     };
-    const [diffuseTerm, specularTerm] = terms(1);
-    reflectedLight.directDiffuse.addAssign(diffuseTerm);
-    // The ks part: with the lighting split (a texel per fragment after vertex lighting), into its own variable.
-    (this.specular ?? reflectedLight.directSpecular).addAssign(specularTerm);
+    let diffuseTerm: N;
+    let specularTerm: N;
+    const sums = this.#sums;
+    if (data.phong === undefined && sums !== null) {
+      // three's light: its factors × colour / π into the sums (× kd and ks in start(), after the last light).
+      const [diffuse, spec] = side(1);
+      const diffuseLit = id.mul(diffuse);
+      const specularLit = is.mul(spec);
+      sums.diffuse.addAssign(diffuseLit);
+      sums.specular.addAssign(specularLit);
+      if (shadow !== undefined) [diffuseTerm, specularTerm] = [kd.mul(diffuseLit), ks.mul(specularLit)];
+    } else {
+      [diffuseTerm, specularTerm] = terms(1);
+      reflectedLight.directDiffuse.addAssign(diffuseTerm);
+      // The ks part: with the lighting split (a texel per fragment after vertex lighting), into its own variable.
+      (this.specular ?? reflectedLight.directSpecular).addAssign(specularTerm);
+    }
     if (shadow !== undefined) {
       if (shadow.specular === undefined) shadow.term.addAssign(diffuseTerm.add(specularTerm));
       else {
