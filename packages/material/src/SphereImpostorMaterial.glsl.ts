@@ -3,7 +3,13 @@
 // (lightingChunks.glsl.ts), and the hit is clipped, tone-mapped, converted and fogged by the same chunks as a mesh
 // (shadingChunks.glsl.ts). These are the material's only shaders (set once; the light count is a define).
 import { lightingChunk } from './lightingChunks.glsl.js';
-import { clippingFragment, instanceChunk, outputFragment, sceneFeatures } from './shadingChunks.glsl.js';
+import {
+  clippingFragment,
+  fogUniforms,
+  instanceChunk,
+  outputFragment,
+  sceneFeatures,
+} from './shadingChunks.glsl.js';
 
 /**
  * Vertex stage: the quad's corners (position.xy = ±1) go to the projected ellipsoid's screen bounds. For an
@@ -110,14 +116,8 @@ uniform mat4 modelViewMatrix;
 #endif
 #ifdef USE_FOG
 // three's fog uniforms; the depth is the hit's (a mesh interpolates it from its vertices).
-uniform vec3 fogColor;
 float vFogDepth;
-#ifdef FOG_EXP2
-uniform float fogDensity;
-#else
-uniform float fogNear;
-uniform float fogFar;
-#endif
+${fogUniforms}
 #endif
 #if NUM_CLIPPING_PLANES > 0
 vec3 vClipPosition; // the hit in view space, negated (as three's clipping chunks read it)

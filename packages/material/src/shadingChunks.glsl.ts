@@ -279,6 +279,15 @@ export const clippingFragment = /* glsl */ `
   #include <clipping_planes_fragment>
 `;
 
+/** three's fog uniforms (as its `fog_pars_fragment` declares them, without the depth varying). */
+export const fogUniforms = /* glsl */ `uniform vec3 fogColor;
+#ifdef FOG_EXP2
+uniform float fogDensity;
+#else
+uniform float fogNear;
+uniform float fogFar;
+#endif`;
+
 /**
  * Fragment declarations of fog: three's `fog_pars_fragment`, except where the fragment's position is in view
  * space already (phong shading and flat from derivatives, lit in view space: SHADING_VIEW_SPACE), whose depth is
@@ -286,14 +295,8 @@ export const clippingFragment = /* glsl */ `
  * before or after: the learning view's active lines of the lecture's programs stay as they were.)
  */
 export const fogParsFragment = /* glsl */ `#if defined( USE_FOG ) && defined( SHADING_VIEW_SPACE ) && ( defined( SHADING_PHONG ) || defined( FLAT_DERIVATIVES ) )
-uniform vec3 fogColor;
 #define vFogDepth ( - vWorldPosition.z )
-#ifdef FOG_EXP2
-uniform float fogDensity;
-#else
-uniform float fogNear;
-uniform float fogFar;
-#endif
+${fogUniforms}
 #else
 #include <fog_pars_fragment>
 #endif`;
