@@ -1,17 +1,12 @@
-import type {
-  BufferAttribute,
-  InstancedBufferAttribute,
-  InstancedMesh,
-  InterleavedBufferAttribute,
-} from 'three';
+import type { InstancedBufferAttribute, InstancedMesh } from 'three';
 
 /**
- * How far from orthogonal two columns of an instance matrix may be, as |aᵢ·aⱼ| / (|aᵢ||aⱼ|) (the cosine of
- * their angle): 1e-6, ten times what float32 rounding leaves in a matrix that three's `Matrix4.compose` made
+ * How far from orthogonal two columns of an instance matrix may be, squared: |aᵢ·aⱼ| / (|aᵢ||aⱼ|) (the cosine of
+ * their angle) up to 1e-6, ten times what float32 rounding leaves in a matrix that three's `Matrix4.compose` made
  * from a rotation and a scale. The normal A·diag(1/|aᵢ|²)·n then differs from A⁻ᵀn by about that angle (1e-6
  * rad), far below what changes an 8-bit pixel.
  */
-const COSINE = 1e-6;
+const COSINE2 = 1e-6 * 1e-6;
 /**
  * The squared column lengths for which the vertex stage's A·(n / |aᵢ|²) stays in float32's range before it is
  * normalised (a normal between 1e-9 and 1e9 times |n|): scales from 1e-9 to 1e9.
@@ -20,14 +15,11 @@ const MIN_LENGTH2 = 1e-18;
 const MAX_LENGTH2 = 1e18;
 
 type Verdict = { version: number; count: number; orthogonal: boolean };
-const verdicts = new WeakMap<
-  InstancedBufferAttribute | InterleavedBufferAttribute | BufferAttribute,
-  Verdict
->();
+const verdicts = new WeakMap<InstancedBufferAttribute, Verdict>();
 
 /**
  * Whether every drawn instance matrix of `mesh` (the first `mesh.count`) is a rotation times a scale, mirrored or
- * not: its columns orthogonal (within {@link COSINE}) and each column's length between 1e-9 and 1e9, all finite.
+ * not: its columns orthogonal (a cosine of at most 1e-6) and each column's length between 1e-9 and 1e9, all finite.
  * For such a matrix A the normal matrix is A·diag(1/|aᵢ|²) = A⁻ᵀ, a positive multiple of sign(det A)·cof(A),
  * so ShadingMaterial's vertex stage turns normals with one matrix product and three dot products
  * (`SHADING_INSTANCE_ORTHOGONAL`) instead of the cofactor of the scaled matrix (three cross products, a
@@ -46,13 +38,8 @@ export function hasOrthogonalInstances(mesh: InstancedMesh): boolean {
 }
 
 function check(attribute: InstancedBufferAttribute, count: number): boolean {
-  // A matrix attribute three made (16 floats an instance, not interleaved); anything else takes the cofactor.
-  if (
-    attribute.itemSize !== 16 ||
-    (attribute as { isInterleavedBufferAttribute?: boolean }).isInterleavedBufferAttribute
-  ) {
-    return false;
-  }
+  // A matrix attribute as three makes it (16 floats an instance); anything else takes the cofactor.
+  if (attribute.itemSize !== 16) return false;
   const e = attribute.array;
   const n = Math.min(count, Math.floor(e.length / 16));
   for (let i = 0; i < n; i++) {
@@ -76,8 +63,9 @@ function check(attribute: InstancedBufferAttribute, count: number): boolean {
     const d01 = x0 * x1 + y0 * y1 + z0 * z1;
     const d12 = x1 * x2 + y1 * y2 + z1 * z2;
     const d20 = x2 * x0 + y2 * y0 + z2 * z0;
-    const c2 = COSINE * COSINE;
-    if (d01 * d01 > c2 * l0 * l1 || d12 * d12 > c2 * l1 * l2 || d20 * d20 > c2 * l2 * l0) return false;
+    if (d01 * d01 > COSINE2 * l0 * l1 || d12 * d12 > COSINE2 * l1 * l2 || d20 * d20 > COSINE2 * l2 * l0) {
+      return false;
+    }
   }
   return true;
 }
