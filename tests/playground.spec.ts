@@ -214,7 +214,9 @@ test.describe('the playground', () => {
       spun = (await frames(page)) > atRelease + 3;
     }
     expect(spun, 'frames kept coming after the release').toBe(true);
-    await settle(page); // the spin rests by itself
+    // The spin rests by itself. Quiet for 600 ms, not settle's 200: a slow SwiftShader frame near the end of the
+    // damped tail left more than 200 ms between two frames once, and a frame came after "rested" (171 → 172).
+    await settle(page, 600);
     const rested = await frames(page);
     await page.waitForTimeout(500);
     expect(await frames(page)).toBe(rested);
