@@ -39,7 +39,7 @@ import {
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { SPHERE_FLAG } from './geometryFlags.js';
 import { faceTexel, faceTexture, flatFace } from './nodeFlat.js';
-import { cofactorTimes, instanceMatrixOf, rescale } from './nodeInstance.js';
+import { cofactorTimes, instanceMatrixOf, rescale, variable } from './nodeInstance.js';
 import {
   LectureLightingModel,
   type LightingSplit,
@@ -92,8 +92,10 @@ function onStack(node: N): N {
 
 /** `n` normalised; `fallback` where `n` is zero. */
 export function unitOr(n: N, fallback: N): N {
-  const d = n.length();
-  return select(d.greaterThan(0), n.div(max(d, 1e-30)), fallback);
+  // A variable: computed once, not again in the branch that divides it.
+  const vector = variable(n);
+  const d = vector.length();
+  return select(d.greaterThan(0), vector.div(max(d, 1e-30)), fallback);
 }
 
 /**
@@ -476,25 +478,25 @@ export class ShadingNodeMaterial extends NodeMaterial {
       return select(frontFacing, frontColour, backColour);
     };
     if (this.shading === 'gouraud') {
-      const v = towardsViewer(positionView);
+      const v = variable(towardsViewer(positionView));
       const n = unitOr(normalToView(localNormal), v);
-      return sided((sign) => ({ n: n.mul(sign), v }), undefined, varying);
+      return sided((sign) => ({ n: n.mul(sign), v, hoisted: [v] }), undefined, varying);
     }
     if (face !== null) {
       // The vertex stage lights the face's centroid with its normal; every vertex that can provoke computes it.
       const [a, b, c] = face.corners;
       const centroid = vec4(a.add(b).add(c).div(3), 1);
-      const view = (modelViewMatrix as N).mul(
-        face.instance === null ? centroid : face.instance.mul(centroid),
-      ).xyz;
-      const v = towardsViewer(view);
+      const view = variable(
+        (modelViewMatrix as N).mul(face.instance === null ? centroid : face.instance.mul(centroid)).xyz,
+      );
+      const v = variable(towardsViewer(view));
       const normal = rescale(b.sub(a).cross(c.sub(a)));
       const n = unitOr(
         normalToView(face.instance === null ? normal : rescale(cofactorTimes(face.instance, normal))),
         v,
       );
       return sided(
-        (sign) => ({ n: n.mul(sign), v }),
+        (sign) => ({ n: n.mul(sign), v, hoisted: [view, v] }),
         view,
         (node) => varying(node).setInterpolation('flat'),
       );

@@ -11,16 +11,25 @@ import {
   instanceIndex,
   mat4,
   max,
+  nodeObject,
   referenceAttribute,
   select,
   storage,
   vec3,
   vec4,
 } from 'three/tsl';
-import { DynamicDrawUsage, InterleavedBufferAttribute } from 'three/webgpu';
+import { DynamicDrawUsage, InterleavedBufferAttribute, VarNode } from 'three/webgpu';
 
 // biome-ignore lint/suspicious/noExplicitAny: TSL nodes are dynamically typed (their swizzles and operators).
 type N = any;
+
+/**
+ * `node` as a variable: computed once where it is first used (and where three copies that code to), not added to
+ * the stack being set up as `toVar()` adds it (which would compute a vertex-stage value in the fragment stage too).
+ */
+export function variable(node: N): N {
+  return nodeObject(new VarNode(node) as never);
+}
 
 /** `v` divided by its largest absolute component (zero stays zero): direction kept, magnitude in range. */
 export function rescale(v: N): N {
@@ -34,12 +43,15 @@ export function rescale(v: N): N {
  * whose object-space normal is `n`, unnormalised; a zero scale gives the flattened surface's normal, or zero.
  */
 export function cofactorTimes(matrix: N, n: N): N {
-  // The columns as products (a matrix reference cannot always be indexed: element(i) of a referenced attribute
-  // reads it as an array of matrices).
-  const columns = [vec4(1, 0, 0, 0), vec4(0, 1, 0, 0), vec4(0, 0, 1, 0)].map((e) => matrix.mul(e).xyz);
+  // The columns as products, each computed once (a matrix reference cannot always be indexed: element(i) of a
+  // referenced attribute reads it as an array of matrices; a mat3 variable indexed measured slower on the WebGL2
+  // backend), scaled by one reciprocal.
+  const columns = [vec4(1, 0, 0, 0), vec4(0, 1, 0, 0), vec4(0, 0, 1, 0)].map((e) =>
+    variable(matrix.mul(e).xyz),
+  );
   const e = columns.map((c: N) => max(max(abs(c.x), abs(c.y)), abs(c.z)));
-  const s = max(max(e[0], e[1]), e[2]);
-  const a = columns.map((c: N) => c.div(max(s, 1e-30)));
+  const s = float(1).div(max(max(max(e[0], e[1]), e[2]), 1e-30));
+  const a = columns.map((c: N) => variable(c.mul(s)));
   const k = [a[1].cross(a[2]), a[2].cross(a[0]), a[0].cross(a[1])];
   const sign = select(a[0].dot(k[0]).lessThan(0), float(-1), float(1));
   return k[0].mul(n.x).add(k[1].mul(n.y)).add(k[2].mul(n.z)).mul(sign);

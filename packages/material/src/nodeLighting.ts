@@ -120,6 +120,12 @@ export interface Surface {
    * vertex stage: gouraud, exact flat); see `nodeShadows.ts`.
    */
   shadows?: ShadowTerms;
+  /**
+   * Variables (not on a stack: `variable()` of nodeInstance.ts) the lights read that the lighting model computes first, once, in the main flow of the
+   * stage it is built in (the vertex stage's v and lit point): a node first used inside a block (each light's
+   * specular branch) is computed there, again in every block that uses it.
+   */
+  hoisted?: readonly N[];
 }
 
 /**
@@ -192,6 +198,7 @@ export class LectureLightingModel extends LightingModel {
    * vertex stage (gouraud, flat) cannot give (no front-facing test there) and which is not the face's normal.
    */
   override start(builder: N): void {
+    for (const variable of this.surface.hoisted ?? []) variable.toStack();
     const lightsNode = builder.lightsNode;
     const listed = this.material.phongLights.length > 0;
     // With a list of PhongLights, only their nodes light the material (not the scene's PhongLights).
