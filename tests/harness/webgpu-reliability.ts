@@ -145,6 +145,22 @@ const idBox = (() => {
   g.setAttribute('color', new Float32BufferAttribute(colors, 3));
   return g.toNonIndexed();
 })();
+/**
+ * idBox with four attributes more (unread): with the instance matrix, more vertex buffers than three binds per
+ * instanced mesh, so three builds the mesh on its own (its instance matrices in a uniform array).
+ */
+const crowdedBox = (() => {
+  const g = idBox.clone();
+  for (let k = 0; k < 4; k++) {
+    g.setAttribute(
+      `spare${k}`,
+      new Float32BufferAttribute(new Float32Array(g.getAttribute('position').count), 1),
+    );
+  }
+  return g;
+})();
+/** Whether a generated shader reads instance matrices from an array indexed by the instance (WGSL or GLSL). */
+const INSTANCE_ARRAY = /\[\s*(instanceIndex|uint\(\s*gl_InstanceID\s*\))\s*\]/;
 /** BoxGeometry's face normals, in its vertex order (+x, −x, +y, −y, +z, −z). */
 const FACE_NORMALS = [
   [1, 0, 0],
@@ -245,7 +261,7 @@ const KD = [0.8, 0.6, 0.4] as const;
  * (MeshBasicNodeMaterial, vertex colour = face, instance colour = instance) that says which face of which instance
  * each pixel shows, and shade() with that face's expected outward normal. Pixels away from the id pass's edges.
  */
-async function instanceExtremes(backend: Backend, shading: Shading) {
+async function instanceExtremes(backend: Backend, shading: Shading, crowded = false) {
   const renderer = await gpuRenderer(backend);
   const size = 128;
   const cam = camera();
@@ -256,7 +272,7 @@ async function instanceExtremes(backend: Backend, shading: Shading) {
     const scene = new Scene();
     for (const meshScale of new Set(EXTREME_INSTANCES.map((e) => e.meshScale ?? 1))) {
       const members = EXTREME_INSTANCES.flatMap((e, k) => ((e.meshScale ?? 1) === meshScale ? [k] : []));
-      const mesh = new InstancedMesh(idBox, material, members.length);
+      const mesh = new InstancedMesh(crowded ? crowdedBox : idBox, material, members.length);
       members.forEach((k, j) => {
         mesh.setMatrixAt(j, matrices[k]);
         if (ids) mesh.setColorAt(j, new Color(1, (k + 1) / 8, 1));
@@ -270,7 +286,11 @@ async function instanceExtremes(backend: Backend, shading: Shading) {
     return scene;
   };
   const material = new ShadingNodeMaterial({ shading, ka: [...KA], kd: [...KD], ks: 0 });
-  const shaded = await draw(renderer, build(material, false), cam, size);
+  const shadedScene = build(material, false);
+  const shaded = await draw(renderer, shadedScene, cam, size);
+  const first = shadedScene.children.find((o) => (o as InstancedMesh).isInstancedMesh === true);
+  const { vertexShader } = await renderer.debug.getShaderAsync(shadedScene, cam, first as InstancedMesh);
+  const instanceArray = INSTANCE_ARRAY.test(vertexShader ?? '');
   const idMaterial = new MeshBasicNodeMaterial({ vertexColors: true });
   const ids = await draw(renderer, build(idMaterial, true), cam, size);
   material.dispose();
@@ -334,7 +354,14 @@ async function instanceExtremes(backend: Backend, shading: Shading) {
       }
     }
   }
-  return { backend: backendFlags(renderer), perInstance, coverageMismatches, unexpected, worst };
+  return {
+    backend: backendFlags(renderer),
+    perInstance,
+    coverageMismatches,
+    unexpected,
+    worst,
+    instanceArray,
+  };
 }
 
 // ---- Fog, opacity and alphaTest extremes ----------------------------------------------------------------------

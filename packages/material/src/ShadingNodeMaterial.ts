@@ -39,7 +39,13 @@ import {
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { SPHERE_FLAG } from './geometryFlags.js';
 import { faceTexel, faceTexture, flatFace } from './nodeFlat.js';
-import { cofactorTimes, instanceMatrixOf, rescale, variable } from './nodeInstance.js';
+import {
+  cofactorTimes,
+  instanceMatrixOf,
+  instanceThroughReference,
+  rescale,
+  variable,
+} from './nodeInstance.js';
 import {
   LectureLightingModel,
   type LightingSplit,
@@ -315,7 +321,8 @@ export class ShadingNodeMaterial extends NodeMaterial {
    * The vertex moved as three's NodeMaterial moves it (morph targets, skinning, the instance matrix, then
    * `positionNode`), but on an InstancedMesh its normal turned by sign(det A)·cof(A) of the instance's linear part
    * A, as `ShadingMaterial` turns it (finite for a zero or 1e20 instance scale, outward for a mirrored instance),
-   * not by three's inverse transpose (made from A's column lengths: infinite or NaN there).
+   * not by three's inverse transpose (made from A's column lengths: infinite or NaN there). Where three shares the
+   * build between instanced meshes, the instance matrix is read once for all of it (see `instanceThroughReference`).
    */
   override setupPosition(builder: N): N {
     const { object, geometry } = builder;
@@ -334,7 +341,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
         ? (positionLocal as N).toVar()
         : null;
     if (normal !== null) normal.toStack();
-    (instancedMesh as N)(object);
+    if (!instanceThroughReference(builder, object)) (instancedMesh as N)(object);
     if (normal !== null) {
       const turned: N = rescale(cofactorTimes(instanceMatrixOf(builder, object), normal));
       if (hasNormal) (normalLocal as N).assign(turned);

@@ -147,8 +147,8 @@ export function flatFace(builder: N, geometry: BufferGeometry, owner: string): F
   }
   if (morphed) corners = corners.map((c, k) => morph(object, geometry, c, indices[k])) as [N, N, N];
   if (skinned) corners = corners.map((c, k) => skin(object, geometry, c, indices[k])) as [N, N, N];
-  // An instanced mesh's build is its own: its instance matrices bound as arrays of this mesh (a reference to the
-  // drawn mesh's, three's way for a shared build, draws nothing here when the mesh has instance colours).
+  // An instanced mesh's build is its own (not shared with other instanced meshes); its instance matrix is the node
+  // setupPosition moved the vertices by, where that read it as three shares it (see instanceMatrixOf).
   if (object.isInstancedMesh === true) builder.objectSpecific = true;
   return { corners, instance: object.isInstancedMesh === true ? instanceMatrixOf(builder, object) : null };
 }

@@ -6,12 +6,14 @@ import {
   abs,
   buffer,
   float,
+  instanceColor,
   instancedBufferAttribute,
   instancedDynamicBufferAttribute,
   instanceIndex,
   mat4,
   max,
   nodeObject,
+  positionLocal,
   referenceAttribute,
   select,
   storage,
@@ -57,13 +59,49 @@ export function cofactorTimes(matrix: N, n: N): N {
   return k[0].mul(n.x).add(k[1].mul(n.y)).add(k[2].mul(n.z)).mul(sign);
 }
 
+/** three's limit of the vertex buffers a draw binds, for its instance data (WebGPU's default). */
+const MAX_VERTEX_BUFFERS = 8;
+
+/** The instance matrix node a build reads for every use (see instanceThroughReference). */
+const _referenced = /* @__PURE__ */ new WeakMap<object, N>();
+
+/**
+ * Where three would share the build between instanced meshes (their instance data bound per mesh as vertex
+ * attributes: room for them beside the geometry's, no previous matrices for motion vectors), moves the vertex as
+ * three's `instancedMesh` moves it (the position by the instance matrix, the instance colour), with one instance
+ * matrix node that the normal and exact flat shading read too ({@link instanceMatrixOf}), and without three's
+ * inverse transpose of the normal (which ShadingNodeMaterial replaces). Returns false, doing nothing, elsewhere: call
+ * three's `instancedMesh` then. One node instead of two saves four vertex attributes and their reads, so exact
+ * flat shading reads the instance matrix from them too, not from a uniform array indexed per vertex as in a build
+ * of its own: flat shading of a flatShadingGeometry in the realistic scene, 0.99–1.01 → 0.76–0.77×
+ * MeshPhongNodeMaterial on the WebGL2 backend, 0.98–0.99 → 0.93–0.94 on WebGPU (bench/webgpu.bench.mjs).
+ */
+export function instanceThroughReference(builder: N, mesh: N): boolean {
+  const buffers = Object.keys(builder.geometry.attributes).length + 1 + (mesh.instanceColor != null ? 1 : 0);
+  // (An older three has no needsPreviousData, nor motion vectors of instances to keep.)
+  const previous = typeof builder.needsPreviousData === 'function' && builder.needsPreviousData() === true;
+  if (builder.renderer?.isRenderer !== true || previous || buffers > MAX_VERTEX_BUFFERS) {
+    return false;
+  }
+  const matrix: N = (referenceAttribute as N)('instanceMatrix', 'mat4');
+  (positionLocal as N).assign(matrix.mul(vec4(positionLocal, 1)).xyz);
+  if (mesh.instanceColor != null) {
+    (instanceColor as N).assign((referenceAttribute as N)('instanceColor', 'vec3'));
+  }
+  _referenced.set(builder, matrix);
+  return true;
+}
+
 /**
  * An InstancedMesh's instance matrix of the instance being drawn, bound as three's instancing node binds it
- * (call it after three's `instancedMesh` node was set up for this build): a reference to the drawn mesh's
- * `instanceMatrix` in a build three shares between instanced meshes; in a build of this object only
- * (`builder.objectSpecific`), its storage, uniform buffer or instanced attribute.
+ * (call it after the material's `setupPosition`): the node the position was moved by, where
+ * {@link instanceThroughReference} moved it; a reference to the drawn mesh's `instanceMatrix` in a build three
+ * shares between instanced meshes; in a build of this object only (`builder.objectSpecific`), its storage, uniform
+ * buffer or instanced attribute.
  */
 export function instanceMatrixOf(builder: N, mesh: N): N {
+  const referenced = _referenced.get(builder);
+  if (referenced !== undefined) return referenced;
   if (builder.objectSpecific !== true) return (referenceAttribute as N)('instanceMatrix', 'mat4');
   const matrices = mesh.instanceMatrix;
   const count = Math.max(matrices.count, 1);
