@@ -343,7 +343,7 @@ async function realistic() {
   }
   results.realistic = {
     scene:
-      "bench/harness/realistic-scene.ts: 1,000 instances (10 × 10 × 10, spacing 3) of the level-3 tetrahedron sphere (256 triangles, indexed, smooth normals) with instance colours, three PointLights (decay 2) and a DirectionalLight, linear Fog, perspective camera 50°; ShadingNodeMaterial ka = kd = 0.6 grey, ks = 0.5, α = 32, phong lighting, three's lights; its flat shading draws the indexed sphere as it is, or its flatShadingGeometry made for the backend's provoking vertex (of an instanced mesh, both lit per fragment with the face normal from screen-space derivatives in this checkout); MeshPhongNodeMaterial colour 0.6 grey, specular 0.5, shininess 32; MeshLambertNodeMaterial colour 0.6 grey. Each frame drawn offscreen into a linear RGBA8 render target, then a 1×1 read-back",
+      "bench/harness/realistic-scene.ts: 1,000 instances (10 × 10 × 10, spacing 3) of the level-3 tetrahedron sphere (256 triangles, indexed, smooth normals) with instance colours, three PointLights (decay 2) and a DirectionalLight, linear Fog, perspective camera 50°; ShadingNodeMaterial ka = kd = 0.6 grey, ks = 0.5, α = 32, phong lighting, three's lights; its flat shading draws the indexed sphere as it is (lit per fragment with the face normal from screen-space derivatives), or its flatShadingGeometry made for the backend's provoking vertex (each face lit once, at its centroid, in the vertex stage); MeshPhongNodeMaterial colour 0.6 grey, specular 0.5, shininess 32; MeshLambertNodeMaterial colour 0.6 grey. Each frame drawn offscreen into a linear RGBA8 render target, then a 1×1 read-back",
     frames: realisticFrames,
     rounds: realisticRounds,
     perBackend,

@@ -445,7 +445,7 @@ function buildOf(name: string | undefined): MaterialBuild {
 
 // ── The realistic scene ─────────────────────────────────────────────────────────────────────────────────────
 
-/** The realistic scene wearing `spec`'s material (indexed sphere; flat shading of an instanced mesh lights per fragment with the derivatives' face normal whatever the geometry). */
+/** The realistic scene wearing `spec`'s material (the indexed sphere, or for flat shading with `flatGeometry: 'prepared'` its flatShadingGeometry for the backend's provoking vertex). */
 function realisticOf(spec: BenchSpec): Built {
   const grey = new Color(0.6, 0.6, 0.6);
   const node = spec.backend !== 'webgl';
