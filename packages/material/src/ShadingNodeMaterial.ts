@@ -322,7 +322,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
    * `positionNode`), but on an InstancedMesh its normal turned by sign(det A)·cof(A) of the instance's linear part
    * A, as `ShadingMaterial` turns it (finite for a zero or 1e20 instance scale, outward for a mirrored instance),
    * not by three's inverse transpose (made from A's column lengths: infinite or NaN there). Where three shares the
-   * build between instanced meshes, the instance matrix is read once for all of it (see `instanceThroughReference`).
+   * build between instanced meshes, the vertices, the normal and exact flat shading read one instance matrix node.
    */
   override setupPosition(builder: N): N {
     const { object, geometry } = builder;

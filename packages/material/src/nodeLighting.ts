@@ -121,7 +121,7 @@ export interface Surface {
    */
   shadows?: ShadowTerms;
   /**
-   * Variables (not on a stack: `variable()` of nodeInstance.ts) the lights read that the lighting model computes first, once, in the main flow of the
+   * Variables the lights read (made without being pushed on a stack, unlike `toVar()`) that the lighting model computes first, once, in the main flow of the
    * stage it is built in (the vertex stage's v and lit point): a node first used inside a block (each light's
    * specular branch) is computed there, again in every block that uses it.
    */
