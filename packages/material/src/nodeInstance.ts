@@ -26,11 +26,13 @@ import { DynamicDrawUsage, InterleavedBufferAttribute, VarNode } from 'three/web
 type N = any;
 
 /**
- * `node` as a variable: computed once where it is first used (and where three copies that code to), not added to
- * the stack being set up as `toVar()` adds it (which would compute a vertex-stage value in the fragment stage too).
+ * `node` computed once, as a constant (`let`) where it is first used (and where three copies that code to): not
+ * added to the stack being set up as `toVar()` adds it (which would compute a vertex-stage value in the fragment
+ * stage too), and not a variable (a copy into a `var` made the lecture's phong shading 1–2 % slower on
+ * WebGPURenderer).
  */
 export function variable(node: N): N {
-  return nodeObject(new VarNode(node) as never);
+  return nodeObject(new VarNode(node, null, true) as never);
 }
 
 /** `v` divided by its largest absolute component (zero stays zero): direction kept, magnitude in range. */
