@@ -39,13 +39,7 @@ import {
 import { computeNormalMatrix } from './computeNormalMatrix.js';
 import { SPHERE_FLAG } from './geometryFlags.js';
 import { faceTexel, faceTexture, flatFace } from './nodeFlat.js';
-import {
-  cofactorTimes,
-  instanceMatrixOf,
-  instanceThroughReference,
-  rescale,
-  variable,
-} from './nodeInstance.js';
+import { cofactorTimes, instanceMatrixOf, instanceThroughReference, once, rescale } from './nodeInstance.js';
 import {
   LectureLightingModel,
   type LightingSplit,
@@ -98,8 +92,8 @@ function onStack(node: N): N {
 
 /** `n` normalised; `fallback` where `n` is zero. */
 export function unitOr(n: N, fallback: N): N {
-  // A variable: computed once, not again in the branch that divides it.
-  const vector = variable(n);
+  // Computed once, not again in the branch that divides it.
+  const vector = once(n);
   const d = vector.length();
   return select(d.greaterThan(0), vector.div(max(d, 1e-30)), fallback);
 }
@@ -485,7 +479,7 @@ export class ShadingNodeMaterial extends NodeMaterial {
       return select(frontFacing, frontColour, backColour);
     };
     if (this.shading === 'gouraud') {
-      const v = variable(towardsViewer(positionView));
+      const v = once(towardsViewer(positionView));
       const n = unitOr(normalToView(localNormal), v);
       return sided((sign) => ({ n: n.mul(sign), v, hoisted: [v] }), undefined, varying);
     }
@@ -493,10 +487,10 @@ export class ShadingNodeMaterial extends NodeMaterial {
       // The vertex stage lights the face's centroid with its normal; every vertex that can provoke computes it.
       const [a, b, c] = face.corners;
       const centroid = vec4(a.add(b).add(c).div(3), 1);
-      const view = variable(
+      const view = once(
         (modelViewMatrix as N).mul(face.instance === null ? centroid : face.instance.mul(centroid)).xyz,
       );
-      const v = variable(towardsViewer(view));
+      const v = once(towardsViewer(view));
       const normal = rescale(b.sub(a).cross(c.sub(a)));
       const n = unitOr(
         normalToView(face.instance === null ? normal : rescale(cofactorTimes(face.instance, normal))),

@@ -31,7 +31,7 @@ type N = any;
  * stage too), and not a variable (a copy into a `var` made the lecture's phong shading 1–2 % slower on
  * WebGPURenderer).
  */
-export function variable(node: N): N {
+export function once(node: N): N {
   return nodeObject(new VarNode(node, null, true) as never);
 }
 
@@ -50,12 +50,10 @@ export function cofactorTimes(matrix: N, n: N): N {
   // The columns as products, each computed once (a matrix reference cannot always be indexed: element(i) of a
   // referenced attribute reads it as an array of matrices; a mat3 variable indexed measured slower on the WebGL2
   // backend), scaled by one reciprocal.
-  const columns = [vec4(1, 0, 0, 0), vec4(0, 1, 0, 0), vec4(0, 0, 1, 0)].map((e) =>
-    variable(matrix.mul(e).xyz),
-  );
+  const columns = [vec4(1, 0, 0, 0), vec4(0, 1, 0, 0), vec4(0, 0, 1, 0)].map((e) => once(matrix.mul(e).xyz));
   const e = columns.map((c: N) => max(max(abs(c.x), abs(c.y)), abs(c.z)));
   const s = float(1).div(max(max(max(e[0], e[1]), e[2]), 1e-30));
-  const a = columns.map((c: N) => variable(c.mul(s)));
+  const a = columns.map((c: N) => once(c.mul(s)));
   const k = [a[1].cross(a[2]), a[2].cross(a[0]), a[0].cross(a[1])];
   const sign = select(a[0].dot(k[0]).lessThan(0), float(-1), float(1));
   return k[0].mul(n.x).add(k[1].mul(n.y)).add(k[2].mul(n.z)).mul(sign);

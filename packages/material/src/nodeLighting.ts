@@ -121,9 +121,9 @@ export interface Surface {
    */
   shadows?: ShadowTerms;
   /**
-   * Variables the lights read (made without being pushed on a stack, unlike `toVar()`) that the lighting model computes first, once, in the main flow of the
-   * stage it is built in (the vertex stage's v and lit point): a node first used inside a block (each light's
-   * specular branch) is computed there, again in every block that uses it.
+   * Values the lights read that the lighting model computes first, once, in the main flow of the stage it is built
+   * in (the vertex stage's v and lit point; made not on a stack, unlike `toVar()`): a node first used inside a
+   * block (each light's specular branch) is computed there, again in every block that uses it.
    */
   hoisted?: readonly N[];
 }
@@ -198,7 +198,7 @@ export class LectureLightingModel extends LightingModel {
    * vertex stage (gouraud, flat) cannot give (no front-facing test there) and which is not the face's normal.
    */
   override start(builder: N): void {
-    for (const variable of this.surface.hoisted ?? []) variable.toStack();
+    for (const node of this.surface.hoisted ?? []) node.toStack();
     const lightsNode = builder.lightsNode;
     const listed = this.material.phongLights.length > 0;
     // With a list of PhongLights, only their nodes light the material (not the scene's PhongLights).
