@@ -31,10 +31,11 @@ export default defineConfig(shadelabPreset(), {
   ],
   webServer: {
     // Each port builds into its own folder, so parallel runs (and `npm start`) never share an output: the
-    // playground, then the tests' harness pages (tests/harness/, at /harness/<name>.html) beside it, one server.
+    // playground, then the tests' harness pages (tests/harness/, at /harness/<name>.html) beside it, one server
+    // (scripts/e2e-build.mjs); with SHADELAB_E2E_BUILT set (`npm test` builds in a stage of its own) it serves
+    // that build as it is.
     command: [
-      `npx vite build playground --outDir dist-e2e-${port} --emptyOutDir --logLevel warn`,
-      `npx vite build --config tests/harness/vite.config.ts --outDir ../playground/dist-e2e-${port} --logLevel warn`,
+      ...(process.env.SHADELAB_E2E_BUILT ? [] : [`node scripts/e2e-build.mjs --port ${port}`]),
       `npx vite preview playground --outDir dist-e2e-${port} --host 127.0.0.1 --port ${port} --strictPort`,
     ].join(' && '),
     url: `http://127.0.0.1:${port}`,

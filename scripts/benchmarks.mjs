@@ -10,6 +10,7 @@
 import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { gateSection } from './gateReport.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 export const OUTPUT = 'BENCHMARKS.md';
@@ -70,6 +71,7 @@ export const SOURCES = [
   },
   { name: 'reliability', writer: 'bench/reliability.bench.mjs', command: 'npm run bench -- reliability' },
   { name: 'rasterisers', writer: 'bench/rasterisers.bench.mjs', command: 'npm run bench -- rasterisers' },
+  { name: 'gate', writer: 'scripts/test.mjs', command: 'npm test -- --record' },
 ];
 
 // ── Formatting ─────────────────────────────────────────────────────────────────────────────────────────────
@@ -1655,7 +1657,7 @@ export function renderBenchmarks(results) {
       '- [The lighting itself](#the-lighting-itself) · [Adaptive shading under an error budget](#adaptive-shading-under-an-error-budget)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
       '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
-      '- [Rasteriser variation](#rasteriser-variation)',
+      '- [Rasteriser variation](#rasteriser-variation) · [The gate](#the-gate)',
     ],
     runs(results),
     section('sphere', sphereBuild, 'Sphere build time'),
@@ -1684,6 +1686,7 @@ export function renderBenchmarks(results) {
     ),
     section('reliability', reliability, 'Reliability'),
     section('rasterisers', rasterisers, 'Rasteriser variation'),
+    section('gate', (g) => gateSection(g, table), 'The gate'),
   ];
   return `${parts.map((p) => p.join('\n')).join('\n\n')}\n`;
 }

@@ -1,10 +1,16 @@
 // `npm test`: every set-up step, then type check, lint, unit and end-to-end/visual tests.
-// Runs every stage even when one fails, then prints one summary and exits non-zero on any failure.
+// Runs every stage even when one fails, then prints one summary and exits non-zero on any failure. The summary
+// says what the run cost (scripts/gateReport.mjs): the machine's CPU, each stage's time, the spec files that took
+// the most worker time and the tests nearest their timeouts; reports/gate.json holds it, and
+// `npm test -- --record` also writes it to bench/results/gate.json, which BENCHMARKS.md renders.
 // The three unit and documentation stages run at once (each about one core's work for a minute, sharing no
 // output files: about 50 s less on 2 cores than one after another), their output printed stage by stage.
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
+import { execFileSync, spawn } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { recordBrowser, writeJson } from '../bench/lib/meta.mjs';
+import { chromiumExecutable } from './browser.mjs';
+import { gateLines, gateSummary } from './gateReport.mjs';
 import { ensureBrowser, ensureDependencies, root, run } from './setup.mjs';
 
 ensureDependencies();
@@ -12,6 +18,11 @@ await ensureBrowser();
 // Reports go to reports/: Playwright empties test-results/ (its output folder) when it starts.
 rmSync(join(root, 'reports'), { recursive: true, force: true });
 mkdirSync(join(root, 'reports'), { recursive: true });
+
+/** Playwright's port, and so its build folder (playwright.config.ts). */
+const E2E_PORT = Number(process.env.SHADELAB_E2E_PORT ?? 4173);
+/** The build stage below made the pages: Playwright's web server serves them without building again. */
+process.env.SHADELAB_E2E_BUILT = '1';
 
 /** @typedef {[string, string, string[]]} Stage */
 /** @type {(Stage | Stage[])[]} a stage, or stages run at once */
@@ -46,6 +57,11 @@ const stages = [
     ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],
   ],
   ['links in the Markdown and the docs site resolve', 'node', ['scripts/check-links.mjs']],
+  [
+    'build the playground and the harness pages for Playwright',
+    'node',
+    ['scripts/e2e-build.mjs', '--port', String(E2E_PORT)],
+  ],
   ['end-to-end and visual (playwright)', 'npx', ['playwright', 'test']],
 ];
 
@@ -66,9 +82,9 @@ function capture([, cmd, args]) {
 }
 
 const failed = [];
-/** Each stage's wall time, printed at the end: the fresh-clone run must stay within 25 minutes. */
+/** @type {import('./gateReport.mjs').StageTime[]} each stage's wall time */
 const times = [];
-const seconds = (/** @type {number} */ t0) => ((performance.now() - t0) / 1000).toFixed(0).padStart(5);
+const seconds = (/** @type {number} */ t0) => (performance.now() - t0) / 1000;
 const started = performance.now();
 for (const step of stages) {
   const t0 = performance.now();
@@ -76,7 +92,7 @@ for (const step of stages) {
     const [name, cmd, args] = /** @type {Stage} */ (step);
     console.log(`\n── ${name} ──`);
     if (run(cmd, args) !== 0) failed.push(name);
-    times.push(`${seconds(t0)} s  ${name}`);
+    times.push({ name, seconds: seconds(t0) });
     continue;
   }
   const group = /** @type {Stage[]} */ (step);
@@ -87,7 +103,7 @@ for (const step of stages) {
     process.stdout.write(output);
     if (code !== 0) failed.push(name);
   }
-  times.push(`${seconds(t0)} s  ${group.map(([name]) => name).join(' + ')} (at once)`);
+  times.push({ name: `${group.map(([name]) => name).join(' + ')} (at once)`, seconds: seconds(t0) });
 }
 
 let passed = 0;
@@ -99,13 +115,27 @@ if (existsSync(vitest)) {
   failedTests += r.numFailedTests ?? 0;
 }
 const pw = join(root, 'reports', 'playwright.json');
-if (existsSync(pw)) {
-  const s = JSON.parse(readFileSync(pw, 'utf8')).stats ?? {};
+const report = existsSync(pw) ? JSON.parse(readFileSync(pw, 'utf8')) : undefined;
+if (report) {
+  const s = report.stats ?? {};
   passed += (s.expected ?? 0) + (s.flaky ?? 0);
   failedTests += s.unexpected ?? 0;
 }
-console.log(`\n${times.join('\n')}\n${seconds(started)} s  in all\n`);
-if (failed.length) console.log(`failed stages: ${failed.join('; ')}`);
 if (failed.length && failedTests === 0) failedTests = failed.length;
+const gate = gateSummary({
+  stages: times,
+  totalSeconds: seconds(started),
+  report,
+  passed,
+  failed: failedTests,
+});
+console.log(`\n${gateLines(gate).join('\n')}\n`);
+writeFileSync(join(root, 'reports', 'gate.json'), `${JSON.stringify(gate, null, 2)}\n`);
+if (process.argv.includes('--record')) {
+  const chromium = chromiumExecutable();
+  if (chromium) recordBrowser(execFileSync(chromium, ['--version'], { encoding: 'utf8' }).trim());
+  writeJson(join(root, 'bench', 'results', 'gate.json'), gate);
+}
+if (failed.length) console.log(`failed stages: ${failed.join('; ')}`);
 console.log(`${passed} passed, ${failedTests} failed`);
 process.exit(failed.length ? 1 : 0);

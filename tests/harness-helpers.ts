@@ -1,6 +1,18 @@
 import { test as base, type Page } from '@playwright/test';
 
 /**
+ * Records how long a page took to load (from `goto` until it said it was ready) as the test's `page-load`
+ * annotation, which `npm test`'s summary adds up per spec file (scripts/gateReport.mjs).
+ */
+export async function timedLoad(load: () => Promise<unknown>): Promise<void> {
+  const t0 = performance.now();
+  await load();
+  base
+    .info()
+    .annotations.push({ type: 'page-load', description: String(Math.round(performance.now() - t0)) });
+}
+
+/**
  * Opens a harness page (`/harness/<name>.html`) and waits until it says it is ready; returns the page errors and
  * console errors seen while the test runs (none are expected; the browser's favicon 404 is not one).
  */
@@ -11,8 +23,10 @@ export async function openHarness(page: Page, name: string): Promise<string[]> {
     if (m.type() === 'error' && !m.text().includes('favicon') && !m.text().includes('404'))
       problems.push(m.text());
   });
-  await page.goto(`/harness/${name}.html`);
-  await page.waitForFunction(() => document.body.dataset.ready === '1');
+  await timedLoad(async () => {
+    await page.goto(`/harness/${name}.html`);
+    await page.waitForFunction(() => document.body.dataset.ready === '1');
+  });
   return problems;
 }
 

@@ -1,4 +1,5 @@
 import { expect, type Locator, type Page } from '@playwright/test';
+import { timedLoad } from './harness-helpers';
 
 /** Overlays drawn over the canvas (stats, hints, messages): hidden in canvas screenshots. */
 export const HIDE_OVERLAYS = '.stats, .hint, .messages, .compare-labels { visibility: hidden !important; }';
@@ -36,8 +37,10 @@ export async function settle(page: Page, quietMs = 200): Promise<void> {
 
 /** Opens the playground (optionally on a state) with fresh storage and waits until it rests. */
 export async function open(page: Page, state?: object): Promise<void> {
-  await page.goto(state ? stateUrl(state) : '/');
-  await settle(page, 400); // a page load also waits for what loads after the first frame
+  await timedLoad(async () => {
+    await page.goto(state ? stateUrl(state) : '/');
+    await settle(page, 400); // a page load also waits for what loads after the first frame
+  });
 }
 
 /** The canvas's own pixels (no overlays) as a PNG data URL: equal strings = equal pixels. */

@@ -1,0 +1,181 @@
+// What `npm test` says about its own cost: the machine, each stage's wall time, the spec files that took the most
+// worker time, the tests closest to their timeouts and where the Playwright time went (page loads, builds). Pure
+// functions of Playwright's JSON report, so that scripts/test.mjs prints them and BENCHMARKS.md renders the
+// committed run (bench/results/gate.json) from the same numbers.
+import { cpus } from 'node:os';
+
+/** @typedef {{ name: string, seconds: number }} StageTime */
+
+/**
+ * One test's run, flattened from Playwright's JSON report.
+ * @typedef {object} TestRun
+ * @property {string} file the spec file, relative to tests/
+ * @property {number} line
+ * @property {string} title
+ * @property {string} project
+ * @property {number} seconds the test's duration, its hooks and fixtures included
+ * @property {number} timeoutSeconds the timeout the test ended with (test.setTimeout included)
+ * @property {number} pageLoadSeconds what the test's `page-load` annotations add up to
+ * @property {string} status
+ */
+
+/**
+ * Every test run in a Playwright JSON report.
+ * @param {any} report @returns {TestRun[]}
+ */
+export function testRuns(report) {
+  /** @type {TestRun[]} */
+  const runs = [];
+  /** @param {any} suite */
+  const walk = (suite) => {
+    for (const spec of suite.specs ?? []) {
+      for (const test of spec.tests ?? []) {
+        for (const result of test.results ?? []) {
+          const annotations = [...(test.annotations ?? []), ...(result.annotations ?? [])];
+          runs.push({
+            file: spec.file,
+            line: spec.line,
+            title: spec.title,
+            project: test.projectName,
+            seconds: result.duration / 1000,
+            timeoutSeconds: test.timeout / 1000,
+            pageLoadSeconds:
+              annotations
+                .filter((/** @type {any} */ a) => a.type === 'page-load')
+                .reduce((sum, /** @type {any} */ a) => sum + Number(a.description), 0) / 1000,
+            status: result.status,
+          });
+        }
+      }
+    }
+    for (const child of suite.suites ?? []) walk(child);
+  };
+  for (const suite of report.suites ?? []) walk(suite);
+  return runs;
+}
+
+/** @param {number} x */
+const round1 = (x) => Math.round(x * 10) / 10;
+
+/**
+ * The summary of one gate run.
+ * @param {{ stages: StageTime[], totalSeconds: number, report?: any, passed: number, failed: number }} run
+ */
+export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
+  const runs = report ? testRuns(report) : [];
+  /** @type {Map<string, { file: string, tests: number, seconds: number, pageLoadSeconds: number }>} */
+  const specs = new Map();
+  for (const r of runs) {
+    const key = r.project === 'swiftshader' ? r.file : `${r.file} [${r.project}]`;
+    const spec = specs.get(key) ?? { file: key, tests: 0, seconds: 0, pageLoadSeconds: 0 };
+    spec.tests++;
+    spec.seconds += r.seconds;
+    spec.pageLoadSeconds += r.pageLoadSeconds;
+    specs.set(key, spec);
+  }
+  const workerSeconds = runs.reduce((sum, r) => sum + r.seconds, 0);
+  return {
+    cpuModel: cpus()[0]?.model.trim() ?? 'unknown',
+    cpus: cpus().length,
+    totalSeconds: round1(totalSeconds),
+    passed,
+    failed,
+    stages: stages.map((s) => ({ name: s.name, seconds: round1(s.seconds) })),
+    playwright: {
+      tests: runs.length,
+      wallSeconds: report ? round1((report.stats?.duration ?? 0) / 1000) : 0,
+      workerSeconds: round1(workerSeconds),
+      pageLoadSeconds: round1(runs.reduce((sum, r) => sum + r.pageLoadSeconds, 0)),
+    },
+    slowestSpecs: [...specs.values()]
+      .sort((a, b) => b.seconds - a.seconds)
+      .slice(0, 20)
+      .map((s) => ({ ...s, seconds: round1(s.seconds), pageLoadSeconds: round1(s.pageLoadSeconds) })),
+    slowestTests: [...runs]
+      .sort((a, b) => b.seconds / b.timeoutSeconds - a.seconds / a.timeoutSeconds)
+      .slice(0, 10)
+      .map((r) => ({
+        test: `${r.file}:${r.line} ${r.title}`,
+        project: r.project,
+        seconds: round1(r.seconds),
+        timeoutSeconds: r.timeoutSeconds,
+        shareOfTimeout: Math.round((r.seconds / r.timeoutSeconds) * 1000) / 1000,
+      })),
+  };
+}
+
+/** @typedef {ReturnType<typeof gateSummary>} GateSummary */
+
+/** @param {number} s */
+const secs = (s) => `${s.toFixed(0).padStart(5)} s`;
+
+/**
+ * The summary as the lines `npm test` prints.
+ * @param {GateSummary} g @returns {string[]}
+ */
+export function gateLines(g) {
+  const lines = [`machine: ${g.cpuModel}, ${g.cpus} cores`, '', 'stages (wall time):'];
+  for (const s of g.stages) lines.push(`${secs(s.seconds)}  ${s.name}`);
+  lines.push(`${secs(g.totalSeconds)}  in all`);
+  if (g.playwright.tests > 0) {
+    lines.push(
+      '',
+      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time`,
+      '',
+      'the 20 spec files that took the most worker time (page loads in brackets):',
+    );
+    for (const s of g.slowestSpecs)
+      lines.push(
+        `${secs(s.seconds)}  (${s.pageLoadSeconds.toFixed(0).padStart(3)} s)  ${String(s.tests).padStart(3)} tests  ${s.file}`,
+      );
+    lines.push('', 'the 10 tests nearest their timeout (duration / timeout):');
+    for (const t of g.slowestTests)
+      lines.push(
+        `${(t.shareOfTimeout * 100).toFixed(0).padStart(4)} %  ${t.seconds.toFixed(1).padStart(5)} s of ${t.timeoutSeconds} s  ${t.project === 'swiftshader' ? '' : `[${t.project}] `}${t.test}`,
+      );
+  }
+  return lines;
+}
+
+/**
+ * BENCHMARKS.md's section on the gate, from a recorded summary (bench/results/gate.json).
+ * @param {GateSummary & { meta?: any }} g
+ * @param {(header: string[], align: string, rows: (string | number)[][]) => string[]} table
+ * @returns {string[]}
+ */
+export function gateSection(g, table) {
+  const s = (/** @type {number} */ x) => x.toFixed(0);
+  const minutes = (/** @type {number} */ x) => `${(x / 60).toFixed(1)} min`;
+  return [
+    '## The gate',
+    '',
+    `What \`npm test\` cost in one recorded run (\`npm test -- --record\`) on ${g.cpuModel} (${g.cpus} cores): **${minutes(g.totalSeconds)}** in all, ending ${g.passed} passed, ${g.failed} failed. Its budget is 12 minutes on an Intel Xeon machine of this kind and 15 on an AMD EPYC one ([DEVELOPERS.md](DEVELOPERS.md#the-two-commands)); every run prints the same summary.`,
+    '',
+    ...table(
+      ['stage', 'seconds'],
+      'lr',
+      g.stages.map((x) => [x.name, s(x.seconds)]),
+    ),
+    '',
+    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time; ${s(g.playwright.pageLoadSeconds)} worker-seconds of them loading pages (from \`goto\` until a harness page or the playground says it is ready). The spec files that took the most worker time:`,
+    '',
+    ...table(
+      ['spec', 'tests', 'worker-seconds', 'of them page loads'],
+      'lrrr',
+      g.slowestSpecs.map((x) => [`\`${x.file}\``, x.tests, s(x.seconds), s(x.pageLoadSeconds)]),
+    ),
+    '',
+    'The tests nearest their timeout (a test stays under a quarter of it):',
+    '',
+    ...table(
+      ['test', 'seconds', 'timeout', 'share'],
+      'lrrr',
+      g.slowestTests.map((t) => [
+        `${t.project === 'swiftshader' ? '' : `[${t.project}] `}\`${t.test.replace(/\|/g, '\\|')}\``,
+        t.seconds.toFixed(1),
+        s(t.timeoutSeconds),
+        `${(t.shareOfTimeout * 100).toFixed(0)} %`,
+      ]),
+    ),
+  ];
+}
