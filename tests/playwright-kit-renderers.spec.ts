@@ -203,8 +203,8 @@ test('says what is missing: a page without exposeRenderers, a blank scene, a fac
       route.fulfill({ contentType: 'text/html', body: '<p>app</p>' }),
     );
     await bare.goto('http://kit.test/');
-    expect(await failure(expect(bare).toMatchAcrossRenderers('lecture', { timeout: 300 }))).toContain(
-      "The page (http://kit.test/) has no renderers for the kit after 300 ms: a script of the page must import { exposeRenderers } from '@shadelab/playwright/page'",
+    expect(await failure(expect(bare).toMatchAcrossRenderers('lecture', { timeout: 5_000 }))).toContain(
+      "The page (http://kit.test/) has no renderers for the kit after 5000 ms: a script of the page must import { exposeRenderers } from '@shadelab/playwright/page'",
     );
   } finally {
     await bare.close();

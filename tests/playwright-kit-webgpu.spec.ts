@@ -32,15 +32,16 @@ async function openGpuCanvas(page: Page, script: string) {
 test('fails on a context never configured with a device, and on a lost device, saying which', async ({
   page,
 }) => {
+  test.setTimeout(90_000); // two failures that each wait the full 5 s: about 14 s, more on a loaded machine
   const unconfigured = await openGpuCanvas(page, '');
-  expect(await failure(expect(unconfigured).toHaveRendered({ timeout: 500 }))).toContain(
+  expect(await failure(expect(unconfigured).toHaveRendered({ timeout: 5_000 }))).toContain(
     'its WebGPU context was never configured with a device (context.configure)',
   );
   const lost = await openGpuCanvas(
     page,
     'context.configure({ device, format: navigator.gpu.getPreferredCanvasFormat() }); device.destroy(); await device.lost;',
   );
-  expect(await failure(expect(lost).toHaveRendered({ timeout: 500 }))).toContain(
+  expect(await failure(expect(lost).toHaveRendered({ timeout: 5_000 }))).toContain(
     'its WebGPU device is lost (device.lost has resolved)',
   );
 });

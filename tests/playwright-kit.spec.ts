@@ -71,12 +71,12 @@ test.describe('toHaveRendered', () => {
 
   test('fails on a blank canvas, saying it is flat and its colour', async ({ page }) => {
     const canvas = await openCanvas(page, CLEAR_BLUE);
-    const message = await failure(expect(canvas).toHaveRendered({ timeout: 500 }));
+    const message = await failure(expect(canvas).toHaveRendered({ timeout: 5_000 }));
     expect(message).toContain('expect(canvas).toHaveRendered()');
     expect(message).toContain('the picture is blank: all 64×48 pixels are rgb(0, 0, 255)');
     expect(message).toContain('WebGL2 context');
     expect(test.info().attachments.map((a) => a.name)).toContain('toHaveRendered-actual.png');
-    await expect(canvas).not.toHaveRendered({ timeout: 500 });
+    await expect(canvas).not.toHaveRendered({ timeout: 5_000 });
   });
 
   test('fails on a lost context (WEBGL_lose_context), even with its last picture on screen', async ({
@@ -87,16 +87,17 @@ test.describe('toHaveRendered', () => {
     await canvas.evaluate((c: HTMLCanvasElement) =>
       c.getContext('webgl2')!.getExtension('WEBGL_lose_context')!.loseContext(),
     );
-    const message = await failure(expect(canvas).toHaveRendered({ timeout: 500 }));
+    const message = await failure(expect(canvas).toHaveRendered({ timeout: 5_000 }));
     expect(message).toContain('its WebGL2 context is lost (isContextLost() is true)');
   });
 
   test('fails on a canvas without a context, and on an element that is not a canvas', async ({ page }) => {
+    test.setTimeout(90_000); // two failures that each wait the full 5 s: about 12 s, more on a loaded machine
     const canvas = await openCanvas(page, '');
-    expect(await failure(expect(canvas).toHaveRendered({ timeout: 500 }))).toContain(
+    expect(await failure(expect(canvas).toHaveRendered({ timeout: 5_000 }))).toContain(
       'the canvas has no context: the page never called getContext on it',
     );
-    expect(await failure(expect(page.locator('body')).toHaveRendered({ timeout: 500 }))).toContain(
+    expect(await failure(expect(page.locator('body')).toHaveRendered({ timeout: 5_000 }))).toContain(
       'the element is a <body>, not a <canvas>',
     );
   });
@@ -106,7 +107,7 @@ test.describe('toHaveRendered', () => {
   }) => {
     const canvas = await openCanvas(page, DRAW_SQUARE);
     await expect(canvas).toHaveRendered({ minDrawnPixels: 100 });
-    expect(await failure(expect(canvas).toHaveRendered({ minDrawnPixels: 101, timeout: 500 }))).toContain(
+    expect(await failure(expect(canvas).toHaveRendered({ minDrawnPixels: 101, timeout: 5_000 }))).toContain(
       'only 100 pixels differ from the background rgb(0, 0, 255), 101 needed',
     );
     // With the red square's colour as the background, the blue rest is what is drawn.
@@ -123,7 +124,7 @@ test.describe('toHaveRendered', () => {
     const frame = await waitForFirstFrame(canvas, { timeout: 30_000 });
     expect(frame.picture.drawnPixels).toBe(100);
     const blank = await openCanvas(page, CLEAR_BLUE);
-    expect(await failure(waitForFirstFrame(blank, { timeout: 300 }))).toMatch(
+    expect(await failure(waitForFirstFrame(blank, { timeout: 5_000 }))).toMatch(
       /^waitForFirstFrame: the canvas did not render within \d+ ms: the picture is blank/,
     );
   });
@@ -133,6 +134,7 @@ plainTest.describe("toHaveRendered with Playwright's own test (contexts not reco
   plainTest(
     'passes on a drawn canvas, finding its context; fails on a blank or lost one',
     async ({ page }) => {
+      plainTest.setTimeout(90_000); // two failures that each wait the full 5 s: about 15 s, more on a loaded machine
       const canvas = await openCanvas(page, DRAW_SQUARE);
       await expect(canvas).toHaveRendered();
       const lost = await openCanvas(page, DRAW_SQUARE);
@@ -140,11 +142,13 @@ plainTest.describe("toHaveRendered with Playwright's own test (contexts not reco
         c.getContext('webgl2')!.getExtension('WEBGL_lose_context')!.loseContext(),
       );
       // Without the recorder the context is asked for once the canvas shows a picture: the lost one still does.
-      expect(await failure(expect(lost).toHaveRendered({ timeout: 500 }))).toContain(
+      expect(await failure(expect(lost).toHaveRendered({ timeout: 5_000 }))).toContain(
         'its WebGL2 context is lost (isContextLost() is true)',
       );
       const blank = await openCanvas(page, CLEAR_BLUE);
-      expect(await failure(expect(blank).toHaveRendered({ timeout: 500 }))).toContain('the picture is blank');
+      expect(await failure(expect(blank).toHaveRendered({ timeout: 5_000 }))).toContain(
+        'the picture is blank',
+      );
     },
   );
 });

@@ -36,6 +36,12 @@ interface Look {
   image?: RgbaImage;
   /** Why the canvas has not rendered; undefined when it has. */
   problem?: string;
+  /**
+   * The look ran out of its time on a canvas that is there (Playwright's TimeoutError while the page was slow to
+   * answer, as on a loaded machine): it says nothing about the canvas, so it neither meets the wait nor replaces
+   * what an earlier look saw.
+   */
+  cutShort?: boolean;
 }
 
 /** The attribute that marks the canvas being read, for the screenshot's style. */
@@ -91,11 +97,18 @@ function checkOptions({ background, minDrawnPixels = 1, timeout }: RenderedOptio
     summarisePicture({ width: 0, height: 0, data: new Uint8Array(0) }, background);
 }
 
+/** Whether `error` is Playwright's TimeoutError (an action or evaluation that ran out of its time). */
+const isTimeout = (error: unknown) => error instanceof Error && error.name === 'TimeoutError';
+
 async function look(canvas: Locator, options: RenderedOptions, timeout: number): Promise<Look> {
   let state: CanvasState;
   try {
     state = await canvas.evaluate(inspectCanvas, false, { timeout });
   } catch (error) {
+    // Timed out with an element there: the page was too slow to answer, which says nothing about the canvas.
+    if (isTimeout(error) && (await canvas.count().catch(() => 0)) > 0) {
+      return { problem: `the canvas could not be read: ${firstLine(error)}`, cutShort: true };
+    }
     return { problem: `the canvas could not be found: ${firstLine(error)}` };
   }
   if (state.tag !== 'canvas')
@@ -114,7 +127,11 @@ async function look(canvas: Locator, options: RenderedOptions, timeout: number):
   try {
     image = await readCanvas(canvas, { timeout });
   } catch (error) {
-    return { canvas: state, problem: `the canvas could not be captured: ${firstLine(error)}` };
+    return {
+      canvas: state,
+      problem: `the canvas could not be captured: ${firstLine(error)}`,
+      cutShort: isTimeout(error),
+    };
   }
   const picture = summarisePicture(image, options.background);
   const min = options.minDrawnPixels ?? 1;
@@ -129,7 +146,17 @@ async function look(canvas: Locator, options: RenderedOptions, timeout: number):
   }
   if (state.context === null) {
     // Not recorded: the canvas has drawn, so it has a context, and asking for each type finds it.
-    state = await canvas.evaluate(inspectCanvas, true, { timeout });
+    try {
+      state = await canvas.evaluate(inspectCanvas, true, { timeout });
+    } catch (error) {
+      return {
+        canvas: state,
+        picture,
+        image,
+        problem: `the canvas's context could not be read: ${firstLine(error)}`,
+        cutShort: isTimeout(error),
+      };
+    }
     if (state.context === null) {
       return {
         canvas: state,
@@ -163,7 +190,8 @@ const INTERVALS = [100, 250, 500, 1000];
 
 /**
  * Look at the canvas until it has rendered (or, with `wanted` false, until it has not), or until `timeout`.
- * Resolves with the last look and the time waited.
+ * Resolves with the last look that saw the canvas (a look cut short by its time is one only when no other
+ * was) and the time waited.
  */
 async function poll(
   canvas: Locator,
@@ -172,13 +200,17 @@ async function poll(
   wanted: boolean,
 ): Promise<{ look: Look; waitedMs: number; met: boolean }> {
   const start = Date.now();
+  /** The last look that was not cut short. */
+  let seen: Look | undefined;
   for (let i = 0; ; i++) {
     // A look may run past the deadline rather than fail for want of time (a screenshot takes a while).
     const remaining = Math.max(timeout - (Date.now() - start), 1000);
-    const last = await look(canvas, options, remaining);
+    const current = await look(canvas, options, remaining);
+    if (!current.cutShort) seen = current;
+    const last = seen ?? current;
     const met = (last.problem === undefined) === wanted;
     const waitedMs = Date.now() - start;
-    if (met || waitedMs >= timeout) return { look: last, waitedMs, met };
+    if ((met && !current.cutShort) || waitedMs >= timeout) return { look: last, waitedMs, met };
     const pause = INTERVALS[Math.min(i, INTERVALS.length - 1)];
     await new Promise((resolve) => setTimeout(resolve, Math.min(pause, timeout - waitedMs)));
   }
@@ -243,6 +275,6 @@ export async function toHaveRendered(
   const message = () =>
     pass
       ? `${hint}\n\nThe canvas rendered (${describe(last)}), and was still rendered after ${waitedMs} ms.`
-      : `${hint}\n\nThe canvas did not render within ${waitedMs} ms: ${last.problem}.\nCanvas: ${describe(last) || 'not found'}.`;
+      : `${hint}\n\nThe canvas did not render within ${waitedMs} ms: ${last.problem}.\nCanvas: ${describe(last) || (last.cutShort ? 'there, not read in time' : 'not found')}.`;
   return { pass, message, name: 'toHaveRendered' };
 }
