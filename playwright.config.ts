@@ -12,7 +12,9 @@ export default defineConfig(shadelabPreset(), {
   fullyParallel: true,
   workers: 2,
   retries: 0,
-  timeout: 60_000,
+  // A margin, not a guess: under the gate's own load (two workers on two cores, or `npm run test:loaded`) every
+  // test stays under a quarter of its timeout; `npm test` prints the ten nearest theirs.
+  timeout: 120_000,
   reporter: [['list'], ['json', { outputFile: 'reports/playwright.json' }]],
   use: {
     baseURL: `http://127.0.0.1:${port}`,

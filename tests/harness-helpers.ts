@@ -59,8 +59,8 @@ export const test = base.extend<
       const key = JSON.stringify([name, baseURL, viewport]);
       if (slot.current?.key !== key || slot.current.page.isClosed()) {
         // The page's load and first compiles are every later test's set-up too, not this test's own work: they
-        // get their own minute (18 s measured for the first test beside pack.spec's installs).
-        testInfo.setTimeout(testInfo.timeout + 60_000);
+        // get their own two minutes.
+        testInfo.setTimeout(testInfo.timeout + 120_000);
         await slot.current?.page.close();
         const page = await browser.newPage({ baseURL, viewport });
         slot.current = { key, page, problems: await openHarness(page, name) };

@@ -20,19 +20,31 @@ export async function frames(page: Page): Promise<number> {
  * Rendering is on demand: wait for a first frame, then until the page rests: no frame came for `quietMs` and none
  * is asked for (the canvas's `data-render-pending`, set while the viewer has a frame scheduled: an animation, such
  * as a damped spin, asks for its next frame while it draws, so it never looks at rest between two slow frames).
+ * The page watches itself (every animation frame) rather than being asked every `quietMs` from here, so the wait
+ * ends `quietMs` after the last frame; it gives up after 50 × `quietMs` of frames that never stop.
  */
 export async function settle(page: Page, quietMs = 200): Promise<void> {
   const viewport = page.getByTestId('viewport');
   await expect(viewport).toHaveAttribute('data-frames', /[1-9]/);
-  let last = '';
-  for (let i = 0; i < 50; i++) {
-    const [n, pending] = await viewport.evaluate(
-      (canvas) => [canvas.dataset['frames'] ?? '', canvas.hasAttribute('data-render-pending')] as const,
-    );
-    if (n === last && !pending) return;
-    last = n;
-    await page.waitForTimeout(quietMs);
-  }
+  await viewport.evaluate(
+    (canvas, quiet) =>
+      new Promise<void>((resolve) => {
+        const start = performance.now();
+        let last = canvas.dataset['frames'];
+        let since = start;
+        const check = () => {
+          const now = performance.now();
+          if (canvas.dataset['frames'] !== last || canvas.hasAttribute('data-render-pending')) {
+            last = canvas.dataset['frames'];
+            since = now;
+          }
+          if (now - since >= quiet || now - start >= 50 * quiet) resolve();
+          else requestAnimationFrame(check);
+        };
+        requestAnimationFrame(check);
+      }),
+    quietMs,
+  );
 }
 
 /** Opens the playground (optionally on a state) with fresh storage and waits until it rests. */
@@ -76,7 +88,23 @@ export async function pixel(page: Page, fx: number, fy: number): Promise<number[
 async function drawn(page: Page, action: () => Promise<void>, draws = true): Promise<void> {
   const before = await frames(page);
   await action();
-  if (draws) await expect.poll(() => frames(page), { timeout: 15_000 }).toBeGreaterThan(before);
+  if (draws) {
+    // Watched in the page, every animation frame, for at most 15 s.
+    const drew = await page.getByTestId('viewport').evaluate(
+      (canvas, n) =>
+        new Promise<boolean>((resolve) => {
+          const start = performance.now();
+          const check = () => {
+            if (Number(canvas.dataset['frames'] ?? 0) > n) resolve(true);
+            else if (performance.now() - start > 15_000) resolve(false);
+            else requestAnimationFrame(check);
+          };
+          check();
+        }),
+      before,
+    );
+    expect(drew, `a frame after frame ${before}, within 15 s`).toBe(true);
+  }
   await settle(page);
 }
 
