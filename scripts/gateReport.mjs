@@ -16,6 +16,8 @@ import { cpus } from 'node:os';
  * @property {number} seconds the test's duration, its hooks and fixtures included
  * @property {number} timeoutSeconds the timeout the test ended with (test.setTimeout included)
  * @property {number} pageLoadSeconds what the test's `page-load` annotations add up to
+ * @property {number} setupSeconds the time its worker spent before it since the test before it ended (or since
+ *   the run started): its spec's `beforeAll` hooks and worker fixtures, which no test's duration holds
  * @property {string} status
  */
 
@@ -24,7 +26,7 @@ import { cpus } from 'node:os';
  * @param {any} report @returns {TestRun[]}
  */
 export function testRuns(report) {
-  /** @type {TestRun[]} */
+  /** @type {(TestRun & { parallelIndex: number, start: number })[]} */
   const runs = [];
   /** @param {any} suite */
   const walk = (suite) => {
@@ -43,7 +45,10 @@ export function testRuns(report) {
               annotations
                 .filter((/** @type {any} */ a) => a.type === 'page-load')
                 .reduce((sum, /** @type {any} */ a) => sum + Number(a.description), 0) / 1000,
+            setupSeconds: 0,
             status: result.status,
+            parallelIndex: result.parallelIndex ?? 0,
+            start: Date.parse(result.startTime),
           });
         }
       }
@@ -51,7 +56,19 @@ export function testRuns(report) {
     for (const child of suite.suites ?? []) walk(child);
   };
   for (const suite of report.suites ?? []) walk(suite);
-  return runs;
+  // Each worker slot's tests in the order they ran: the gap before a test is its set-up.
+  const started = Date.parse(report.stats?.startTime ?? '') || Math.min(...runs.map((r) => r.start));
+  /** @type {Map<number, typeof runs>} */
+  const slots = new Map();
+  for (const r of runs) slots.set(r.parallelIndex, [...(slots.get(r.parallelIndex) ?? []), r]);
+  for (const slot of slots.values()) {
+    let free = started;
+    for (const r of slot.sort((a, b) => a.start - b.start)) {
+      r.setupSeconds = Math.max(0, r.start - free) / 1000;
+      free = Math.max(free, r.start + r.seconds * 1000);
+    }
+  }
+  return runs.map(({ parallelIndex, start, ...r }) => r);
 }
 
 /** @param {number} x */
@@ -63,17 +80,18 @@ const round1 = (x) => Math.round(x * 10) / 10;
  */
 export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
   const runs = report ? testRuns(report) : [];
-  /** @type {Map<string, { file: string, tests: number, seconds: number, pageLoadSeconds: number }>} */
+  /** @type {Map<string, { file: string, tests: number, seconds: number, setupSeconds: number, pageLoadSeconds: number }>} */
   const specs = new Map();
   for (const r of runs) {
     const key = r.project === 'swiftshader' ? r.file : `${r.file} [${r.project}]`;
-    const spec = specs.get(key) ?? { file: key, tests: 0, seconds: 0, pageLoadSeconds: 0 };
+    const spec = specs.get(key) ?? { file: key, tests: 0, seconds: 0, setupSeconds: 0, pageLoadSeconds: 0 };
     spec.tests++;
-    spec.seconds += r.seconds;
+    spec.seconds += r.seconds + r.setupSeconds;
+    spec.setupSeconds += r.setupSeconds;
     spec.pageLoadSeconds += r.pageLoadSeconds;
     specs.set(key, spec);
   }
-  const workerSeconds = runs.reduce((sum, r) => sum + r.seconds, 0);
+  const workerSeconds = runs.reduce((sum, r) => sum + r.seconds + r.setupSeconds, 0);
   return {
     cpuModel: cpus()[0]?.model.trim() ?? 'unknown',
     cpus: cpus().length,
@@ -85,12 +103,18 @@ export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
       tests: runs.length,
       wallSeconds: report ? round1((report.stats?.duration ?? 0) / 1000) : 0,
       workerSeconds: round1(workerSeconds),
+      setupSeconds: round1(runs.reduce((sum, r) => sum + r.setupSeconds, 0)),
       pageLoadSeconds: round1(runs.reduce((sum, r) => sum + r.pageLoadSeconds, 0)),
     },
     slowestSpecs: [...specs.values()]
       .sort((a, b) => b.seconds - a.seconds)
       .slice(0, 20)
-      .map((s) => ({ ...s, seconds: round1(s.seconds), pageLoadSeconds: round1(s.pageLoadSeconds) })),
+      .map((s) => ({
+        ...s,
+        seconds: round1(s.seconds),
+        setupSeconds: round1(s.setupSeconds),
+        pageLoadSeconds: round1(s.pageLoadSeconds),
+      })),
     slowestTests: [...runs]
       .sort((a, b) => b.seconds / b.timeoutSeconds - a.seconds / a.timeoutSeconds)
       .slice(0, 10)
@@ -120,13 +144,13 @@ export function gateLines(g) {
   if (g.playwright.tests > 0) {
     lines.push(
       '',
-      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time`,
+      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (set-up outside tests ${g.playwright.setupSeconds.toFixed(0)}, page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time`,
       '',
-      'the 20 spec files that took the most worker time (page loads in brackets):',
+      'the 20 spec files that took the most worker time (set-up outside tests / page loads):',
     );
     for (const s of g.slowestSpecs)
       lines.push(
-        `${secs(s.seconds)}  (${s.pageLoadSeconds.toFixed(0).padStart(3)} s)  ${String(s.tests).padStart(3)} tests  ${s.file}`,
+        `${secs(s.seconds)}  (${s.setupSeconds.toFixed(0).padStart(3)} / ${s.pageLoadSeconds.toFixed(0).padStart(3)} s)  ${String(s.tests).padStart(3)} tests  ${s.file}`,
       );
     lines.push('', 'the 10 tests nearest their timeout (duration / timeout):');
     for (const t of g.slowestTests)
@@ -157,12 +181,18 @@ export function gateSection(g, table) {
       g.stages.map((x) => [x.name, s(x.seconds)]),
     ),
     '',
-    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time; ${s(g.playwright.pageLoadSeconds)} worker-seconds of them loading pages (from \`goto\` until a harness page or the playground says it is ready). The spec files that took the most worker time:`,
+    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time. Of them, ${s(g.playwright.setupSeconds)} were set-up outside the tests (\`beforeAll\` hooks such as the tarball apps' installs and builds, browser launches: a worker's time between two tests), and ${s(g.playwright.pageLoadSeconds)} loading pages (from \`goto\` until a harness page or the playground says it is ready). The spec files that took the most worker time:`,
     '',
     ...table(
-      ['spec', 'tests', 'worker-seconds', 'of them page loads'],
-      'lrrr',
-      g.slowestSpecs.map((x) => [`\`${x.file}\``, x.tests, s(x.seconds), s(x.pageLoadSeconds)]),
+      ['spec', 'tests', 'worker-seconds', 'set-up outside tests', 'page loads'],
+      'lrrrr',
+      g.slowestSpecs.map((x) => [
+        `\`${x.file}\``,
+        x.tests,
+        s(x.seconds),
+        s(x.setupSeconds),
+        s(x.pageLoadSeconds),
+      ]),
     ),
     '',
     'The tests nearest their timeout (a test stays under a quarter of it):',
