@@ -10,7 +10,7 @@ import { spawn } from 'node:child_process';
 import { join } from 'node:path';
 import { root } from './setup.mjs';
 
-/** The longest the spin loop runs, whatever happens to the run (`npm test` takes about 25 min on 2 cores). */
+/** The longest the spin loop runs, whatever happens to the run: several times the gate's budget (DEVELOPERS.md). */
 const MAX_MINUTES = 90;
 
 // Run by `node -e` (argv[1]: the deadline, ms since the epoch). Date.now() and the parent are checked every
