@@ -32,7 +32,6 @@ async function openGpuCanvas(page: Page, script: string) {
 test('fails on a context never configured with a device, and on a lost device, saying which', async ({
   page,
 }) => {
-  test.setTimeout(90_000); // two failures that each wait the full 5 s: about 14 s, more on a loaded machine
   const unconfigured = await openGpuCanvas(page, '');
   expect(await failure(expect(unconfigured).toHaveRendered({ timeout: 5_000 }))).toContain(
     'its WebGPU context was never configured with a device (context.configure)',

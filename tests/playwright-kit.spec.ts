@@ -92,7 +92,6 @@ test.describe('toHaveRendered', () => {
   });
 
   test('fails on a canvas without a context, and on an element that is not a canvas', async ({ page }) => {
-    test.setTimeout(90_000); // two failures that each wait the full 5 s: about 12 s, more on a loaded machine
     const canvas = await openCanvas(page, '');
     expect(await failure(expect(canvas).toHaveRendered({ timeout: 5_000 }))).toContain(
       'the canvas has no context: the page never called getContext on it',
@@ -134,7 +133,6 @@ plainTest.describe("toHaveRendered with Playwright's own test (contexts not reco
   plainTest(
     'passes on a drawn canvas, finding its context; fails on a blank or lost one',
     async ({ page }) => {
-      plainTest.setTimeout(90_000); // two failures that each wait the full 5 s: about 15 s, more on a loaded machine
       const canvas = await openCanvas(page, DRAW_SQUARE);
       await expect(canvas).toHaveRendered();
       const lost = await openCanvas(page, DRAW_SQUARE);
