@@ -33,7 +33,8 @@ export function testRuns(report) {
     for (const spec of suite.specs ?? []) {
       for (const test of spec.tests ?? []) {
         for (const result of test.results ?? []) {
-          const annotations = [...(test.annotations ?? []), ...(result.annotations ?? [])];
+          // A result's annotations are its test's (the report lists them in both places since Playwright 1.52).
+          const annotations = result.annotations ?? test.annotations ?? [];
           runs.push({
             file: spec.file,
             line: spec.line,
