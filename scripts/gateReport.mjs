@@ -34,6 +34,7 @@ export function testRuns(report) {
       for (const test of spec.tests ?? []) {
         for (const result of test.results ?? []) {
           // A result's annotations are its test's (the report lists them in both places since Playwright 1.52).
+          /** @type {{ type: string, description?: string }[]} */
           const annotations = result.annotations ?? test.annotations ?? [];
           runs.push({
             file: spec.file,
@@ -44,8 +45,8 @@ export function testRuns(report) {
             timeoutSeconds: test.timeout / 1000,
             pageLoadSeconds:
               annotations
-                .filter((/** @type {any} */ a) => a.type === 'page-load')
-                .reduce((sum, /** @type {any} */ a) => sum + Number(a.description), 0) / 1000,
+                .filter((a) => a.type === 'page-load')
+                .reduce((sum, a) => sum + Number(a.description), 0) / 1000,
             setupSeconds: 0,
             status: result.status,
             parallelIndex: result.parallelIndex ?? 0,
