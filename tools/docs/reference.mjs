@@ -75,6 +75,18 @@ export async function convertReference({ packages, check }) {
   /** Whether `app` reported an error, or a warning with `check`, since `before`. */
   const failedSince = (/** @type {Application} */ app, /** @type {Counts} */ before) =>
     app.logger.errorCount > before.errors || (check && app.logger.warningCount > before.warnings);
+  /**
+   * Validate `project` with `app` and, when that reports no failure since `before`, write it into `out`; false
+   * when TypeDoc reported a failure.
+   * @param {Application} app @param {any} project @param {string} out @param {Counts} before
+   */
+  const validateAndWrite = async (app, project, out, before) => {
+    app.validate(project);
+    if (failedSince(app, before)) return false;
+    app.options.setValue('out', out);
+    await app.generateOutputs(project);
+    return !failedSince(app, before);
+  };
   const start = { errors: 0, warnings: 0 };
   // The Markdown is made from the site's conversion, so both configurations must convert a package alike.
   /** @param {Application} app */
@@ -158,20 +170,11 @@ export async function convertReference({ packages, check }) {
       const { description } = JSON.parse(readFileSync(join(dir, 'package.json'), 'utf8'));
       /** @type {any} */ (md.renderer).packagesMeta = { [json.name]: { description, options } };
       md.trigger(Application.EVENT_PROJECT_REVIVE, reference);
-      md.validate(reference);
-      if (failedSince(md, before)) return false;
-      md.options.setValue('out', out);
-      await md.generateOutputs(reference);
-      return !failedSince(md, before);
+      return validateAndWrite(md, reference, out, before);
     },
     async site(out) {
       if (!project || !ok) return false;
-      const before = counts(html);
-      html.validate(project);
-      if (failedSince(html, before)) return false;
-      html.options.setValue('out', out);
-      await html.generateOutputs(project);
-      return !failedSince(html, before);
+      return validateAndWrite(html, project, out, counts(html));
     },
   };
 }
