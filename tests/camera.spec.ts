@@ -1,5 +1,6 @@
-import { expect, type Locator, test } from '@playwright/test';
+import { expect, type Locator } from '@playwright/test';
 import type {} from './harness/camera';
+import { test } from './harness-helpers';
 
 // tests/harness/camera.html: a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's Camera,
 // moved by CameraMovement (moveSpeed 0.5, turnSpeed 0.005); window.cameraDepth probes depth order per mode.

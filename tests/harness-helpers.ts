@@ -1,4 +1,4 @@
-import { test as base, type Page } from '@playwright/test';
+import { type BrowserContext, test as base, type Page } from '@playwright/test';
 
 /**
  * Records how long a page took to load (from `goto` until it said it was ready) as the test's `page-load`
@@ -37,15 +37,172 @@ export interface SharedHarness {
 }
 
 /**
- * Playwright's test with `harness(name)`: the harness page shared by the tests one worker runs in a row, so that
- * the page loads, its renderers are made and SwiftShader compiles their programs and pipelines once rather than
- * once per test. Tests that count what a fresh page holds (programs, pipelines, console messages since load) or
- * that break the page (a lost device) open their own with {@link openHarness}.
+ * The page one worker's tests take in turn, its context, the options it was made with, and whether the last test
+ * left it in a state the next must not see.
+ */
+interface ReusedPage {
+  key: string;
+  context: BrowserContext;
+  page: Page;
+  dirty: boolean;
+}
+
+/**
+ * Page and context methods whose effect outlives a navigation (init scripts, bindings, routes, headers,
+ * permissions, timeouts, emulation, other pages): a test that calls one gets the page to itself, and the next
+ * test a new context.
+ */
+const LASTING = {
+  page: [
+    'addInitScript',
+    'exposeBinding',
+    'exposeFunction',
+    'route',
+    'routeFromHAR',
+    'routeWebSocket',
+    'setExtraHTTPHeaders',
+    'setDefaultTimeout',
+    'setDefaultNavigationTimeout',
+    'emulateMedia',
+  ],
+  context: [
+    'addCookies',
+    'addInitScript',
+    'exposeBinding',
+    'exposeFunction',
+    'grantPermissions',
+    'newCDPSession',
+    'newPage',
+    'route',
+    'routeFromHAR',
+    'routeWebSocket',
+    'setDefaultTimeout',
+    'setDefaultNavigationTimeout',
+    'setExtraHTTPHeaders',
+    'setGeolocation',
+    'setHTTPCredentials',
+    'setOffline',
+  ],
+} as const satisfies {
+  page: readonly (keyof Page & string)[];
+  context: readonly (keyof BrowserContext & string)[];
+};
+
+/** Makes `object`'s `methods` mark `reused` dirty when called, until the returned function restores them. */
+function watch(object: object, methods: readonly string[], reused: { dirty: boolean }): () => void {
+  const own = object as Record<string, unknown>;
+  for (const name of methods) {
+    const method = own[name] as (...args: unknown[]) => unknown;
+    own[name] = (...args: unknown[]) => {
+      reused.dirty = true;
+      return method.apply(object, args);
+    };
+  }
+  return () => {
+    for (const name of methods) delete own[name];
+  };
+}
+
+/**
+ * Leaves the page as a new one would be for the next test: the keys and the mouse button up, listeners removed,
+ * the origin's storage (local, session, IndexedDB, cookies, caches) cleared, at about:blank. Returns false when
+ * that cannot be promised (a crashed page, or one that ended on another origin, whose session storage stays).
+ */
+async function resetPage(context: BrowserContext, page: Page, origin: string): Promise<boolean> {
+  try {
+    page.removeAllListeners();
+    const url = page.url();
+    if (url.startsWith(origin)) {
+      await page.evaluate(() => {
+        localStorage.clear();
+        sessionStorage.clear();
+      });
+    } else if (url !== 'about:blank') return false;
+    await page.goto('about:blank');
+    for (const key of ['Alt', 'Control', 'Meta', 'Shift']) await page.keyboard.up(key);
+    await page.mouse.up();
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Storage.clearDataForOrigin', {
+      origin,
+      storageTypes: 'cookies,local_storage,indexeddb,service_workers,cache_storage,file_systems,websql',
+    });
+    await cdp.detach();
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * Playwright's test with a page reused across the tests one worker runs in a row, and `harness(name)`.
+ *
+ * `page`: each test gets the worker's page, reset to about:blank with its origin's storage cleared
+ * ({@link resetPage}). Every test still opens its own document: nothing of one test's page reaches the next. A
+ * test that changes more than its document ({@link LASTING}) or fails leaves it to be replaced by a new context.
+ * A page load in the tab of the last one costs the browser less than one in a new context (no new renderer
+ * process; the scripts' compiled code kept).
+ *
+ * `harness(name)`: the harness page shared by the tests one worker runs in a row, so that the page loads, its
+ * renderers are made and SwiftShader compiles their programs and pipelines once rather than once per test.
+ * Tests that count what a fresh page holds (programs, pipelines, console messages since load) or that break the
+ * page (a lost device) open their own with {@link openHarness}.
  */
 export const test = base.extend<
   { harness: (name: string) => Promise<SharedHarness> },
-  { sharedHarnessSlot: { current?: SharedHarness & { key: string } } }
+  {
+    sharedHarnessSlot: { current?: SharedHarness & { key: string } };
+    reusedPageSlot: { current?: ReusedPage };
+  }
 >({
+  reusedPageSlot: [
+    async ({ browser }, use) => {
+      const slot: { current?: ReusedPage } = {};
+      await use(slot);
+      if (browser.isConnected()) await slot.current?.context.close();
+    },
+    { scope: 'worker' },
+  ],
+  page: async (
+    {
+      browser,
+      baseURL,
+      viewport,
+      deviceScaleFactor,
+      colorScheme,
+      hasTouch,
+      isMobile,
+      locale,
+      reducedMotion,
+      reusedPageSlot: slot,
+    },
+    use,
+    testInfo,
+  ) => {
+    // Everything a context is made with but the viewport, which a page can change.
+    const options = { baseURL, deviceScaleFactor, colorScheme, hasTouch, isMobile, locale, reducedMotion };
+    const key = JSON.stringify(options);
+    if (!slot.current || slot.current.key !== key || slot.current.dirty || slot.current.page.isClosed()) {
+      await slot.current?.context.close();
+      const context = await browser.newContext({ ...options, viewport });
+      slot.current = { key, context, page: await context.newPage(), dirty: false };
+    }
+    const reused = slot.current;
+    const { page } = reused;
+    const size = page.viewportSize();
+    if (viewport && (size?.width !== viewport.width || size.height !== viewport.height)) {
+      await page.setViewportSize(viewport);
+    }
+    const unwatch = [watch(page, LASTING.page, reused), watch(reused.context, LASTING.context, reused)];
+    await use(page);
+    for (const restore of unwatch) restore();
+    if (testInfo.status !== testInfo.expectedStatus || page.isClosed()) reused.dirty = true;
+    if (!reused.dirty)
+      reused.dirty = !(await resetPage(reused.context, page, new URL(baseURL ?? 'http://127.0.0.1').origin));
+  },
+  // The context of the test's page (Playwright's own fixture would make another).
+  context: async ({ page }, use) => {
+    await use(page.context());
+  },
   sharedHarnessSlot: [
     async ({ browser }, use) => {
       const slot: { current?: SharedHarness & { key: string } } = {};

@@ -7,10 +7,10 @@
 // pixels whose 3 × 3 neighbourhood is drawn in both pictures: mean max|ΔRGB| ≤ 1/255, max ≤ 3/255; coverage
 // equal everywhere. Gouraud and flat shading light a surface differently from three's per-fragment lighting, so
 // for them only the brightness is checked (looser bound below). Harness: tests/harness/dropin.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 import type { DropinCase, FogKind, GeometryKind, LightSet, RendererKind, RunResult } from './harness/dropin';
-import { openHarness } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 

@@ -1,5 +1,6 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { ImpostorConfig, ImpostorStats, OutlineConfig, OutlineStats } from './harness/outline-impostor';
+import { test } from './harness-helpers';
 
 // The outline and the impostor in any three.js scene (issue 14): createOutline on a SkinnedMesh with a moved
 // bone, a mesh with morph targets at full influence and an InstancedMesh draws the hull around the deformed

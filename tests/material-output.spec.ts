@@ -3,9 +3,9 @@
 // shade() with the other terms zeroed, the attenuation view its formula, the terms add up to the colour, the
 // normal view is three's MeshNormalMaterial's, and 'model' normals are M·n (the lecture's wrong way) exactly as
 // the CPU computes them. Harness: tests/harness/material-output.ts (one page and one renderer per kind per test).
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
-import { openHarness } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 test.use(shadelabUse({ webgpu: true }));
 

@@ -1,6 +1,7 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { Shading } from '@shadelab/material';
 import type { CaseReport, MaterialMode, SwapRun } from './harness/swap';
+import { test } from './harness-helpers';
 
 // Issue 22: swapMaterials on glTF models built in code (three's GLTFExporter, binary GLB) and loaded back with
 // GLTFLoader, nothing downloaded: a textured mesh, a vertex-coloured mesh, a skinned mesh posed by its clip

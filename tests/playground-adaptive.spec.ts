@@ -4,7 +4,8 @@
 // within the budget (p99 ≤ budget, ≤ 0.5 % of the drawn pixels over), every object and instance is listed once
 // in the choices, the heat map draws over the view, and turning it off gives back the exact picture it started
 // from. Where it cannot run (compare view), it says why.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 import { open, picture, settle } from './playground-helpers';
 
 /** Opens the tool's panel and turns adaptive on; waits for the measured error. */

@@ -12,12 +12,13 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSyn
 import { tmpdir } from 'node:os';
 import { join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { compareNeighbourhood, decodePng, type RgbaImage } from '@shadelab/playwright/test';
 import { type CodeVariant, programOf } from '../playground/src/learn/copyCode';
 import { validateState } from '../playground/src/state/schema';
 import { packBuilt } from '../scripts/pack.mjs';
 import { APP_DEPENDENCIES, installedApp, R3F_DEPENDENCIES, run } from '../tools/pack-apps/installed.mjs';
+import { test } from './harness-helpers';
 import { collectPageErrors, serveFiles } from './picture-helpers';
 import { open } from './playground-helpers';
 

@@ -1,4 +1,5 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 import { settle, stateUrl, urlState } from './playground-helpers';
 
 // Embed mode (`?embed`, playground/src/learn/embedStrip.tsx): the canvas and a control strip (shading, lighting,

@@ -1,4 +1,5 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 import { HIDE_OVERLAYS, open, panelAtRest } from './playground-helpers';
 
 // The playground's layout at the two common desktop sizes: canvas on the left, the side column (the leva panel

@@ -1,7 +1,8 @@
 import { gzipSync } from 'node:zlib';
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { PLAYGROUND_FIRST_LOAD_BUDGET_GZIP, PLAYGROUND_LAZY_PARTS } from '../bench/lib/playground-budget.mjs';
 import { STATE_MAX_CHARS } from '../playground/src/state/schema';
+import { test } from './harness-helpers';
 import { HIDE_OVERLAYS, open, picture, settle, stateUrl } from './playground-helpers';
 
 // Issue 24 as a whole (the playground teaches the lecture): what ties its learning tools together.

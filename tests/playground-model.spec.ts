@@ -1,5 +1,6 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { MeshoptEncoder } from 'meshoptimizer';
+import { test } from './harness-helpers';
 import {
   choose,
   frames,

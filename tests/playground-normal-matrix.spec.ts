@@ -5,9 +5,10 @@
 // (M⁻¹)ᵀn = R(n/s) and Mn = R(s∘n) (normalised), the first perpendicular to the tangent M·t and the second not;
 // the two pictures cover the same pixels and differ in shading, each half's pixel at the point = shade() with
 // its own normal (and not with the other's).
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import * as THREE from 'three';
 import { shade } from '../packages/material/src/shade';
+import { test } from './harness-helpers';
 import { open, settle } from './playground-helpers';
 
 const MATERIAL = {

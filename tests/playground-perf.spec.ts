@@ -1,5 +1,6 @@
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { recordBrowser, writeJson } from '../bench/lib/meta.mjs';
+import { test } from './harness-helpers';
 import { settle } from './playground-helpers';
 
 // Time from navigation to the first rendered frame: performance.now() when the first frame was drawn (the page

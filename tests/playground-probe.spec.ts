@@ -1,4 +1,5 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 import { open, picture, settle, stateUrl } from './playground-helpers';
 
 // Issue 24's pixel probe: Alt+click on the object opens a panel with the lecture's equation at that pixel

@@ -1,4 +1,5 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 import { choose, frames, open, picture, settle, urlRotation } from './playground-helpers';
 
 // The learning plots over the canvas (playground/src/learn/): the Mach-band intensity profile and the attenuation

@@ -1,4 +1,5 @@
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
+import { test } from './harness-helpers';
 import { frames, open, settle } from './playground-helpers';
 
 // A long session of random option changes (issue 8): programs stay bounded, the heap stays flat, and no console

@@ -3,8 +3,9 @@
 // GPU's own input: every `shaderSource` call of the page is recorded, and the shown text, compiled as an edit,
 // must give the same active program (three's prefix included, see playground/src/learn/compiledShader.ts) and
 // the same picture as the generated source. WebGPU mode's WGSL: playground-webgpu-flags.spec.ts.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { activeGlsl, isConditional } from '../playground/src/learn/compiledShader';
+import { test } from './harness-helpers';
 import { open, picture, settle } from './playground-helpers';
 
 /** Records every GLSL source the page hands to WebGL, in order (three compiles the vertex stage first). */

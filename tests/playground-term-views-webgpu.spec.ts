@@ -2,8 +2,9 @@
 // (never presented: headless Chromium loses a WebGPU device that presents), on the WebGPU backend with the kit's
 // WebGPU flags, which the page names and the test checks. The colour and term pictures of both halves: see
 // playground-term-views.spec.ts for what is checked.
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
+import { test } from './harness-helpers';
 import { choose, open } from './playground-helpers';
 import { expectSum, TERMS, TWO_LIGHTS } from './playground-term-views-helpers';
 import { readParity } from './playground-webgpu-helpers';

@@ -4,7 +4,8 @@
 // add up to the colour's where it is not clamped. Checked on every pixel of the view, within the rounding of the
 // four 8-bit sRGB pictures, in WebGL mode (single and compare view) and WebGPU mode's WebGL2 backend here; the
 // WebGPU backend in playground-term-views-webgpu.spec.ts.
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
+import { test } from './harness-helpers';
 import { choose, open, urlState } from './playground-helpers';
 import { expectSum, pictures, screen, TWO_LIGHTS } from './playground-term-views-helpers';
 import { toWebGPU } from './playground-webgpu-helpers';

@@ -1,4 +1,5 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 import { HIDE_OVERLAYS, open } from './playground-helpers';
 
 // Visual regression of the canvas (overlays hidden). Renders are pixel-deterministic under SwiftShader with the

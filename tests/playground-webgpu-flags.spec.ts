@@ -4,8 +4,9 @@
 // (Chromium drops the WebGPU instance), which the page reports and survives: the WebGL2 backend takes over on a
 // new canvas, says why, and draws WebGL mode's picture within 2/255 away from edges, with the GLSL in the panel.
 // No uncaught error on the way. Without the flags: playground-webgpu.spec.ts.
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
+import { test } from './harness-helpers';
 import { choose, open, settle, urlState } from './playground-helpers';
 import { expectSamePicture, recordReports, shot, toWebGPU, watchProblems } from './playground-webgpu-helpers';
 

@@ -4,8 +4,9 @@
 // code that draws WebGPU mode, on WebGPURenderer's WebGPU backend, which the page names and the test checks.
 // Every scene of the picker (the user's model too) and the impostor are drawn within a stated bound of WebGL
 // mode's picture away from edges, and the numbers shown equal a recomputation from the two read-backs.
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
+import { test } from './harness-helpers';
 import { open, settle, urlState } from './playground-helpers';
 import { awayFromEdges, parityNumbers, readParity, watchProblems } from './playground-webgpu-helpers';
 

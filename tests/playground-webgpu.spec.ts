@@ -3,8 +3,9 @@
 // node material, shows the node material's GLSL, applies edits live, and switching back restores WebGL mode's
 // picture and settings exactly. three/webgpu is loaded only when WebGPU mode is chosen. With the WebGPU flags:
 // playground-webgpu-flags.spec.ts.
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import type { RgbaImage } from '@shadelab/playwright/test';
+import { test } from './harness-helpers';
 import { choose, open, picture, settle, stateUrl, typeInto, urlState } from './playground-helpers';
 import {
   awayFromEdges,

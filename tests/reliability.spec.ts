@@ -1,5 +1,6 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { LeakReport } from './harness/leaks';
+import { test } from './harness-helpers';
 import { choose, frames, open, picture, settle, stateUrl, typeInto, urlState } from './playground-helpers';
 
 // Issue 8: a library that people embed must never take their page down. The playground's own spec already

@@ -1,4 +1,5 @@
-import { expect, type Locator, type Page, test } from '@playwright/test';
+import { expect, type Locator, type Page } from '@playwright/test';
+import { test } from './harness-helpers';
 
 // The harness canvas is 400 × 300 CSS px at (50, 50): its centre is (250, 200), the ball radius 150 px.
 const CX = 250;

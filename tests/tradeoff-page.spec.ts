@@ -1,8 +1,9 @@
 // The trade-off page: live heat map against the reference, the measured Pareto chart with the current
 // choice marked, picking the cheapest option for a target, and the scene taken from the playground's URL state.
-import { expect, test } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { chooseSphereDetail, silhouetteErrorScalePx } from '@shadelab/sphere/detail';
 import { Matrix4, PerspectiveCamera } from 'three';
+import { test } from './harness-helpers';
 
 test('trade-off page: live error of the current option, chart, cheapest pick', async ({ page }) => {
   const errors: string[] = [];
