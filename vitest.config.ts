@@ -25,6 +25,10 @@ export default defineConfig({
     ],
     environment: 'node',
     testTimeout: 60_000,
+    // One module graph per worker, not one per file: three, the packages and fast-check are imported once. No test
+    // file relies on a fresh graph: each makes its own scenes and materials, restores its spies, and vi.mock stays
+    // within its file.
+    isolate: false,
     // Every fast-check property runs from one fixed seed (SHADELAB_FUZZ_SEED overrides it; see npm run fuzz).
     setupFiles: [fileURLToPath(new URL('./test-utils/fastCheckSeed.ts', import.meta.url))],
   },
