@@ -182,6 +182,9 @@ export const test = base.extend<
     const options = { baseURL, deviceScaleFactor, colorScheme, hasTouch, isMobile, locale, reducedMotion };
     const key = JSON.stringify(options);
     if (!slot.current || slot.current.key !== key || slot.current.dirty || slot.current.page.isClosed()) {
+      // A new context's first page load is every later test's set-up too: it gets its own two minutes, as a
+      // shared harness's does.
+      testInfo.setTimeout(testInfo.timeout + 120_000);
       await slot.current?.context.close();
       const context = await browser.newContext({ ...options, viewport });
       slot.current = { key, context, page: await context.newPage(), dirty: false };
