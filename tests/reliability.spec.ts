@@ -35,7 +35,7 @@ test.describe('no leaks: create, render and dispose 1,000 times', () => {
   ];
   for (const [kind, cycles] of runs) {
     test(`${kind} × ${cycles}: memory, programs and listeners back to their baseline`, async ({ page }) => {
-      test.setTimeout(300_000); // 1,000 cycles, each drawn: the longest of these under the gate's load is its quarter
+      test.setTimeout(300_000); // 1,000 cycles, each drawn and read back
       const seen = watch(page);
       await page.goto('/harness/leaks.html');
       await expect(page.getByTestId('viewport')).toHaveAttribute('data-ready', 'true');
