@@ -1,4 +1,5 @@
 import { type BrowserContext, test as base, type Page } from '@playwright/test';
+import { shadelabUse } from '@shadelab/playwright';
 
 /**
  * Records how long a page took to load (from `goto` until it said it was ready) as the test's `page-load`
@@ -229,4 +230,17 @@ export const test = base.extend<
       return slot.current;
     });
   },
+});
+
+/**
+ * {@link test} in Chromium launched with the kit's WebGPU flags (`shadelabUse({ webgpu: true })`). A spec that
+ * takes this rather than calling `test.use` itself shares its workers with every other spec that does: Playwright
+ * starts a new worker (and browser) for each set of fixtures, and a `test.use` in a file is a set of its own.
+ */
+export const webgpuTest = test.extend({
+  launchOptions: [
+    // biome-ignore lint/correctness/noEmptyPattern: Playwright reads a fixture's dependencies from its first parameter.
+    async ({}, use) => use(shadelabUse({ webgpu: true }).launchOptions),
+    { scope: 'worker' },
+  ],
 });

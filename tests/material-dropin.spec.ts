@@ -8,11 +8,8 @@
 // equal everywhere. Gouraud and flat shading light a surface differently from three's per-fragment lighting, so
 // for them only the brightness is checked (looser bound below). Harness: tests/harness/dropin.ts.
 import { expect, type Page } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
 import type { DropinCase, FogKind, GeometryKind, LightSet, RendererKind, RunResult } from './harness/dropin';
-import { openHarness, test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { openHarness, webgpuTest as test } from './harness-helpers';
 
 interface Harness {
   run(renderer: RendererKind, cases: DropinCase[]): Promise<RunResult>;

@@ -4,10 +4,7 @@
 // normal view is three's MeshNormalMaterial's, and 'model' normals are M·n (the lecture's wrong way) exactly as
 // the CPU computes them. Harness: tests/harness/material-output.ts (one page and one renderer per kind per test).
 import { expect, type Page } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
-import { openHarness, test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { openHarness, webgpuTest as test } from './harness-helpers';
 
 type RendererKind = 'gl' | 'webgpu' | 'webgl2';
 type Shading = 'flat' | 'gouraud' | 'phong';

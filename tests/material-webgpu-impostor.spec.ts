@@ -3,10 +3,7 @@
 // SphereImpostorMaterial in the same scene (coverage and colours), its depth against a mesh box and a subdivided
 // mesh sphere, and its bad-input errors against SphereImpostorMaterial's. Harness: tests/harness/webgpu-impostor.ts.
 import { expect } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
-import { test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { webgpuTest as test } from './harness-helpers';
 
 type Backend = 'webgpu' | 'webgl2';
 type Scenario =

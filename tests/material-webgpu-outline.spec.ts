@@ -4,11 +4,8 @@
 // same renderer: where the outline is) and against WebGLRenderer + createOutline's OutlineMaterial in the same
 // scene (the same coverage). Harness: tests/harness/webgpu-outline.ts.
 import { expect, type Page } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
 import type { Backend, Instance, OutlineConfig, WebGPUOutlineHarness } from './harness/webgpu-outline';
-import { test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { webgpuTest as test } from './harness-helpers';
 
 /** Opens the harness; returns the page errors and console errors seen (none are expected). */
 

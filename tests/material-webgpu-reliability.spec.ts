@@ -5,11 +5,8 @@
 // each kind (compiled, finite, pipelines bounded), a lost device, 1,000 create/dispose cycles of the node
 // materials, and 1,000 feature flips. Harness: tests/harness/webgpu-reliability.ts.
 import { expect, type Page } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
 import type { Backend, LightKind, WebGPUReliabilityHarness } from './harness/webgpu-reliability';
-import { openHarness, test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { openHarness, webgpuTest as test } from './harness-helpers';
 
 /** Opens the harness; returns the page errors and console errors seen. */
 const open = (page: Page): Promise<string[]> => openHarness(page, 'webgpu-reliability');

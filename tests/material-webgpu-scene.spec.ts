@@ -5,11 +5,8 @@
 // is drawn, three's MeshPhongNodeMaterial on the same WebGPURenderer; flat shading by derivatives against shade()
 // per fragment with the deformed face's normal. Harness: tests/harness/webgpu-scene.ts.
 import { expect, type Page } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
 import type { Diff, SceneCase, WebGPUSceneHarness } from './harness/webgpu-scene';
-import { openHarness, test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { openHarness, webgpuTest as test } from './harness-helpers';
 
 type Harness = WebGPUSceneHarness;
 const BACKENDS = ['webgpu', 'webgl2'] as const;

@@ -4,10 +4,7 @@
 // scene against WebGLRenderer + ShadingMaterial, and the bad-input errors against ShadingMaterial's.
 // Harness: tests/harness/webgpu-material.ts.
 import { expect } from '@playwright/test';
-import { shadelabUse } from '@shadelab/playwright';
-import { test } from './harness-helpers';
-
-test.use(shadelabUse({ webgpu: true }));
+import { webgpuTest as test } from './harness-helpers';
 
 type Backend = 'webgpu' | 'webgl2';
 type Scenario =
