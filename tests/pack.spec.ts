@@ -8,6 +8,7 @@
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
 import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { connect } from 'node:net';
 import { tmpdir } from 'node:os';
 import { dirname, join, normalize, posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -169,16 +170,18 @@ async function makeApp(app: App): Promise<void> {
     },
   };
   writeFileSync(join(dir, 'package.json'), `${JSON.stringify(pkg, null, 2)}\n`);
-  if (app === 'r3f') {
-    // The very install tests/playground-copy-code.spec.ts asks for (these tarballs and dependencies): one for both.
+  if (app === 'playwright') {
+    // The testing guide's app installs Playwright, which no other app has: an install of its own.
+    await timed(`${app}: npm install`, () =>
+      run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel', 'error'], dir),
+    );
+  } else {
+    // One install for the apps with the same tarballs and dependencies (the vanilla app and the Quick start's;
+    // the R3F app and tests/playground-copy-code.spec.ts's), linked into each app folder.
     const shared = await timed(`${app}: npm install (shared)`, () =>
       installedApp({ dependencies, tarballs: installed }),
     );
     symlinkSync(join(shared, 'node_modules'), join(dir, 'node_modules'), 'dir');
-  } else {
-    await timed(`${app}: npm install`, () =>
-      run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel', 'error'], dir),
-    );
   }
   await timed(`${app}: tsc --noEmit`, () => run('npx', ['--no-install', 'tsc', '--noEmit', '-p', '.'], dir));
   await timed(`${app}: vite build`, () =>
@@ -485,6 +488,18 @@ function runAppPlaywright(dir: string, args: string[], env: Record<string, strin
   });
 }
 
+/** Whether something accepts connections on 127.0.0.1:`port`. */
+function listening(port: number): Promise<boolean> {
+  return new Promise((resolve) => {
+    const socket = connect(port, '127.0.0.1');
+    socket.once('connect', () => {
+      socket.destroy();
+      resolve(true);
+    });
+    socket.once('error', () => resolve(false));
+  });
+}
+
 interface ReportTest {
   title: string;
   status: string;
@@ -519,7 +534,12 @@ test("docs/testing.md's app, from the tarballs, runs its visual tests with its o
   expect(
     readFileSync(join(dir, 'tests', '__screenshots__', 'scene.spec.ts', 'lecture.png')).length,
   ).toBeGreaterThan(0);
-  // Then every test, as CI runs them: the failing one fails the run.
+  // Then every test, as CI runs them: the failing one fails the run. Its web server takes the same port, once the
+  // first run's has let it go.
+  const port = Number(
+    /const port = (\d+)/.exec(readFileSync(join(dir, 'playwright.config.ts'), 'utf8'))?.[1],
+  );
+  await expect.poll(() => listening(port), { timeout: 30_000, message: `port ${port} freed` }).toBe(false);
   const report = join(dir, 'report.json');
   const all = await timed('playwright app: second run', () =>
     runAppPlaywright(dir, ['--reporter=json'], { PLAYWRIGHT_JSON_OUTPUT_NAME: report }),
@@ -528,7 +548,7 @@ test("docs/testing.md's app, from the tarballs, runs its visual tests with its o
   const tests = reportTests(JSON.parse(readFileSync(report, 'utf8')));
   const guide = tests.find((t) => t.file === 'scene.spec.ts');
   const failing = tests.find((t) => t.file === 'deliberately-failing.spec.ts');
-  expect(guide?.status, JSON.stringify(guide?.results[0]?.errors)).toBe('expected');
+  expect(guide?.status, all.out + JSON.stringify(guide?.results[0]?.errors)).toBe('expected');
   expect(failing?.status).toBe('unexpected');
   const result = failing!.results[0];
   expect(result.errors[0].message).toContain('The canvas differs from the exact reference beyond the budget');

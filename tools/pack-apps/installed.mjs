@@ -2,7 +2,8 @@
 // Playwright run that asks for the same tarballs and dependencies, and by later runs while they stay the same
 // (the folder is named by a hash of the tarballs' bytes and the dependency list). A spec makes its own app folder
 // and links its node_modules here, so no spec pays for a second `npm install` of the same app
-// (tests/playground-copy-code.spec.ts and tests/pack.spec.ts's R3F app share one).
+// (tests/playground-copy-code.spec.ts and tests/pack.spec.ts's R3F app share one; pack.spec.ts's vanilla and Quick
+// start apps another).
 import { spawn } from 'node:child_process';
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -32,8 +33,11 @@ export const INSTALLS = join(tmpdir(), 'shadelab-pack-apps');
 
 /** An install not used for this long is removed by the next {@link installedApp} (ms). */
 const STALE_MS = 24 * 3600 * 1000;
-/** Installs kept (the one in use included). */
-const KEEP = 2;
+/**
+ * Installs kept (the one in use included): a run of tests/pack.spec.ts uses three (the vanilla and Quick start
+ * apps', the oldest three's, the R3F app's), so two runs' worth.
+ */
+const KEEP = 6;
 /** A lock older than this is taken to be left by a killed run (ms). */
 const LOCK_MS = 15 * 60 * 1000;
 
