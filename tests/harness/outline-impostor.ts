@@ -8,35 +8,36 @@ import { eyeOf, linearToSrgb8, PhongLight, type ShadeLight, shade } from '@shade
 import { createImpostorQuad, SphereImpostor, SphereImpostorMaterial } from '@shadelab/material/impostor';
 import { createOutline } from '@shadelab/material/outline';
 import {
-  BackSide,
-  Bone,
-  BufferAttribute,
-  BufferGeometry,
+  type BufferGeometry,
   type Camera,
   Color,
-  Euler,
-  Float32BufferAttribute,
   Fog,
   InstancedMesh,
   Matrix3,
   Matrix4,
-  Mesh,
   MeshBasicMaterial,
   MeshPhongMaterial,
   PerspectiveCamera,
   Plane,
-  Quaternion,
   Raycaster,
   Scene,
-  Skeleton,
-  SkinnedMesh,
-  SphereGeometry,
   Vector2,
   Vector3,
   Vector4,
   WebGLRenderer,
 } from 'three';
-import { deformNormal, instanceSkinned, skinnedCylinder } from './lib/deform';
+import {
+  CLEAR,
+  classify,
+  compareClasses,
+  cpuHull,
+  type Instance,
+  instanceMatrix,
+  type OutlineConfig,
+  type OutlineGeometries,
+  outlinedObject,
+  outlineGeometries,
+} from './lib/outlineOracle';
 import { hasRgb, readCanvas } from './lib/pixels';
 import { sphereGeometry } from './material-sphere';
 
@@ -45,8 +46,6 @@ if (canvas === null) throw new Error('no #viewport canvas');
 const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
 renderer.setPixelRatio(1);
 renderer.setClearColor(0x0000ff, 1);
-/** The clear colour in RGB: where nothing was drawn. */
-const CLEAR = [0, 0, 255] as const;
 
 let logRenderer: WebGLRenderer | null = null;
 
@@ -80,35 +79,7 @@ function readPixels(scene: Scene, camera: Camera, size: number, r = renderer): U
   return readCanvas(r, size);
 }
 
-/** One instance: position, Euler rotation, scale. */
-export interface Instance {
-  position: readonly [number, number, number];
-  rotation?: readonly [number, number, number];
-  scale?: readonly [number, number, number];
-  /** instanceColor (linear). */
-  color?: readonly [number, number, number];
-}
-
-function instanceMatrix(instance: Instance): Matrix4 {
-  return new Matrix4().compose(
-    new Vector3(...instance.position),
-    new Quaternion().setFromEuler(new Euler(...(instance.rotation ?? [0, 0, 0]))),
-    new Vector3(...(instance.scale ?? [1, 1, 1])),
-  );
-}
-
 // ---- The outline of deformed and instanced meshes ------------------------------------------------------
-
-export interface OutlineConfig {
-  /** What is outlined. */
-  object: 'mesh' | 'skinned' | 'morphed' | 'instanced' | 'instanced-morphed' | 'instanced-skinned';
-  /** Outline width, world units. */
-  thickness: number;
-  /** The skinned cylinder's second bone about z, radians. @default 0.9 */
-  bone?: number;
-  instances?: readonly Instance[];
-  size?: number;
-}
 
 export interface OutlineStats {
   /** Pixels of the outline's colour (pure black) in our picture and in the oracle's. */
@@ -123,94 +94,9 @@ export interface OutlineStats {
   staleMismatches: number;
 }
 
-/** A smooth sphere with one morph target: stretched to (1.6, 0.8, 1.2), normals to match. */
-function morphedSphere(): BufferGeometry {
-  const g = new SphereGeometry(1, 48, 24);
-  const position = g.getAttribute('position');
-  const k = [1.6, 0.8, 1.2];
-  const p = new Float32Array(3 * position.count);
-  const n = new Float32Array(3 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const [x, y, z] = [position.getX(i), position.getY(i), position.getZ(i)];
-    p.set([x * k[0], y * k[1], z * k[2]], 3 * i);
-    const l = Math.hypot(x / k[0], y / k[1], z / k[2]);
-    n.set([x / k[0] / l, y / k[1] / l, z / k[2] / l], 3 * i);
-  }
-  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
-  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
-  return g;
-}
+export type { Instance, OutlineConfig };
 
-/** The object-space normal of `vertex` as three's vertex chunks move it (morph normals, then the skin matrix). */
-function deformedNormal(object: Mesh, vertex: number, deformed: boolean, target: Vector3): Vector3 {
-  const geometry = object.geometry;
-  target.fromBufferAttribute(geometry.getAttribute('normal'), vertex);
-  if (!deformed) return target;
-  return deformNormal(object, geometry, vertex, target);
-}
-
-/**
- * The inverted hull on the CPU, in world space: each vertex of each instance, deformed as three deforms it
- * (`getVertexPosition`: morph targets, then bones), through the instance and object matrices, pushed out by
- * `thickness` along its unit world normal (the inverse transpose of each matrix). `deformed: false` builds the
- * hull of the raw geometry at the object's origin (what the outline drew before it followed the mesh).
- */
-function cpuHull(object: Mesh, matrices: Matrix4[], thickness: number, deformed: boolean): Mesh {
-  const geometry = object.geometry;
-  const count = geometry.getAttribute('position').count;
-  const out = new Float32Array(3 * count * matrices.length);
-  const p = new Vector3();
-  const n = new Vector3();
-  const objectNormal = new Matrix3().getNormalMatrix(object.matrixWorld);
-  const index: number[] = [];
-  const source = geometry.index;
-  matrices.forEach((instance, k) => {
-    const instanceNormal = new Matrix3().getNormalMatrix(instance);
-    for (let i = 0; i < count; i++) {
-      if (deformed) object.getVertexPosition(i, p);
-      else p.fromBufferAttribute(geometry.getAttribute('position'), i);
-      deformedNormal(object, i, deformed, n);
-      p.applyMatrix4(instance).applyMatrix4(object.matrixWorld);
-      n.applyMatrix3(instanceNormal).applyMatrix3(objectNormal).normalize();
-      p.addScaledVector(n, thickness);
-      p.toArray(out, 3 * (k * count + i));
-    }
-    if (source !== null) for (let j = 0; j < source.count; j++) index.push(k * count + source.getX(j));
-  });
-  const hull = new BufferGeometry();
-  hull.setAttribute('position', new BufferAttribute(out, 3));
-  if (source !== null) hull.setIndex(index);
-  const mesh = new Mesh(hull, new MeshBasicMaterial({ color: 0x000000, side: BackSide }));
-  mesh.frustumCulled = false;
-  return mesh;
-}
-
-/** 0 clear (the blue background), 1 the outline (black), 2 the mesh. */
-function classify(p: Uint8Array, i: number): number {
-  if (hasRgb(p, 4 * i, CLEAR)) return 0;
-  if (p[4 * i] === 0 && p[4 * i + 1] === 0 && p[4 * i + 2] === 0) return 1;
-  return 2;
-}
-
-/** Our picture against the oracle's: pixels away from the oracle's class edges, and how many differ. */
-function compareClasses(ours: Uint8Array, theirs: Uint8Array, size: number): [number, number] {
-  let compared = 0;
-  let mismatches = 0;
-  for (let y = 1; y < size - 1; y++) {
-    for (let x = 1; x < size - 1; x++) {
-      const i = y * size + x;
-      const c = classify(theirs, i);
-      let uniform = true;
-      for (let dy = -1; uniform && dy <= 1; dy++)
-        for (let dx = -1; uniform && dx <= 1; dx++)
-          if (classify(theirs, i + dy * size + dx) !== c) uniform = false;
-      if (!uniform) continue;
-      compared++;
-      if (classify(ours, i) !== c) mismatches++;
-    }
-  }
-  return [compared, mismatches];
-}
+let geometries: OutlineGeometries | undefined;
 
 /**
  * A red MeshBasicMaterial object with `createOutline`'s black hull, against the same object with the CPU hull
@@ -219,60 +105,26 @@ function compareClasses(ours: Uint8Array, theirs: Uint8Array, size: number): [nu
 function outlineCompare(config: OutlineConfig): OutlineStats {
   const size = config.size ?? 192;
   const camera = makeCamera(size);
+  geometries ??= outlineGeometries();
   const body = new MeshBasicMaterial({ color: 0xff0000 });
-  const specs = config.instances ?? [{ position: [0, 0, 0] }];
-  let object: Mesh;
-  let matrices = [new Matrix4()];
-  if (config.object === 'skinned' || config.object === 'instanced-skinned') {
-    const mesh = new SkinnedMesh(skinnedCylinder(0.5, 24, 12), body);
-    const root = new Bone();
-    root.position.set(0, -1.5, 0);
-    const joint = new Bone();
-    joint.position.set(0, 1.5, 0);
-    root.add(joint);
-    mesh.add(root);
-    mesh.bind(new Skeleton([root, joint]));
-    joint.rotation.z = config.bone ?? 0.9;
-    mesh.rotation.y = 0.3;
-    if (config.object === 'instanced-skinned') {
-      matrices = specs.map(instanceMatrix);
-      instanceSkinned(mesh, matrices);
-      mesh.frustumCulled = false;
-    }
-    object = mesh;
-  } else if (config.object === 'morphed') {
-    object = new Mesh(morphedSphere(), body);
-    object.morphTargetInfluences = [1];
-    object.rotation.set(0.2, 0.4, 0);
-  } else if (config.object === 'instanced' || config.object === 'instanced-morphed') {
-    const geometry = config.object === 'instanced' ? new SphereGeometry(1, 48, 24) : morphedSphere();
-    const mesh = new InstancedMesh(geometry, body, specs.length);
-    matrices = specs.map(instanceMatrix);
-    matrices.forEach((m, i) => {
-      mesh.setMatrixAt(i, m);
-    });
-    if (config.object === 'instanced-morphed') {
-      mesh.morphTargetInfluences = [1];
-      for (let i = 0; i < specs.length; i++) mesh.setMorphAt(i, mesh);
-      if (mesh.morphTexture) mesh.morphTexture.needsUpdate = true;
-    }
-    mesh.scale.set(1.1, 1, 1);
-    object = mesh;
-  } else {
-    object = new Mesh(new SphereGeometry(1, 48, 24), body);
-    object.scale.set(1.5, 1, 1.5);
-  }
+  const { object, matrices } = outlinedObject(config, body, geometries);
   const scene = new Scene();
   scene.add(object);
   const outline = createOutline(object, { thickness: config.thickness, color: 0 });
   scene.updateMatrixWorld();
   const ours = readPixels(scene, camera, size);
   outline.visible = false;
-  const oracleHull = cpuHull(object, matrices, config.thickness, true);
+  const oracleHull = cpuHull(object, matrices, config.thickness, true, new MeshBasicMaterial({ color: 0 }));
   scene.add(oracleHull);
   const theirs = readPixels(scene, camera, size);
   scene.remove(oracleHull);
-  const staleHull = cpuHull(object, [new Matrix4()], config.thickness, false);
+  const staleHull = cpuHull(
+    object,
+    [new Matrix4()],
+    config.thickness,
+    false,
+    new MeshBasicMaterial({ color: 0 }),
+  );
   scene.add(staleHull);
   const stale = readPixels(scene, camera, size);
   const stats: OutlineStats = {
