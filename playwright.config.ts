@@ -33,7 +33,7 @@ export default defineConfig(shadelabPreset(), {
   ],
   webServer: {
     // Each port builds into its own folder, so parallel runs (and `npm start`) never share an output: the
-    // playground, then the tests' harness pages (tests/harness/, at /harness/<name>.html) beside it, one server
+    // playground, then the tests' harness pages (tests/harness/, at /harness/?page=<name>) beside it, one server
     // (scripts/e2e-build.mjs); with SHADELAB_E2E_BUILT set (`npm test` builds in a stage of its own) it serves
     // that build as it is.
     command: [

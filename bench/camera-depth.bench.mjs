@@ -13,7 +13,7 @@
 //
 // A quick check of one cell: --modes standard --ratios 1e6 --distances 1e4 --per-decade 2 --no-timing
 //
-// Builds the harness pages (tests/harness/camera.html among them) into a temporary folder and serves them on
+// Builds the harness pages (tests/harness/, the camera page among them) into a temporary folder and serves them on
 // its own port (lib/browser.mjs).
 import { arg, summarize, writeResults } from './lib/bench.mjs';
 import { openPlayground } from './lib/browser.mjs';
@@ -38,7 +38,7 @@ const playground = await openPlayground();
 const browser = playground.browser;
 try {
   const page = await browser.newPage();
-  await page.goto(playground.url('harness/camera.html'));
+  await page.goto(playground.url('harness/?page=camera'));
   await page.waitForFunction(() => document.getElementById('viewport')?.dataset.ready === 'true');
   const allModes = await page.evaluate(() => window.cameraDepth.modes);
   const only = arg('--modes', '');

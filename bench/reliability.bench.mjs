@@ -116,7 +116,7 @@ const afterWarmUp = samples[0]?.heapMiB ?? 0;
 const atEnd = samples.at(-1)?.heapMiB ?? 0;
 
 // The leaks harness at the full count (the program-compiling kind at 1,000: ~20 ms a compile).
-await page.goto(playground.url('harness/leaks.html'));
+await page.goto(playground.url('harness/?page=leaks'));
 await page.waitForFunction(() => document.getElementById('viewport')?.dataset.ready === 'true');
 /** @type {Record<string, unknown>} */
 const leaks = {};

@@ -31,7 +31,7 @@ const loadBefore = loadavg();
 const playground = await openPlayground();
 const browser = playground.browser;
 const page = await browser.newPage({ viewport: { width: WIDTH, height: HEIGHT } });
-await page.goto(playground.url('harness/tradeoff.html'));
+await page.goto(playground.url('harness/?page=tradeoff'));
 await page.waitForFunction(() => document.body.dataset.ready === '1');
 
 /** @typedef {import('../playground/src/tradeoff/tradeoffScene').TradeOption} TradeOption */

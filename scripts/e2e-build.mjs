@@ -1,5 +1,5 @@
 // The pages Playwright serves: the playground, then the tests' harness pages (tests/harness/, at
-// /harness/<name>.html) beside it, in playground/dist-e2e-<port>. `npm test` runs this as a stage of its own, so
+// /harness/?page=<name>) beside it, in playground/dist-e2e-<port>. `npm test` runs this as a stage of its own, so
 // that the build's time is measured apart from the tests', and sets SHADELAB_E2E_BUILT for Playwright, whose web
 // server (playwright.config.ts) then serves this build instead of building again.
 //

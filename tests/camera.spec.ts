@@ -2,8 +2,8 @@ import { expect, type Locator } from '@playwright/test';
 import type {} from './harness/camera';
 import { test } from './harness-helpers';
 
-// tests/harness/camera.html: a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's Camera,
-// moved by CameraMovement (moveSpeed 0.5, turnSpeed 0.005); window.cameraDepth probes depth order per mode.
+// The harness page camera (tests/harness/camera.ts): a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's
+// Camera, moved by CameraMovement (moveSpeed 0.5, turnSpeed 0.005); window.cameraDepth probes depth order per mode.
 
 async function state(canvas: Locator) {
   return canvas.evaluate((el: HTMLCanvasElement) => ({
@@ -15,7 +15,7 @@ async function state(canvas: Locator) {
 }
 
 async function open(page: import('@playwright/test').Page) {
-  await page.goto('/harness/camera.html');
+  await page.goto('/harness/?page=camera');
   const canvas = page.getByTestId('viewport');
   await expect(canvas).toHaveAttribute('data-ready', 'true');
   await expect(canvas).toHaveAttribute('data-frames', '1');

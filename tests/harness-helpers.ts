@@ -14,7 +14,7 @@ export async function timedLoad(load: () => Promise<unknown>): Promise<void> {
 }
 
 /**
- * Opens a harness page (`/harness/<name>.html`) and waits until it says it is ready; returns the page errors and
+ * Opens a harness page (`/harness/?page=<name>`, tests/harness/main.ts) and waits until it says it is ready; returns the page errors and
  * console errors seen while the test runs (none are expected; the browser's favicon 404 is not one).
  */
 export async function openHarness(page: Page, name: string): Promise<string[]> {
@@ -25,7 +25,7 @@ export async function openHarness(page: Page, name: string): Promise<string[]> {
       problems.push(m.text());
   });
   await timedLoad(async () => {
-    await page.goto(`/harness/${name}.html`);
+    await page.goto(`/harness/?page=${name}`);
     await page.waitForFunction(() => document.body.dataset.ready === '1');
   });
   return problems;

@@ -8,7 +8,7 @@ import { test } from './harness-helpers';
 // by three's MeshBasicMaterial. Runs in headless Chromium (SwiftShader) on the outline-impostor harness page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/outline-impostor.html');
+  await page.goto('/harness/?page=outline-impostor');
   await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
 }
 

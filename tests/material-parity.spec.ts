@@ -16,7 +16,7 @@ let shared: Page | undefined;
 async function harness(browser: Browser, baseURL: string | undefined): Promise<Page> {
   if (shared === undefined || shared.isClosed()) {
     shared = await browser.newPage({ baseURL });
-    await shared.goto('/harness/parity-rows.html');
+    await shared.goto('/harness/?page=parity-rows');
   }
   return shared;
 }

@@ -7,7 +7,7 @@ import { test } from './harness-helpers';
 // shadow (same shadow map, same chunks); colours are shade() with the light's colour times three's shadow factor.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/material-shadow.html');
+  await page.goto('/harness/?page=material-shadow');
   await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
 }
 

@@ -11,7 +11,7 @@ import { test } from './harness-helpers';
 // or behind a blended pixel), on the material harness page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/material.html');
+  await page.goto('/harness/?page=material');
   await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
 }
 

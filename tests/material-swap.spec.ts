@@ -19,7 +19,7 @@ async function open(page: Page): Promise<string[]> {
   page.on('console', (m) => {
     if (m.type() === 'error') errors.push(m.text());
   });
-  await page.goto('/harness/swap.html');
+  await page.goto('/harness/?page=swap');
   await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
   return errors;
 }

@@ -7,7 +7,7 @@ import { test } from './harness-helpers';
 // with ShadingMaterial in headless Chromium (SwiftShader) and compared with shade() in the page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/material.html');
+  await page.goto('/harness/?page=material');
   await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
 }
 

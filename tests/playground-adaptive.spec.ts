@@ -88,7 +88,7 @@ test('a loaded glTF model: its meshes listed, within the budget', async ({ page 
   test.setTimeout(90_000);
   await open(page);
   const maker = await page.context().newPage();
-  await maker.goto('/harness/gltf-maker.html');
+  await maker.goto('/harness/?page=gltf-maker');
   await maker.waitForFunction(() => typeof window.makeModel === 'function');
   const bytes = Buffer.from(await maker.evaluate(() => window.makeModel('vertexColours')));
   await maker.close();

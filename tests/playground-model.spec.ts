@@ -28,7 +28,7 @@ async function model(page: Page, kind: Kind): Promise<Buffer> {
   const cached = made.get(kind);
   if (cached) return cached;
   const maker = await page.context().newPage();
-  await maker.goto('/harness/gltf-maker.html');
+  await maker.goto('/harness/?page=gltf-maker');
   await maker.waitForFunction(() => typeof window.makeModel === 'function');
   const bytes = Buffer.from(await maker.evaluate((k) => window.makeModel(k), kind));
   await maker.close();

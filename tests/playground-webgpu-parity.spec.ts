@@ -15,7 +15,7 @@ test.use(shadelabUse({ webgpu: true, args: ['--shadelab-own-browser=playground-w
 /** A model's GLB made by three's GLTFExporter in the harness page (as tests/playground-model.spec.ts makes it). */
 async function texturedModel(page: Page): Promise<Buffer> {
   const maker = await page.context().newPage();
-  await maker.goto('/harness/gltf-maker.html');
+  await maker.goto('/harness/?page=gltf-maker');
   await maker.waitForFunction(
     () => typeof (window as unknown as { makeModel?: unknown }).makeModel === 'function',
   );

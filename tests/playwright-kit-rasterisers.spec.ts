@@ -34,7 +34,7 @@ test.use({
 });
 
 test('the browser draws WebGL with the project’s rasteriser, and gives WebGPU', async ({ page }, info) => {
-  await page.goto('/harness/kit-renderers.html');
+  await page.goto('/harness/?page=kit-renderers');
   const rasteriser = rasteriserOf(info.project.use);
   const gl = await expectBackend(page, 'webgl2', { rasteriser });
   if (rasteriser === 'llvmpipe') expect(gl.description).toMatch(/llvmpipe .*OpenGL 4\.5/);
@@ -54,7 +54,7 @@ test('the lecture scene in each shading matches SwiftShader’s baseline within 
 }, info) => {
   const llvmpipe = rasteriserOf(info.project.use) === 'llvmpipe';
   for (const { name, options, hardEdges } of scenes) {
-    await page.goto(`/harness/kit.html?scene=${encodeURIComponent(JSON.stringify(options))}`);
+    await page.goto(`/harness/?page=kit&scene=${encodeURIComponent(JSON.stringify(options))}`);
     const canvas = page.getByTestId('viewport');
     await expect(canvas).toHaveRendered({ timeout: 30_000 });
     const file = `rasteriser-${name}.png`;
@@ -72,7 +72,7 @@ test('the lecture scene in each shading matches SwiftShader’s baseline within 
 test('toMatchAcrossRenderers: three’s MeshPhongMaterial and the lecture’s ShadingMaterial match on every renderer', async ({
   page,
 }) => {
-  await page.goto('/harness/kit-renderers.html');
+  await page.goto('/harness/?page=kit-renderers');
   await expect(page).toMatchAcrossRenderers(
     ({ THREE, width, height }) => {
       const scene = new THREE.Scene();

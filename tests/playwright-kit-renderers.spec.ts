@@ -25,7 +25,7 @@ let shared: Page | undefined;
 async function harness(browser: Browser, baseURL: string | undefined): Promise<Page> {
   if (shared === undefined || shared.isClosed()) {
     shared = await browser.newPage({ baseURL });
-    await shared.goto('/harness/kit-renderers.html');
+    await shared.goto('/harness/?page=kit-renderers');
   }
   return shared;
 }
@@ -147,7 +147,7 @@ test('WebGPU stubbed away: expectBackend fails, and the matcher fails on the fal
       Object.defineProperty(Navigator.prototype, 'gpu', { get: () => undefined }),
     );
     const page = await context.newPage();
-    await page.goto('/harness/kit-renderers.html');
+    await page.goto('/harness/?page=kit-renderers');
     expect(await failure(expectBackend(page, 'webgpu'))).toContain(
       "expectBackend(page, 'webgpu'): the browser cannot give webgpu: navigator.gpu is undefined",
     );

@@ -13,7 +13,7 @@ import { buildKitScene, type KitSceneOptions } from './harness/kitScene';
 
 /** Open the harness drawing `options`; resolves when it has drawn. */
 async function openKit(page: Page, options: KitSceneOptions = {}) {
-  await page.goto(`/harness/kit.html?scene=${encodeURIComponent(JSON.stringify(options))}`);
+  await page.goto(`/harness/?page=kit&scene=${encodeURIComponent(JSON.stringify(options))}`);
   const canvas = page.getByTestId('viewport');
   await expect(canvas).toHaveRendered({ timeout: 30_000 }); // a loaded machine is slow to compile
   return canvas;
@@ -271,7 +271,7 @@ test.describe('expectBackend and toMatchAcrossRenderers without the WebGPU flag'
   test('expectBackend(page, "webgpu") fails saying which flag is missing; the matcher fails on the fallback', async ({
     page,
   }) => {
-    await page.goto('/harness/kit-renderers.html');
+    await page.goto('/harness/?page=kit-renderers');
     expect(await failure(expectBackend(page, 'webgpu'))).toMatch(
       /^expectBackend\(page, 'webgpu'\): the browser cannot give webgpu: (navigator\.gpu is undefined|navigator\.gpu\.requestAdapter\(\) returned null).*--enable-unsafe-webgpu/,
     );

@@ -37,7 +37,7 @@ test.describe('no leaks: create, render and dispose 1,000 times', () => {
     test(`${kind} × ${cycles}: memory, programs and listeners back to their baseline`, async ({ page }) => {
       test.setTimeout(300_000); // 1,000 cycles, each drawn and read back
       const seen = watch(page);
-      await page.goto('/harness/leaks.html');
+      await page.goto('/harness/?page=leaks');
       await expect(page.getByTestId('viewport')).toHaveAttribute('data-ready', 'true');
       // A few warm-up cycles first: three keeps one program per variant a live material has used (the pinned
       // materials of 'PhongLight' gain their two-light variant once), which is bounded, not a leak.

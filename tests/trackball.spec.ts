@@ -31,7 +31,7 @@ async function state(canvas: Locator) {
 }
 
 async function open(page: Page, mapping = 'bell', camera = 'perspective') {
-  await page.goto(`/harness/trackball.html?mapping=${mapping}&camera=${camera}`);
+  await page.goto(`/harness/?page=trackball&mapping=${mapping}&camera=${camera}`);
   const canvas = page.getByTestId('viewport');
   await expect(canvas).toHaveAttribute('data-frames', '1');
   return canvas;

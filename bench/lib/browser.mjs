@@ -47,8 +47,8 @@ async function serveAndLaunch(dir) {
 }
 
 /**
- * Build and serve the playground and the harness pages (tests/harness/ and bench/harness/, each at
- * /harness/<name>.html), and launch Chromium. Call `close()` when done.
+ * Build and serve the playground and the harness pages (tests/harness/'s at /harness/?page=<name>, bench/harness/'s
+ * at /harness/<name>.html), and launch Chromium. Call `close()` when done.
  * @returns {Promise<BenchPages>}
  */
 export async function openPlayground() {

@@ -1,5 +1,5 @@
 // Harness of tests/playwright-kit.spec.ts: draws buildKitScene(options) once, the options read as JSON from the
-// URL's query (kit.html?scene={"shininess":8}; a query, not a hash, so that each scene loads a new page).
+// URL's query (?page=kit&scene={"shininess":8}; a query, not a hash, so that each scene loads a new page).
 import { WebGLRenderer } from 'three';
 import { buildKitScene, type KitSceneOptions } from './kitScene';
 

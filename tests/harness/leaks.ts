@@ -1,6 +1,6 @@
 // Harness for tests/reliability.spec.ts (issue 8, no leaks): creates, renders and disposes each geometry, material
 // and control many times and reports renderer.info.memory, renderer.info.programs and the DOM listener count
-// (counted by the wrapper the page installs before anything else runs, see leaks.html).
+// (counted by the wrapper main.ts installs before this page's module runs).
 import { Camera, CameraMovement } from '@shadelab/camera';
 import { PhongLight, type Shading, ShadingMaterial } from '@shadelab/material';
 import { createOutline, OutlineMaterial } from '@shadelab/material/outline';

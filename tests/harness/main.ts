@@ -10,28 +10,29 @@
 type Viewport = 'block' | 'framed' | 'small';
 
 /** Each page: its module, its canvas, and whether DOM listeners are counted from before anything else runs. */
-const PAGES: Record<string, { load: () => Promise<unknown>; viewport?: Viewport; countListeners?: boolean }> = {
-  adaptive: { load: () => import('./adaptive'), viewport: 'block' },
-  camera: { load: () => import('./camera'), viewport: 'framed' },
-  dropin: { load: () => import('./dropin') },
-  'gltf-maker': { load: () => import('./gltf-maker') },
-  kit: { load: () => import('./kit'), viewport: 'block' },
-  'kit-renderers': { load: () => import('./kit-renderers') },
-  leaks: { load: () => import('./leaks'), viewport: 'small', countListeners: true },
-  'material-output': { load: () => import('./material-output') },
-  'material-shadow': { load: () => import('./material-shadow'), viewport: 'block' },
-  material: { load: () => import('./material'), viewport: 'block' },
-  'outline-impostor': { load: () => import('./outline-impostor'), viewport: 'block' },
-  'parity-rows': { load: () => import('./parity-rows') },
-  swap: { load: () => import('./swap'), viewport: 'block' },
-  trackball: { load: () => import('./trackball'), viewport: 'framed' },
-  tradeoff: { load: () => import('./tradeoff'), viewport: 'block' },
-  'webgpu-impostor': { load: () => import('./webgpu-impostor') },
-  'webgpu-material': { load: () => import('./webgpu-material') },
-  'webgpu-outline': { load: () => import('./webgpu-outline') },
-  'webgpu-reliability': { load: () => import('./webgpu-reliability') },
-  'webgpu-scene': { load: () => import('./webgpu-scene') },
-};
+const PAGES: Record<string, { load: () => Promise<unknown>; viewport?: Viewport; countListeners?: boolean }> =
+  {
+    adaptive: { load: () => import('./adaptive'), viewport: 'block' },
+    camera: { load: () => import('./camera'), viewport: 'framed' },
+    dropin: { load: () => import('./dropin') },
+    'gltf-maker': { load: () => import('./gltf-maker') },
+    kit: { load: () => import('./kit'), viewport: 'block' },
+    'kit-renderers': { load: () => import('./kit-renderers') },
+    leaks: { load: () => import('./leaks'), viewport: 'small', countListeners: true },
+    'material-output': { load: () => import('./material-output') },
+    'material-shadow': { load: () => import('./material-shadow'), viewport: 'block' },
+    material: { load: () => import('./material'), viewport: 'block' },
+    'outline-impostor': { load: () => import('./outline-impostor'), viewport: 'block' },
+    'parity-rows': { load: () => import('./parity-rows') },
+    swap: { load: () => import('./swap'), viewport: 'block' },
+    trackball: { load: () => import('./trackball'), viewport: 'framed' },
+    tradeoff: { load: () => import('./tradeoff'), viewport: 'block' },
+    'webgpu-impostor': { load: () => import('./webgpu-impostor') },
+    'webgpu-material': { load: () => import('./webgpu-material') },
+    'webgpu-outline': { load: () => import('./webgpu-outline') },
+    'webgpu-reliability': { load: () => import('./webgpu-reliability') },
+    'webgpu-scene': { load: () => import('./webgpu-scene') },
+  };
 
 /**
  * Counts the DOM event listeners alive on every EventTarget, as the browser dedupes them (the same type, listener
@@ -71,12 +72,14 @@ function countListeners(): void {
   (window as unknown as { __listenerCount: () => number }).__listenerCount = () => count;
 }
 
-const name = new URLSearchParams(location.search).get('page') ?? '';
-const page = PAGES[name];
+const pageName = new URLSearchParams(location.search).get('page') ?? '';
+const page = PAGES[pageName];
 if (page === undefined) {
-  throw new Error(`harness: ?page= names no page (got "${name}"; pages: ${Object.keys(PAGES).join(', ')})`);
+  throw new Error(
+    `harness: ?page= names no page (got "${pageName}"; pages: ${Object.keys(PAGES).join(', ')})`,
+  );
 }
-document.title = `shadelab harness: ${name}`;
+document.title = `shadelab harness: ${pageName}`;
 if (page.countListeners) countListeners();
 if (page.viewport !== undefined) {
   document.body.dataset.viewport = page.viewport;
@@ -88,3 +91,5 @@ if (page.viewport !== undefined) {
   document.body.append(canvas);
 }
 await page.load();
+
+export {};

@@ -4,10 +4,12 @@ import { fileURLToPath } from 'node:url';
 import { defineConfig, type UserConfig } from 'vite';
 
 // The harness pages: bare pages that the Playwright tests (tests/harness/) and the benchmarks (bench/harness/)
-// open, built apart from the playground. Each folder is built with its parent as Vite's root, so a page is
-// served at /harness/<name>.html whichever folder holds it:
+// open, built apart from the playground. Each folder is built with its parent as Vite's root, so that its HTML
+// files are served at /harness/<file>.html whichever folder holds them: the tests' one page at /harness/
+// (index.html, which loads the module ?page= names: tests/harness/main.ts), each bench page at
+// /harness/<name>.html.
 //
-//   npx vite build --config tests/harness/vite.config.ts --outDir DIR    # tests/harness/*.html
+//   npx vite build --config tests/harness/vite.config.ts --outDir DIR    # tests/harness/index.html
 //   npx vite build --config bench/harness/vite.config.ts --outDir DIR    # bench/harness/*.html
 //
 // Both may write into one folder (and beside a playground build): the assets' names carry their content hash.
