@@ -175,7 +175,7 @@ export function gateSection(g, table) {
   return [
     '## The gate',
     '',
-    `What \`npm test\` cost in one recorded run (\`npm test -- --record\`) on ${g.cpuModel} (${g.cpus} cores): **${minutes(g.totalSeconds)}** in all, ending ${g.passed} passed, ${g.failed} failed. Its budget is 12 minutes on an Intel Xeon machine of this kind and 15 on an AMD EPYC one ([DEVELOPERS.md](DEVELOPERS.md#the-two-commands)); every run prints the same summary.`,
+    `What \`npm test\` cost in one recorded run (\`npm test -- --record\`) on ${g.cpuModel} (${g.cpus} cores): **${minutes(g.totalSeconds)}** in all, ending ${g.passed} passed, ${g.failed} failed. Its budget is 12 minutes on an Intel Xeon machine of this kind and 15 on an AMD EPYC one ([DEVELOPERS.md](DEVELOPERS.md#the-gates-budget)); every run prints the same summary.`,
     '',
     ...table(
       ['stage', 'seconds'],
