@@ -73,6 +73,7 @@ import {
 } from 'three';
 import { deformNormal, instanceSkinned, skinnedCylinder } from './lib/deform';
 import { hasRgb, maxRgbDelta, readCanvas } from './lib/pixels';
+import { lightingDiscontinuity, screenEdgeDistance } from './lib/shadeOracle';
 import { flatSphereGeometry, sphereGeometry } from './material-sphere';
 
 /** What three keeps of a compiled program (`renderer.properties.get(material).currentProgram`). */
@@ -268,39 +269,6 @@ function render(config: CompareConfig): {
 }
 
 /** Render `config` on the GPU and compare every covered pixel away from the silhouette with shade(). */
-/**
- * For the world-space triangle soup `world` (3 corners a triangle) seen by `camera` on a `size`-pixel canvas:
- * a function giving the distance in pixels from (x, y) to the nearest edge line of screen triangle t (0 for a
- * degenerate triangle).
- */
-function screenEdgeDistance(
-  world: Float64Array,
-  camera: Camera,
-  size: number,
-): (t: number, x: number, y: number) => number {
-  const corners = world.length / 3;
-  const screen = new Float64Array(2 * corners);
-  const v = new Vector3();
-  for (let i = 0; i < corners; i++) {
-    v.fromArray(world, 3 * i).project(camera);
-    screen[2 * i] = ((v.x + 1) / 2) * size;
-    screen[2 * i + 1] = ((v.y + 1) / 2) * size;
-  }
-  return (t, x, y) => {
-    let d = Number.POSITIVE_INFINITY;
-    for (let k = 0; k < 3; k++) {
-      const i = 3 * t + k;
-      const j = 3 * t + ((k + 1) % 3);
-      const ex = screen[2 * j] - screen[2 * i];
-      const ey = screen[2 * j + 1] - screen[2 * i + 1];
-      const len = Math.hypot(ex, ey);
-      if (!(len > 0)) return 0;
-      d = Math.min(d, Math.abs((x - screen[2 * i]) * ey - (y - screen[2 * i + 1]) * ex) / len);
-    }
-    return d;
-  };
-}
-
 function compare(config: CompareConfig): CompareStats {
   const { pixels, mesh, material, light, camera, size } = render(config);
   // Triangle by triangle, corners in the order drawn (a flatShadingGeometry is indexed: expand it).
@@ -348,29 +316,7 @@ function compare(config: CompareConfig): CompareStats {
       attenuation: light.attenuation,
     },
   ];
-  const bands = material.celBands;
-  /**
-   * Near a discontinuity of the lighting, where GPU (float32) and CPU (float64) may round to either side:
-   * a cel band edge, the cel highlight edge, or the terminator (l·n = 0) when the specular jumps there
-   * (shininess 0 or cel).
-   */
-  const atDiscontinuity = (position: ArrayLike<number>, normal: ArrayLike<number>): boolean => {
-    if (bands === 0 && m.shininess !== 0) return false;
-    const n = new Vector3().fromArray(normal).normalize();
-    const l = new Vector3().fromArray(lightPosition).sub(new Vector3().fromArray(position)).normalize();
-    const ndl = n.dot(l);
-    if (Math.abs(ndl) < 0.01) return true;
-    if (bands === 0) return false;
-    const scaled = Math.max(ndl, 0) * bands;
-    const edge = Math.round(scaled);
-    if (Math.abs(scaled - edge) < 0.02 && edge > 0 && edge < bands) return true;
-    const raw = shade(
-      { position, normal, eye },
-      { ...m, celBands: 0, ka: [0, 0, 0], kd: [0, 0, 0], ks: [1, 1, 1] },
-      [{ ...lights[0], ambient: [0, 0, 0], specular: [1, 1, 1], attenuation: { a: 1, b: 0, c: 0 } }],
-    );
-    return Math.abs(raw[0] - 0.5) < 0.02;
-  };
+  const atDiscontinuity = lightingDiscontinuity(m, lights, eye);
   // Per-vertex (gouraud) and per-face (flat) CPU colours, linear.
   const vertexColour = new Float64Array(3 * count);
   const faceColour = new Float64Array(count);

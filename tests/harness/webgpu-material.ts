@@ -55,6 +55,7 @@ import {
 } from 'three/webgpu';
 import { thrown } from './lib/errors';
 import { hasRgb, maxRgbDelta } from './lib/pixels';
+import { lightingDiscontinuity, screenEdgeDistance } from './lib/shadeOracle';
 import { fiveThreeLights } from './lib/threeLights';
 import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 
@@ -482,41 +483,8 @@ async function compare(
     shininess: shininessOf(scenario),
     ...v,
   };
-  // Near a cel band edge, the cel highlight edge or the terminator (where the specular jumps: cel, or 0⁰ = 1),
-  // float32 and float64 may round either way: for each light (a directional one as a far point light).
-  const toLight = (light: ShadeLight | ShadeThreeLight, p: Vector3): Vector3 | null => {
-    if ('type' in light) {
-      if (light.type === 'directional') return new Vector3().fromArray(light.direction ?? [0, 1, 0]);
-      if (light.type === 'point' || light.type === 'spot')
-        return new Vector3()
-          .fromArray(light.position ?? [0, 0, 0])
-          .sub(p)
-          .normalize();
-      return null;
-    }
-    return new Vector3().fromArray(light.position).sub(p).normalize();
-  };
-  const atDiscontinuity = (p: Vector3, n: Vector3): boolean => {
-    if (v.celBands === 0 && m.shininess !== 0) return false;
-    for (const light of lights) {
-      const l = toLight(light, p);
-      if (l === null) continue;
-      const ndl = n.clone().normalize().dot(l);
-      if (Math.abs(ndl) < 0.01) return true;
-      if (v.celBands === 0) continue;
-      const scaled = Math.max(ndl, 0) * v.celBands;
-      const edge = Math.round(scaled);
-      if (Math.abs(scaled - edge) < 0.02 && edge > 0 && edge < v.celBands) return true;
-      const far = p.clone().addScaledVector(l, 1e6).toArray();
-      const raw = shade(
-        { position: p.toArray(), normal: n.toArray(), eye },
-        { ...m, celBands: 0, ka: [0, 0, 0], kd: [0, 0, 0], ks: [1, 1, 1] },
-        [{ position: far, ambient: [0, 0, 0], diffuse: [0, 0, 0], specular: [1, 1, 1] }],
-      );
-      if (Math.abs(raw[0] - 0.5) < 0.02) return true;
-    }
-    return false;
-  };
+  const discontinuity = lightingDiscontinuity(m, lights, eye);
+  const atDiscontinuity = (p: Vector3, n: Vector3): boolean => discontinuity(p.toArray(), n.toArray());
   // The surface: per vertex, uv and colour; the tint of the vertex stage (instance × vertex colour); the ka/kd
   // part and the ks part of a vertex or face colour apart (the texel multiplies the first per fragment).
   const sf: SurfaceCase = surface ?? {};
@@ -578,20 +546,11 @@ async function compare(
     // ShadingMaterial's flat tint: the last vertex's (WebGL's provoking vertex), on every backend.
     faceSplit.push(split(centroid.toArray(), normal.toArray(), vertexTint(3 * t + 2)));
   }
-  const screen = world.map((p) => {
-    const s = p.clone().project(camera);
-    return new Vector2(((s.x + 1) / 2) * SIZE, ((s.y + 1) / 2) * SIZE);
-  });
-  const edgeDistance = (t: number, x: number, y: number): number => {
-    let d = Number.POSITIVE_INFINITY;
-    for (let k = 0; k < 3; k++) {
-      const p = screen[3 * t + k];
-      const q = screen[3 * t + ((k + 1) % 3)];
-      const e = q.clone().sub(p);
-      d = Math.min(d, Math.abs((x - p.x) * e.y - (y - p.y) * e.x) / e.length());
-    }
-    return d;
-  };
+  const edgeDistance = screenEdgeDistance(
+    world.flatMap((p) => p.toArray()),
+    camera,
+    SIZE,
+  );
   const raycaster = new Raycaster();
   const stats: Stats = {
     covered: 0,
