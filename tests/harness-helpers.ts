@@ -14,8 +14,9 @@ export async function timedLoad(load: () => Promise<unknown>): Promise<void> {
 }
 
 /**
- * Opens a harness page (`/harness/?page=<name>`, tests/harness/main.ts) and waits until it says it is ready; returns the page errors and
- * console errors seen while the test runs (none are expected; the browser's favicon 404 is not one).
+ * Opens a harness page (`/harness/?page=<name>`: tests/harness/main.ts) and waits until it says it is ready;
+ * returns the page errors and console errors seen while the test runs (none are expected; the browser's favicon
+ * 404 is not one).
  */
 export async function openHarness(page: Page, name: string): Promise<string[]> {
   const problems: string[] = [];
