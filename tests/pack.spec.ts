@@ -8,7 +8,6 @@
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
 import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
-import { connect } from 'node:net';
 import { tmpdir } from 'node:os';
 import { dirname, join, normalize, posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -17,6 +16,7 @@ import { markdownLinks } from '../scripts/check-links.mjs';
 import { type PackedPackage, packBuilt } from '../scripts/pack.mjs';
 import { collectBlocks } from '../scripts/snippets.mjs';
 import { APP_DEPENDENCIES, installedApp, R3F_DEPENDENCIES, run } from '../tools/pack-apps/installed.mjs';
+import { listening } from './net-helpers';
 import {
   collectPageErrors,
   expectScenePicture,
@@ -485,18 +485,6 @@ function runAppPlaywright(dir: string, args: string[], env: Record<string, strin
     });
     child.on('error', reject);
     child.on('close', (code) => resolve({ code, out }));
-  });
-}
-
-/** Whether something accepts connections on 127.0.0.1:`port`. */
-function listening(port: number): Promise<boolean> {
-  return new Promise((resolve) => {
-    const socket = connect(port, '127.0.0.1');
-    socket.once('connect', () => {
-      socket.destroy();
-      resolve(true);
-    });
-    socket.once('error', () => resolve(false));
   });
 }
 

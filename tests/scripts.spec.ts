@@ -2,11 +2,12 @@
 // there is none, that `npm start` serves the playground at the URL it prints, and that a signal stops it.
 import { spawn, spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { connect, createServer } from 'node:net';
+import { createServer } from 'node:net';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
 import { DEBIAN_CHROMIUM, describeBrowserSearch, lookupChromium } from '../scripts/browser.mjs';
 import { browserSetup, root } from '../scripts/setup.mjs';
+import { listening } from './net-helpers';
 
 const PLAYWRIGHT_OWN = '/home/u/.cache/ms-playwright/chromium-1/chrome-linux/chrome';
 
@@ -157,18 +158,6 @@ async function freePort(): Promise<number> {
   await new Promise((resolve) => server.close(resolve));
   if (address === null || typeof address === 'string') throw new Error('no port');
   return address.port;
-}
-
-/** Whether something accepts connections on 127.0.0.1:`port`. */
-function listening(port: number): Promise<boolean> {
-  return new Promise((resolve) => {
-    const socket = connect(port, '127.0.0.1');
-    socket.once('connect', () => {
-      socket.destroy();
-      resolve(true);
-    });
-    socket.once('error', () => resolve(false));
-  });
 }
 
 /**
