@@ -1,6 +1,6 @@
 import { expect, type Page } from '@playwright/test';
 import type { ImpostorConfig, ImpostorStats, OutlineConfig, OutlineStats } from './harness/outline-impostor';
-import { test } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 // The outline and the impostor in any three.js scene (issue 14): createOutline on a SkinnedMesh with a moved
 // bone, a mesh with morph targets at full influence and an InstancedMesh draws the hull around the deformed
@@ -8,8 +8,7 @@ import { test } from './harness-helpers';
 // by three's MeshBasicMaterial. Runs in headless Chromium (SwiftShader) on the outline-impostor harness page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/?page=outline-impostor');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  await openHarness(page, 'outline-impostor');
 }
 
 function outline(page: Page, config: OutlineConfig): Promise<OutlineStats> {

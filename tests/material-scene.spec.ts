@@ -3,7 +3,7 @@ import { expect, type Page } from '@playwright/test';
 import { activeGlsl } from '../playground/src/learn/compiledShader';
 import { withoutUseFog } from './glsl-active';
 import type { ProgramSource, SceneConfig, SceneInstance, SceneStats } from './harness/material';
-import { test } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 // ShadingMaterial in an ordinary three.js scene (issue 14, phase 1): three's program parameters (instancing,
 // batching, skinning, morph targets, fog, clipping, tone mapping, output colour space) through three's shader
@@ -11,8 +11,7 @@ import { test } from './harness-helpers';
 // shade() for colours. Runs in headless Chromium (SwiftShader) on the material harness page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/?page=material');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  await openHarness(page, 'material');
 }
 
 function scene(page: Page, config: SceneConfig): Promise<SceneStats> {

@@ -1,14 +1,13 @@
 import { expect, type Page } from '@playwright/test';
 import type { ShadowConfig, ShadowStats } from './harness/material-shadow';
-import { test } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 // ShadingMaterial receiving three's shadows (issue 14): a ground plane in the shadow of an occluder, lit by one of
 // three's shadow-casting lights and an AmbientLight. Where the shadow falls is three's own MeshPhongMaterial's
 // shadow (same shadow map, same chunks); colours are shade() with the light's colour times three's shadow factor.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/?page=material-shadow');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  await openHarness(page, 'material-shadow');
 }
 
 function compare(page: Page, config: ShadowConfig): Promise<ShadowStats> {

@@ -1,6 +1,6 @@
 import { expect, type Page } from '@playwright/test';
 import type { SceneConfig, SceneStats, SceneSurface } from './harness/material';
-import { test } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 // ShadingMaterial's surface (issue 14): three's map, vertexColors, emissive/emissiveMap, opacity/transparent,
 // alphaTest and alphaMap, by three's property names and chunks. Where and whether a pixel is drawn (alpha-tested
@@ -11,8 +11,7 @@ import { test } from './harness-helpers';
 // or behind a blended pixel), on the material harness page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/?page=material');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  await openHarness(page, 'material');
 }
 
 function scene(page: Page, config: SceneConfig): Promise<SceneStats> {

@@ -1,7 +1,7 @@
 import { expect, type Page } from '@playwright/test';
 import type { Shading } from '@shadelab/material';
 import type { CaseReport, MaterialMode, SwapRun } from './harness/swap';
-import { test } from './harness-helpers';
+import { test, timedLoad } from './harness-helpers';
 
 // Issue 22: swapMaterials on glTF models built in code (three's GLTFExporter, binary GLB) and loaded back with
 // GLTFLoader, nothing downloaded: a textured mesh, a vertex-coloured mesh, a skinned mesh posed by its clip
@@ -19,8 +19,10 @@ async function open(page: Page): Promise<string[]> {
   page.on('console', (m) => {
     if (m.type() === 'error') errors.push(m.text());
   });
-  await page.goto('/harness/?page=swap');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  await timedLoad(async () => {
+    await page.goto('/harness/?page=swap');
+    await page.waitForFunction(() => document.body.dataset.ready === '1');
+  });
   return errors;
 }
 

@@ -1,14 +1,13 @@
 import { expect, type Page } from '@playwright/test';
 import type { CompareConfig, CompareStats } from './harness/material';
-import { test } from './harness-helpers';
+import { openHarness, test } from './harness-helpers';
 
 // GPU against CPU, pixel by pixel: the lecture's scene (tetrahedron sphere level 6, scale (2, 1, 2), camera
 // at (0, 0, 3) looking at the origin, fovy 90, light at (−5, 10, 20) with Ia 0.2, Id 1, Is 0.8) rendered
 // with ShadingMaterial in headless Chromium (SwiftShader) and compared with shade() in the page.
 
 async function open(page: Page): Promise<void> {
-  await page.goto('/harness/?page=material');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', '1');
+  await openHarness(page, 'material');
 }
 
 function compare(page: Page, config: CompareConfig): Promise<CompareStats> {
