@@ -10,11 +10,15 @@ const port = Number(process.env.SHADELAB_E2E_PORT ?? 4173);
 export default defineConfig(shadelabPreset(), {
   testDir: 'tests',
   fullyParallel: true,
-  workers: 2,
+  // Three workers on two cores: a test waits on its page (a settle, a readback, an install) for part of its time,
+  // and a third worker's browser draws then; the gate keeps both cores busy.
+  workers: 3,
   retries: 0,
-  // A margin, not a guess: under the gate's own load (two workers on two cores, or `npm run test:loaded`) every
+  // A margin, not a guess: under the gate's own load (three workers on two cores, or `npm run test:loaded`) every
   // test stays under a quarter of its timeout; `npm test` prints the ten nearest theirs.
   timeout: 120_000,
+  // A wait on the page that fails within 5 s under load is a flake, not a finding: assertions wait up to 10 s.
+  expect: { timeout: 10_000 },
   reporter: [['list'], ['json', { outputFile: 'reports/playwright.json' }]],
   use: {
     baseURL: `http://127.0.0.1:${port}`,

@@ -1,6 +1,6 @@
 import { expect, type Locator } from '@playwright/test';
 import type {} from './harness/camera';
-import { test } from './harness-helpers';
+import { test, timedLoad } from './harness-helpers';
 
 // The harness page camera (tests/harness/camera.ts): a 400 × 300 canvas at (50, 50) seen through @shadelab/camera's
 // Camera, moved by CameraMovement (moveSpeed 0.5, turnSpeed 0.005); window.cameraDepth probes depth order per mode.
@@ -14,10 +14,13 @@ async function state(canvas: Locator) {
   }));
 }
 
+/** Opens the camera page and waits, for as long as the test may, until it drew its first frame. */
 async function open(page: import('@playwright/test').Page) {
-  await page.goto('/harness/?page=camera');
   const canvas = page.getByTestId('viewport');
-  await expect(canvas).toHaveAttribute('data-ready', 'true');
+  await timedLoad(async () => {
+    await page.goto('/harness/?page=camera');
+    await expect(canvas).toHaveAttribute('data-ready', 'true', { timeout: 0 });
+  });
   await expect(canvas).toHaveAttribute('data-frames', '1');
   return canvas;
 }

@@ -1,6 +1,6 @@
 import { expect, type Page } from '@playwright/test';
 import type { LeakReport } from './harness/leaks';
-import { test } from './harness-helpers';
+import { test, timedLoad } from './harness-helpers';
 import { choose, frames, open, picture, settle, stateUrl, typeInto, urlState } from './playground-helpers';
 
 // Issue 8: a library that people embed must never take their page down. The playground's own spec already
@@ -37,8 +37,10 @@ test.describe('no leaks: create, render and dispose 1,000 times', () => {
     test(`${kind} × ${cycles}: memory, programs and listeners back to their baseline`, async ({ page }) => {
       test.setTimeout(300_000); // 1,000 cycles, each drawn and read back
       const seen = watch(page);
-      await page.goto('/harness/?page=leaks');
-      await expect(page.getByTestId('viewport')).toHaveAttribute('data-ready', 'true');
+      await timedLoad(async () => {
+        await page.goto('/harness/?page=leaks');
+        await expect(page.getByTestId('viewport')).toHaveAttribute('data-ready', 'true', { timeout: 0 });
+      });
       // A few warm-up cycles first: three keeps one program per variant a live material has used (the pinned
       // materials of 'PhongLight' gain their two-light variant once), which is bounded, not a leak.
       await page.evaluate((k) => window.leaks.run(k as never, 3), kind);
