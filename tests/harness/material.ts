@@ -65,15 +65,14 @@ import {
   SRGBColorSpace,
   TangentSpaceNormalMap,
   TorusKnotGeometry,
-  Triangle,
   Vector2,
   Vector3,
   Vector4,
   WebGLRenderer,
 } from 'three';
-import { deformNormal, instanceSkinned, skinnedCylinder } from './lib/deform';
+import { bindTwoBones, deformNormal, instanceSkinned, skinnedCylinder, stretchMorph } from './lib/deform';
 import { hasRgb, maxRgbDelta, readCanvas } from './lib/pixels';
-import { lightingDiscontinuity, screenEdgeDistance } from './lib/shadeOracle';
+import { lightingDiscontinuity, pixelHits, screenEdgeDistance } from './lib/shadeOracle';
 import { flatSphereGeometry, sphereGeometry } from './material-sphere';
 
 /** What three keeps of a compiled program (`renderer.properties.get(material).currentProgram`). */
@@ -131,106 +130,6 @@ function makeCamera(orthographic: boolean): Camera {
   camera.updateMatrixWorld();
   return camera;
 }
-
-interface Hits {
-  triangle: Int32Array; // per pixel, −1 = miss
-  bary: Float32Array; // 3 per pixel
-  point: Float64Array; // 3 per pixel, world
-}
-
-/** Per-pixel nearest triangle and barycentrics with three's Raycaster; candidates from screen tiles. */
-function raycastPixels(
-  world: Float64Array,
-  camera: Camera,
-  size: number,
-  mirrored: boolean,
-  side: 'front' | 'back' | 'double' = 'front',
-): Hits {
-  const triangles = world.length / 9;
-  const tile = 8;
-  const tiles = Math.ceil(size / tile);
-  const bins: number[][] = Array.from({ length: tiles * tiles }, () => []);
-  const v = new Vector3();
-  const px = new Float64Array(6);
-  for (let t = 0; t < triangles; t++) {
-    let minX = Number.POSITIVE_INFINITY;
-    let minY = Number.POSITIVE_INFINITY;
-    let maxX = Number.NEGATIVE_INFINITY;
-    let maxY = Number.NEGATIVE_INFINITY;
-    for (let k = 0; k < 3; k++) {
-      v.set(world[9 * t + 3 * k], world[9 * t + 3 * k + 1], world[9 * t + 3 * k + 2]).project(camera);
-      px[2 * k] = ((v.x + 1) / 2) * size;
-      px[2 * k + 1] = ((v.y + 1) / 2) * size;
-      minX = Math.min(minX, px[2 * k]);
-      maxX = Math.max(maxX, px[2 * k]);
-      minY = Math.min(minY, px[2 * k + 1]);
-      maxY = Math.max(maxY, px[2 * k + 1]);
-    }
-    if (!Number.isFinite(minX + maxX + minY + maxY)) continue;
-    const x0 = Math.max(0, Math.floor((minX - 1) / tile));
-    const x1 = Math.min(tiles - 1, Math.floor((maxX + 1) / tile));
-    const y0 = Math.max(0, Math.floor((minY - 1) / tile));
-    const y1 = Math.min(tiles - 1, Math.floor((maxY + 1) / tile));
-    for (let ty = y0; ty <= y1; ty++) for (let tx = x0; tx <= x1; tx++) bins[ty * tiles + tx].push(t);
-  }
-  const raycaster = new Raycaster();
-  const ndc = new Vector2();
-  const a = new Vector3();
-  const b = new Vector3();
-  const c = new Vector3();
-  const hit = new Vector3();
-  const best = new Vector3();
-  const bc = new Vector3();
-  const triangle = new Int32Array(size * size).fill(-1);
-  const bary = new Float32Array(3 * size * size);
-  const point = new Float64Array(3 * size * size);
-  for (let y = 0; y < size; y++) {
-    for (let x = 0; x < size; x++) {
-      const bin = bins[Math.floor(y / tile) * tiles + Math.floor(x / tile)];
-      if (bin.length === 0) continue;
-      ndc.set(((x + 0.5) / size) * 2 - 1, ((y + 0.5) / size) * 2 - 1);
-      raycaster.setFromCamera(ndc, camera);
-      let bestT = -1;
-      let bestD = Number.POSITIVE_INFINITY;
-      for (const t of bin) {
-        a.fromArray(world, 9 * t);
-        b.fromArray(world, 9 * t + 3);
-        c.fromArray(world, 9 * t + 6);
-        // Cull back faces as three does (its front face flips when the determinant is negative).
-        // BackSide draws only the back faces; DoubleSide both.
-        const hitTriangle =
-          side === 'double'
-            ? raycaster.ray.intersectTriangle(a, b, c, false, hit)
-            : mirrored !== (side === 'back')
-              ? raycaster.ray.intersectTriangle(a, c, b, true, hit)
-              : raycaster.ray.intersectTriangle(a, b, c, true, hit);
-        if (hitTriangle === null) continue;
-        const dist = hit.distanceTo(raycaster.ray.origin);
-        if (dist < bestD) {
-          bestD = dist;
-          bestT = t;
-          best.copy(hit);
-        }
-      }
-      if (bestT < 0) continue;
-      const i = y * size + x;
-      triangle[i] = bestT;
-      a.fromArray(world, 9 * bestT);
-      b.fromArray(world, 9 * bestT + 3);
-      c.fromArray(world, 9 * bestT + 6);
-      Triangle.getBarycoord(best, a, b, c, bc);
-      bary[3 * i] = bc.x;
-      bary[3 * i + 1] = bc.y;
-      bary[3 * i + 2] = bc.z;
-      point[3 * i] = best.x;
-      point[3 * i + 1] = best.y;
-      point[3 * i + 2] = best.z;
-    }
-  }
-  return { triangle, bary, point };
-}
-
-const hitCache = new Map<string, Hits>();
 
 function render(config: CompareConfig): {
   pixels: Uint8Array;
@@ -290,12 +189,7 @@ function compare(config: CompareConfig): CompareStats {
   }
   // Distance in pixels to the nearest edge of a screen triangle, for the flat shading edge margin.
   const edgeDistance = screenEdgeDistance(world, camera, size);
-  const key = `${config.level ?? 6}/${config.flatCorners ?? false}/${mesh.matrixWorld.elements.join(',')}/${config.orthographic ?? false}/${size}`;
-  let hits = hitCache.get(key);
-  if (hits === undefined) {
-    hits = raycastPixels(world, camera, size, mesh.matrixWorld.determinant() < 0);
-    hitCache.set(key, hits);
-  }
+  const hits = pixelHits(world, camera, size, mesh.matrixWorld.determinant() < 0);
   const e = eyeOf(camera, new Vector4());
   const eye = [e.x, e.y, e.z, e.w];
   const m: ShadeMaterial = {
@@ -973,27 +867,8 @@ const WHITE_LIGHT: [number, number, number] = [1, 1, 1];
 let logRenderer: WebGLRenderer | null = null;
 
 /** The sphere with one morph target at full influence: stretched to (1.6, 0.8, 1.2), normals to match. */
-function morphedSphere(level: number, indexed = false): BufferGeometry {
-  const g = sphereGeometry(level, true, indexed).clone();
-  const position = g.getAttribute('position');
-  const k = [1.6, 0.8, 1.2];
-  const p = new Float32Array(3 * position.count);
-  const n = new Float32Array(3 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const x = position.getX(i);
-    const y = position.getY(i);
-    const z = position.getZ(i);
-    p.set([x * k[0], y * k[1], z * k[2]], 3 * i);
-    const nx = x / k[0];
-    const ny = y / k[1];
-    const nz = z / k[2];
-    const l = Math.hypot(nx, ny, nz);
-    n.set([nx / l, ny / l, nz / l], 3 * i);
-  }
-  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
-  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
-  return g;
-}
+const morphedSphere = (level: number, indexed = false): BufferGeometry =>
+  stretchMorph(sphereGeometry(level, true, indexed));
 
 function instanceMatrix(instance: SceneInstance): Matrix4 {
   const m = new Matrix4().compose(
@@ -1111,14 +986,7 @@ function buildScene(config: SceneConfig): SceneSetup {
     object = mesh as unknown as Mesh;
   } else if (skinned) {
     const mesh = new SkinnedMesh(geometry, material);
-    const root = new Bone();
-    root.position.set(0, -1.5, 0);
-    const joint = new Bone();
-    joint.position.set(0, 1.5, 0);
-    root.add(joint);
-    mesh.add(root);
-    mesh.bind(new Skeleton([root, joint]));
-    joint.rotation.z = config.bone ?? 0.7;
+    bindTwoBones(mesh, config.bone ?? 0.7);
     if (kind === 'instanced-skinned') {
       instanceSkinned(mesh, instances);
     }
@@ -1414,7 +1282,7 @@ function sceneCompare(config: SceneConfig): SceneStats {
   }
   // Flat shading of a plain indexed geometry: lit per fragment with the face normal (screen-space derivatives).
   const derivatives = config.shading === 'flat' && index !== null && !config.flatCorners;
-  const hits = raycastPixels(
+  const hits = pixelHits(
     world,
     camera,
     size,

@@ -37,7 +37,6 @@ import {
   Object3D,
   ObjectSpaceNormalMap,
   PerspectiveCamera,
-  Raycaster,
   RGBAFormat,
   Scene,
   type Side,
@@ -55,7 +54,7 @@ import {
 } from 'three/webgpu';
 import { thrown } from './lib/errors';
 import { hasRgb, maxRgbDelta } from './lib/pixels';
-import { lightingDiscontinuity, screenEdgeDistance } from './lib/shadeOracle';
+import { lightingDiscontinuity, pixelHits, screenEdgeDistance } from './lib/shadeOracle';
 import { fiveThreeLights } from './lib/threeLights';
 import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 
@@ -546,12 +545,16 @@ async function compare(
     // ShadingMaterial's flat tint: the last vertex's (WebGL's provoking vertex), on every backend.
     faceSplit.push(split(centroid.toArray(), normal.toArray(), vertexTint(3 * t + 2)));
   }
-  const edgeDistance = screenEdgeDistance(
-    world.flatMap((p) => p.toArray()),
+  const soupWorld = new Float64Array(world.flatMap((p) => p.toArray()));
+  const edgeDistance = screenEdgeDistance(soupWorld, camera, SIZE);
+  const side = (mesh.material as Material).side;
+  const hits = pixelHits(
+    soupWorld,
     camera,
     SIZE,
+    matrix.determinant() < 0,
+    side === DoubleSide ? 'double' : side === BackSide ? 'back' : 'front',
   );
-  const raycaster = new Raycaster();
   const stats: Stats = {
     covered: 0,
     compared: 0,
@@ -567,16 +570,14 @@ async function compare(
     for (let x = 0; x < SIZE; x++) {
       const o = 4 * (y * SIZE + x);
       const covered = !hasRgb(pixels, o, CLEAR);
-      raycaster.setFromCamera(new Vector2(((x + 0.5) / SIZE) * 2 - 1, ((y + 0.5) / SIZE) * 2 - 1), camera);
-      const hit = raycaster.intersectObject(mesh)[0];
       if (covered) stats.covered++;
-      if (hit === undefined || hit.faceIndex === undefined || hit.faceIndex === null || !hit.barycoord)
-        continue;
-      const t = hit.faceIndex;
+      const pixel = y * SIZE + x;
+      const t = hits.triangle[pixel];
+      if (t < 0) continue;
       if (edgeDistance(t, x + 0.5, y + 0.5) < 1.5) continue;
       let expected: number[];
-      const bc = hit.barycoord;
-      const w = [bc.x, bc.y, bc.z];
+      const w = Array.from(hits.bary.subarray(3 * pixel, 3 * pixel + 3));
+      const hit = { point: new Vector3().fromArray(hits.point, 3 * pixel) };
       if (v.shading === 'flat' && perFragmentFlat) {
         const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
         const normal = b.clone().sub(a).cross(c.clone().sub(a));

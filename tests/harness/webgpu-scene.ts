@@ -20,7 +20,6 @@ import {
   AmbientLight,
   BasicShadowMap,
   BatchedMesh,
-  Bone,
   BoxGeometry,
   type BufferGeometry,
   type Camera,
@@ -29,7 +28,6 @@ import {
   DirectionalLight,
   DoubleSide,
   Euler,
-  Float32BufferAttribute,
   FrontSide,
   InstancedMesh,
   LinearSRGBColorSpace,
@@ -47,7 +45,6 @@ import {
   Quaternion,
   Raycaster,
   Scene,
-  Skeleton,
   SkinnedMesh,
   SphereGeometry,
   SpotLight,
@@ -64,7 +61,7 @@ import {
   RenderTarget,
   WebGPURenderer,
 } from 'three/webgpu';
-import { skinnedCylinder } from './lib/deform';
+import { bindTwoBones, skinnedCylinder, stretchMorph } from './lib/deform';
 import { maxRgbDelta } from './lib/pixels';
 import { type Backend, backendFlags, gpuRenderer, readTarget } from './lib/webgpu';
 
@@ -107,25 +104,6 @@ const P2 = new Plane(new Vector3(0, -1, 0.2).normalize(), 0.35);
 const sphere = (indexed: boolean) =>
   new SubdivisionSphereGeometry({ level: 2, base: 'tetrahedron', indexed });
 
-/** The sphere with one morph target (positions stretched to (1.6, 0.8, 1.2), normals to match). */
-function morphed(source: BufferGeometry): BufferGeometry {
-  const g = source.clone();
-  const position = g.getAttribute('position');
-  const k = [1.6, 0.8, 1.2];
-  const p = new Float32Array(3 * position.count);
-  const n = new Float32Array(3 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const [x, y, z] = [position.getX(i), position.getY(i), position.getZ(i)];
-    p.set([x * k[0], y * k[1], z * k[2]], 3 * i);
-    const m = [x / k[0], y / k[1], z / k[2]];
-    const l = Math.hypot(m[0], m[1], m[2]);
-    n.set([m[0] / l, m[1] / l, m[2] / l], 3 * i);
-  }
-  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
-  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
-  return g;
-}
-
 /**
  * The geometries, one set per renderer kind: a geometry drawn by WebGPURenderer's WebGL2 backend is not drawn
  * by WebGLRenderer afterwards (GL_INVALID_OPERATION, the skin index attribute's type), and apps do not share
@@ -138,8 +116,8 @@ function geometries() {
     sphereSoup: sphere(false),
     cylinderIndexed: cylinder,
     cylinderSoup: cylinder.toNonIndexed(),
-    morphIndexed: morphed(sphere(true)),
-    morphSoup: morphed(sphere(false)),
+    morphIndexed: stretchMorph(sphere(true)),
+    morphSoup: stretchMorph(sphere(false)),
   };
 }
 const GEOMETRIES = { gpu: geometries(), gl: geometries() };
@@ -212,15 +190,7 @@ function build(
   if (c.kind === 'skinned') {
     geometry = soup ? cylinderSoup : cylinderIndexed;
     const mesh = new SkinnedMesh(geometry, material);
-    const root = new Bone();
-    root.position.set(0, -1.5, 0);
-    const joint = new Bone();
-    joint.position.set(0, 1.5, 0);
-    root.add(joint);
-    mesh.add(root);
-    mesh.bind(new Skeleton([root, joint]));
-    joint.rotation.z = 0.7;
-    joint.position.x = 0.15;
+    bindTwoBones(mesh, 0.7).position.x = 0.15;
     object = mesh;
   } else if (c.kind === 'morphed') {
     geometry = soup ? morphSoup : morphIndexed;

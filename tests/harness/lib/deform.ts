@@ -1,13 +1,15 @@
 // Three's vertex deformation as the harness pages share it: a normal moved by the morph targets and the skin as
-// three's vertex chunks move it (the CPU side of their references), the skinned cylinder they deform, and an
-// instanced SkinnedMesh.
+// three's vertex chunks move it (the CPU side of their references), the stretched morph target, the skinned
+// cylinder and its two bones, and an instanced SkinnedMesh.
 import {
+  Bone,
   type BufferGeometry,
   CylinderGeometry,
   Float32BufferAttribute,
   InstancedBufferAttribute,
   Matrix4,
   type Mesh,
+  Skeleton,
   type SkinnedMesh,
   Uint16BufferAttribute,
   Vector3,
@@ -53,6 +55,47 @@ export function deformNormal(
     target.transformDirection(skin);
   }
   return target;
+}
+
+/** The stretch of {@link stretchMorph}'s morph target, per axis. */
+const STRETCH = [1.6, 0.8, 1.2] as const;
+
+/**
+ * A copy of `source` (a unit sphere) with one morph target: its positions stretched to (1.6, 0.8, 1.2) and the
+ * normals of that ellipsoid.
+ */
+export function stretchMorph(source: BufferGeometry): BufferGeometry {
+  const g = source.clone();
+  const position = g.getAttribute('position');
+  const [kx, ky, kz] = STRETCH;
+  const p = new Float32Array(3 * position.count);
+  const n = new Float32Array(3 * position.count);
+  for (let i = 0; i < position.count; i++) {
+    const [x, y, z] = [position.getX(i), position.getY(i), position.getZ(i)];
+    p.set([x * kx, y * ky, z * kz], 3 * i);
+    const [nx, ny, nz] = [x / kx, y / ky, z / kz];
+    const l = Math.hypot(nx, ny, nz);
+    n.set([nx / l, ny / l, nz / l], 3 * i);
+  }
+  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
+  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
+  return g;
+}
+
+/**
+ * Binds {@link skinnedCylinder}'s two bones to `mesh` (the root at y = −1.5, the joint 3 above it, at rest when
+ * bound), then bends the joint by `bend` radians about z; returns the joint.
+ */
+export function bindTwoBones(mesh: SkinnedMesh, bend: number): Bone {
+  const root = new Bone();
+  root.position.set(0, -1.5, 0);
+  const joint = new Bone();
+  joint.position.set(0, 1.5, 0);
+  root.add(joint);
+  mesh.add(root);
+  mesh.bind(new Skeleton([root, joint]));
+  joint.rotation.z = bend;
+  return joint;
 }
 
 /**

@@ -3,23 +3,20 @@
 // own deformation, and the comparison of two pictures by class (clear, outline, mesh).
 import {
   BackSide,
-  Bone,
   BufferAttribute,
   BufferGeometry,
   Euler,
-  Float32BufferAttribute,
   InstancedMesh,
   type Material,
   Matrix3,
   Matrix4,
   Mesh,
   Quaternion,
-  Skeleton,
   SkinnedMesh,
   SphereGeometry,
   Vector3,
 } from 'three';
-import { deformNormal, instanceSkinned, skinnedCylinder } from './deform';
+import { bindTwoBones, deformNormal, instanceSkinned, skinnedCylinder, stretchMorph } from './deform';
 import { hasRgb } from './pixels';
 
 /** The clear colour in RGB: where nothing was drawn. */
@@ -62,24 +59,6 @@ export interface OutlineConfig {
   size?: number;
 }
 
-/** A smooth sphere with one morph target: stretched to (1.6, 0.8, 1.2), normals to match. */
-function morphedSphere(): BufferGeometry {
-  const g = new SphereGeometry(1, 48, 24);
-  const position = g.getAttribute('position');
-  const k = [1.6, 0.8, 1.2];
-  const p = new Float32Array(3 * position.count);
-  const n = new Float32Array(3 * position.count);
-  for (let i = 0; i < position.count; i++) {
-    const [x, y, z] = [position.getX(i), position.getY(i), position.getZ(i)];
-    p.set([x * k[0], y * k[1], z * k[2]], 3 * i);
-    const l = Math.hypot(x / k[0], y / k[1], z / k[2]);
-    n.set([x / k[0] / l, y / k[1] / l, z / k[2] / l], 3 * i);
-  }
-  g.morphAttributes.position = [new Float32BufferAttribute(p, 3)];
-  g.morphAttributes.normal = [new Float32BufferAttribute(n, 3)];
-  return g;
-}
-
 /** The geometries of the outlined objects. */
 export interface OutlineGeometries {
   sphere: BufferGeometry;
@@ -100,7 +79,7 @@ export function outlineGeometries(): OutlineGeometries {
   return {
     sphere: new SphereGeometry(1, 48, 24),
     analytic,
-    morphed: morphedSphere(),
+    morphed: stretchMorph(new SphereGeometry(1, 48, 24)),
     cylinder: skinnedCylinder(0.5, 24, 12),
   };
 }
@@ -115,14 +94,7 @@ export function outlinedObject(
   let matrices = [new Matrix4()];
   if (config.object === 'skinned' || config.object === 'instanced-skinned') {
     const mesh = new SkinnedMesh(geometries.cylinder, body);
-    const root = new Bone();
-    root.position.set(0, -1.5, 0);
-    const joint = new Bone();
-    joint.position.set(0, 1.5, 0);
-    root.add(joint);
-    mesh.add(root);
-    mesh.bind(new Skeleton([root, joint]));
-    joint.rotation.z = config.bone ?? 0.9;
+    bindTwoBones(mesh, config.bone ?? 0.9);
     mesh.rotation.y = 0.3;
     if (config.object === 'instanced-skinned') {
       matrices = specs.map(instanceMatrix);
