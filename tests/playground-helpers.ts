@@ -47,10 +47,14 @@ export async function settle(page: Page, quietMs = 200): Promise<void> {
   );
 }
 
-/** Opens the playground (optionally on a state) with fresh storage and waits until it rests. */
+/**
+ * Opens the playground (optionally on a state) with fresh storage and waits until it rests: for its first frame
+ * as long as the test may.
+ */
 export async function open(page: Page, state?: object): Promise<void> {
   await timedLoad(async () => {
     await page.goto(state ? stateUrl(state) : '/');
+    await expect(page.getByTestId('viewport')).toHaveAttribute('data-frames', /[1-9]/, { timeout: 0 });
     await settle(page, 400); // a page load also waits for what loads after the first frame
   });
 }
