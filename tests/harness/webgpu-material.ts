@@ -577,19 +577,19 @@ async function compare(
       if (edgeDistance(t, x + 0.5, y + 0.5) < 1.5) continue;
       let expected: number[];
       const w = Array.from(hits.bary.subarray(3 * pixel, 3 * pixel + 3));
-      const hit = { point: new Vector3().fromArray(hits.point, 3 * pixel) };
+      const point = new Vector3().fromArray(hits.point, 3 * pixel);
       if (v.shading === 'flat' && perFragmentFlat) {
         const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
         const normal = b.clone().sub(a).cross(c.clone().sub(a));
-        if (atDiscontinuity(hit.point, normal)) continue;
-        expected = shade({ position: hit.point.toArray(), normal: normal.toArray(), eye }, m, lights);
+        if (atDiscontinuity(point, normal)) continue;
+        expected = shade({ position: point.toArray(), normal: normal.toArray(), eye }, m, lights);
       } else if (v.shading === 'flat') {
         if (faceEdge[t]) continue;
         expected = faceColour[t];
         // A back face (seen from behind its winding) is lit with the face normal turned round.
         const [a, b, c] = [world[3 * t], world[3 * t + 1], world[3 * t + 2]];
         const normal = b.clone().sub(a).cross(c.clone().sub(a));
-        if (normal.dot(hit.point.clone().sub(camera.position)) > 0) {
+        if (normal.dot(point.clone().sub(camera.position)) > 0) {
           const centroid = a.clone().add(b).add(c).divideScalar(3);
           if (atDiscontinuity(centroid, normal)) continue;
           expected = shade(
@@ -608,8 +608,8 @@ async function compare(
       } else {
         const n = new Vector3();
         for (let i = 0; i < 3; i++) n.addScaledVector(worldNormal[3 * t + i], w[i]);
-        if (atDiscontinuity(hit.point, n)) continue;
-        expected = shade({ position: hit.point.toArray(), normal: n.toArray(), eye }, m, lights);
+        if (atDiscontinuity(point, n)) continue;
+        expected = shade({ position: point.toArray(), normal: n.toArray(), eye }, m, lights);
       }
       if (surface !== undefined) {
         const at = (attribute: typeof uvs, k: number) =>
@@ -617,7 +617,7 @@ async function compare(
         const [u, vv] = [at(uvs, 0), at(uvs, 1)];
         const texel = sf.map ? sample(MAP_TEXELS, u, vv) : [1, 1, 1, 1];
         const colour = [0, 1, 2, 3].map((k) => at(colours, k));
-        const position = hit.point.toArray();
+        const position = point.toArray();
         if (v.shading === 'phong' || (v.shading === 'flat' && perFragmentFlat)) {
           const normal = new Vector3();
           if (v.shading === 'phong') {

@@ -100,14 +100,48 @@ export interface PixelHits {
   point: Float64Array;
 }
 
-/** Per-pixel nearest triangle and barycentrics with three's Raycaster; candidates from screen tiles. */
-function raycastPixels(
+/** The hits already found, by everything they depend on ({@link hitsKey}). */
+const hitCache = new Map<string, PixelHits>();
+
+/** A key for the inputs of {@link pixelHits}: the camera's matrices, the options and a hash of the soup. */
+function hitsKey(world: Float64Array, camera: Camera, size: number, mirrored: boolean, side: string): string {
+  // Two FNV-1a hashes of the soup's bytes, one from each end: a collision would need both to collide.
+  const bytes = new Uint8Array(world.buffer, world.byteOffset, world.byteLength);
+  let h1 = 0x811c9dc5;
+  let h2 = 0x811c9dc5;
+  for (let i = 0, j = bytes.length - 1; i < bytes.length; i++, j--) {
+    h1 = Math.imul(h1 ^ bytes[i], 0x01000193);
+    h2 = Math.imul(h2 ^ bytes[j], 0x01000193);
+  }
+  return [
+    size,
+    mirrored,
+    side,
+    world.length,
+    h1 >>> 0,
+    h2 >>> 0,
+    camera.matrixWorld.elements.join(),
+    camera.projectionMatrix.elements.join(),
+  ].join('/');
+}
+
+/**
+ * For the world-space triangle soup `world` (9 numbers a triangle) seen by `camera` on a `size`-pixel square
+ * picture: the nearest triangle at each pixel's centre (three's Raycaster, each ray testing the triangles whose
+ * screen box covers its tile), culled as three draws it (`side`; front faces swap when the model matrix is
+ * `mirrored`, as three's renderer swaps them), with its barycentrics and point. The same soup, camera and options
+ * give the same hits, found once: the variants a harness compares share them.
+ */
+export function pixelHits(
   world: Float64Array,
   camera: Camera,
   size: number,
   mirrored: boolean,
   side: 'front' | 'back' | 'double' = 'front',
 ): PixelHits {
+  const key = hitsKey(world, camera, size, mirrored, side);
+  const found = hitCache.get(key);
+  if (found !== undefined) return found;
   const triangles = world.length / 9;
   const tile = 8;
   const tiles = Math.ceil(size / tile);
@@ -189,53 +223,7 @@ function raycastPixels(
       point[3 * i + 2] = best.z;
     }
   }
-  return { triangle, bary, point };
-}
-
-/** The hits already found, by everything they depend on ({@link hitsKey}). */
-const hitCache = new Map<string, PixelHits>();
-
-/** A key for the inputs of {@link raycastPixels}: the camera's matrices, the options and a hash of the soup. */
-function hitsKey(world: Float64Array, camera: Camera, size: number, mirrored: boolean, side: string): string {
-  // Two FNV-1a hashes of the soup's bytes, one from each end: a collision would need both to collide.
-  const bytes = new Uint8Array(world.buffer, world.byteOffset, world.byteLength);
-  let h1 = 0x811c9dc5;
-  let h2 = 0x811c9dc5;
-  for (let i = 0, j = bytes.length - 1; i < bytes.length; i++, j--) {
-    h1 = Math.imul(h1 ^ bytes[i], 0x01000193);
-    h2 = Math.imul(h2 ^ bytes[j], 0x01000193);
-  }
-  camera.updateMatrixWorld();
-  return [
-    size,
-    mirrored,
-    side,
-    world.length,
-    h1 >>> 0,
-    h2 >>> 0,
-    camera.matrixWorld.elements.join(),
-    camera.projectionMatrix.elements.join(),
-  ].join('/');
-}
-
-/**
- * For the world-space triangle soup `world` (9 numbers a triangle) seen by `camera` on a `size`-pixel square
- * picture: the nearest triangle at each pixel's centre, culled as three draws it (`side`; front faces swap when
- * the model matrix is `mirrored`, as three's renderer swaps them), with its barycentrics and point. The same
- * soup, camera and options give the same hits, found once: the variants a harness compares share them.
- */
-export function pixelHits(
-  world: Float64Array,
-  camera: Camera,
-  size: number,
-  mirrored: boolean,
-  side: 'front' | 'back' | 'double' = 'front',
-): PixelHits {
-  const key = hitsKey(world, camera, size, mirrored, side);
-  let hits = hitCache.get(key);
-  if (hits === undefined) {
-    hits = raycastPixels(world, camera, size, mirrored, side);
-    hitCache.set(key, hits);
-  }
+  const hits = { triangle, bary, point };
+  hitCache.set(key, hits);
   return hits;
 }
