@@ -16,10 +16,21 @@ import { cpus } from 'node:os';
  * @property {number} seconds the test's duration, its hooks and fixtures included
  * @property {number} timeoutSeconds the timeout the test ended with (test.setTimeout included)
  * @property {number} pageLoadSeconds what the test's `page-load` annotations add up to
+ * @property {number} gpuSeconds CPU time of its browser's GPU process (shader and pipeline compiles, draws,
+ *   read-backs): its `gpu-process` annotation (tests/harness-helpers.ts' test records it), else 0
+ * @property {number} rendererSeconds CPU time of its browser's renderers (the pages' scripts): its `renderer`
+ *   annotation, else 0
  * @property {number} setupSeconds the time its worker spent before it since the test before it ended (or since
  *   the run started): its spec's `beforeAll` hooks and worker fixtures, which no test's duration holds
  * @property {string} status
  */
+
+/**
+ * What a test's annotations of one type add up to, in seconds (each holds milliseconds).
+ * @param {{ type: string, description?: string }[]} annotations @param {string} type
+ */
+const annotated = (annotations, type) =>
+  annotations.filter((a) => a.type === type).reduce((sum, a) => sum + Number(a.description), 0) / 1000;
 
 /**
  * Every test run in a Playwright JSON report.
@@ -43,10 +54,9 @@ export function testRuns(report) {
             project: test.projectName,
             seconds: result.duration / 1000,
             timeoutSeconds: test.timeout / 1000,
-            pageLoadSeconds:
-              annotations
-                .filter((a) => a.type === 'page-load')
-                .reduce((sum, a) => sum + Number(a.description), 0) / 1000,
+            pageLoadSeconds: annotated(annotations, 'page-load'),
+            gpuSeconds: annotated(annotations, 'gpu-process'),
+            rendererSeconds: annotated(annotations, 'renderer'),
             setupSeconds: 0,
             status: result.status,
             parallelIndex: result.parallelIndex ?? 0,
@@ -82,18 +92,21 @@ const round1 = (x) => Math.round(x * 10) / 10;
  */
 export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
   const runs = report ? testRuns(report) : [];
-  /** @type {Map<string, { file: string, tests: number, seconds: number, setupSeconds: number, pageLoadSeconds: number }>} */
+  /** @param {TestRun[]} of */
+  const parts = (of) => ({
+    setupSeconds: round1(of.reduce((sum, r) => sum + r.setupSeconds, 0)),
+    pageLoadSeconds: round1(of.reduce((sum, r) => sum + r.pageLoadSeconds, 0)),
+    gpuSeconds: round1(of.reduce((sum, r) => sum + r.gpuSeconds, 0)),
+    rendererSeconds: round1(of.reduce((sum, r) => sum + r.rendererSeconds, 0)),
+  });
+  /** @param {TestRun[]} of */
+  const workerSeconds = (of) => round1(of.reduce((sum, r) => sum + r.seconds + r.setupSeconds, 0));
+  /** @type {Map<string, TestRun[]>} */
   const specs = new Map();
   for (const r of runs) {
     const key = r.project === 'swiftshader' ? r.file : `${r.file} [${r.project}]`;
-    const spec = specs.get(key) ?? { file: key, tests: 0, seconds: 0, setupSeconds: 0, pageLoadSeconds: 0 };
-    spec.tests++;
-    spec.seconds += r.seconds + r.setupSeconds;
-    spec.setupSeconds += r.setupSeconds;
-    spec.pageLoadSeconds += r.pageLoadSeconds;
-    specs.set(key, spec);
+    specs.set(key, [...(specs.get(key) ?? []), r]);
   }
-  const workerSeconds = runs.reduce((sum, r) => sum + r.seconds + r.setupSeconds, 0);
   return {
     cpuModel: cpus()[0]?.model.trim() ?? 'unknown',
     cpus: cpus().length,
@@ -104,19 +117,13 @@ export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
     playwright: {
       tests: runs.length,
       wallSeconds: report ? round1((report.stats?.duration ?? 0) / 1000) : 0,
-      workerSeconds: round1(workerSeconds),
-      setupSeconds: round1(runs.reduce((sum, r) => sum + r.setupSeconds, 0)),
-      pageLoadSeconds: round1(runs.reduce((sum, r) => sum + r.pageLoadSeconds, 0)),
+      workerSeconds: workerSeconds(runs),
+      ...parts(runs),
     },
-    slowestSpecs: [...specs.values()]
+    slowestSpecs: [...specs]
+      .map(([file, of]) => ({ file, tests: of.length, seconds: workerSeconds(of), ...parts(of) }))
       .sort((a, b) => b.seconds - a.seconds)
-      .slice(0, 20)
-      .map((s) => ({
-        ...s,
-        seconds: round1(s.seconds),
-        setupSeconds: round1(s.setupSeconds),
-        pageLoadSeconds: round1(s.pageLoadSeconds),
-      })),
+      .slice(0, 20),
     slowestTests: [...runs]
       .sort((a, b) => b.seconds / b.timeoutSeconds - a.seconds / a.timeoutSeconds)
       .slice(0, 10)
@@ -146,13 +153,14 @@ export function gateLines(g) {
   if (g.playwright.tests > 0) {
     lines.push(
       '',
-      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (set-up outside tests ${g.playwright.setupSeconds.toFixed(0)}, page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time`,
+      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (set-up outside tests ${g.playwright.setupSeconds.toFixed(0)}, page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time; CPU in the browsers' GPU processes ${g.playwright.gpuSeconds.toFixed(0)} s, in their renderers ${g.playwright.rendererSeconds.toFixed(0)} s`,
       '',
-      'the 20 spec files that took the most worker time (set-up outside tests / page loads):',
+      'the 20 spec files that took the most worker time (set-up outside tests / page loads; CPU in the GPU process / the renderers):',
     );
+    const n = (/** @type {number} */ x) => x.toFixed(0).padStart(3);
     for (const s of g.slowestSpecs)
       lines.push(
-        `${secs(s.seconds)}  (${s.setupSeconds.toFixed(0).padStart(3)} / ${s.pageLoadSeconds.toFixed(0).padStart(3)} s)  ${String(s.tests).padStart(3)} tests  ${s.file}`,
+        `${secs(s.seconds)}  (${n(s.setupSeconds)} / ${n(s.pageLoadSeconds)} s; ${n(s.gpuSeconds)} / ${n(s.rendererSeconds)} s)  ${String(s.tests).padStart(3)} tests  ${s.file}`,
       );
     lines.push('', 'the 10 tests nearest their timeout (duration / timeout):');
     for (const t of g.slowestTests)
@@ -183,17 +191,27 @@ export function gateSection(g, table) {
       g.stages.map((x) => [x.name, s(x.seconds)]),
     ),
     '',
-    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time. Of them, ${s(g.playwright.setupSeconds)} were set-up outside the tests (\`beforeAll\` hooks such as the tarball apps' installs and builds, browser launches: a worker's time between two tests), and ${s(g.playwright.pageLoadSeconds)} loading pages (from \`goto\` until a harness page or the playground says it is ready). The spec files that took the most worker time:`,
+    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time. Of them, ${s(g.playwright.setupSeconds)} were set-up outside the tests (\`beforeAll\` hooks such as the tarball apps' installs and builds, browser launches: a worker's time between two tests), and ${s(g.playwright.pageLoadSeconds)} loading pages (from \`goto\` until a harness page or the playground says it is ready). The browsers' GPU processes (SwiftShader: shader and pipeline compiles, draws, read-backs) spent ${s(g.playwright.gpuSeconds)} s of CPU on the tests, their renderers (the pages' scripts) ${s(g.playwright.rendererSeconds)} s, as the tests on \`tests/harness-helpers.ts\`' \`test\` record them. The spec files that took the most worker time:`,
     '',
     ...table(
-      ['spec', 'tests', 'worker-seconds', 'set-up outside tests', 'page loads'],
-      'lrrrr',
+      [
+        'spec',
+        'tests',
+        'worker-seconds',
+        'set-up outside tests',
+        'page loads',
+        'GPU process CPU',
+        'renderer CPU',
+      ],
+      'lrrrrrr',
       g.slowestSpecs.map((x) => [
         `\`${x.file}\``,
         x.tests,
         s(x.seconds),
         s(x.setupSeconds),
         s(x.pageLoadSeconds),
+        s(x.gpuSeconds),
+        s(x.rendererSeconds),
       ]),
     ),
     '',

@@ -1,4 +1,10 @@
-import { type BrowserContext, test as base, type Page } from '@playwright/test';
+import {
+  type Browser,
+  type BrowserContext,
+  test as base,
+  type CDPSession,
+  type Page,
+} from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 
 /**
@@ -135,8 +141,40 @@ async function resetPage(context: BrowserContext, page: Page, origin: string): P
   }
 }
 
+/** CPU seconds of each of the browser's GPU and renderer processes so far, by process id. */
+async function processSeconds(cdp: CDPSession): Promise<Map<number, { type: string; seconds: number }>> {
+  const { processInfo } = (await cdp.send('SystemInfo.getProcessInfo')) as {
+    processInfo: { type: string; id: number; cpuTime: number }[];
+  };
+  return new Map(processInfo.map((p) => [p.id, { type: p.type, seconds: p.cpuTime }]));
+}
+
 /**
- * Playwright's test with a page reused across the tests one worker runs in a row, and `harness(name)`.
+ * Records the CPU time the worker's browser spent on the test as its `gpu-process` and `renderer` annotations
+ * (milliseconds), which `npm test`'s summary adds up per spec file: the GPU process compiles the shaders and
+ * pipelines, draws and reads back (SwiftShader); the renderers run the pages' scripts. One worker runs one test at
+ * a time in its own browser, so the time is the test's; a renderer that exits during the test takes its time with
+ * it.
+ */
+async function recordProcessTime(browser: Browser, cdp: CDPSession, run: () => Promise<void>) {
+  const before = await processSeconds(cdp);
+  await run();
+  if (!browser.isConnected()) return;
+  const spent = { GPU: 0, renderer: 0 };
+  for (const [id, now] of await processSeconds(cdp)) {
+    if (now.type !== 'GPU' && now.type !== 'renderer') continue;
+    spent[now.type] += now.seconds - (before.get(id)?.seconds ?? 0);
+  }
+  for (const [type, key] of [
+    ['gpu-process', 'GPU'],
+    ['renderer', 'renderer'],
+  ] as const)
+    base.info().annotations.push({ type, description: String(Math.round(spent[key] * 1000)) });
+}
+
+/**
+ * Playwright's test with a page reused across the tests one worker runs in a row, and `harness(name)`, and the
+ * CPU time each test's browser processes spent recorded ({@link recordProcessTime}).
  *
  * `page`: each test gets the worker's page, reset to about:blank with its origin's storage cleared
  * ({@link resetPage}). Every test still opens its own document: nothing of one test's page reaches the next. A
@@ -150,12 +188,18 @@ async function resetPage(context: BrowserContext, page: Page, origin: string): P
  * page (a lost device) open their own with {@link openHarness}.
  */
 export const test = base.extend<
-  { harness: (name: string) => Promise<SharedHarness> },
+  { harness: (name: string) => Promise<SharedHarness>; processTime: undefined },
   {
     sharedHarnessSlot: { current?: SharedHarness & { key: string } };
     reusedPageSlot: { current?: ReusedPage };
+    browserCdp: CDPSession;
   }
 >({
+  browserCdp: [async ({ browser }, use) => use(await browser.newBrowserCDPSession()), { scope: 'worker' }],
+  processTime: [
+    async ({ browser, browserCdp }, use) => recordProcessTime(browser, browserCdp, () => use(undefined)),
+    { auto: true },
+  ],
   reusedPageSlot: [
     async ({ browser }, use) => {
       const slot: { current?: ReusedPage } = {};

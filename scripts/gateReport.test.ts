@@ -1,0 +1,116 @@
+// scripts/gateReport.mjs on a small Playwright report: a worker's time between two tests is the later one's set-up,
+// the page-load, gpu-process and renderer annotations add up per test and per spec file, and the tests nearest
+// their timeout come first.
+import { describe, expect, test } from 'vitest';
+import { gateLines, gateSummary, testRuns } from './gateReport.mjs';
+
+const result = (
+  startTime: string,
+  duration: number,
+  annotations: { type: string; description: string }[],
+) => ({
+  startTime,
+  duration,
+  parallelIndex: 0,
+  status: 'passed',
+  annotations,
+});
+const report = {
+  stats: { startTime: '2026-12-02T10:00:00.000Z', duration: 9000 },
+  suites: [
+    {
+      specs: [
+        {
+          file: 'a.spec.ts',
+          line: 3,
+          title: 'first',
+          tests: [
+            {
+              projectName: 'swiftshader',
+              timeout: 10_000,
+              results: [
+                result('2026-12-02T10:00:01.000Z', 2000, [
+                  { type: 'page-load', description: '500' },
+                  { type: 'page-load', description: '250' },
+                  { type: 'gpu-process', description: '1200' },
+                  { type: 'renderer', description: '300' },
+                ]),
+              ],
+            },
+          ],
+        },
+        {
+          file: 'a.spec.ts',
+          line: 9,
+          title: 'second',
+          tests: [
+            {
+              projectName: 'swiftshader',
+              timeout: 4000,
+              results: [
+                result('2026-12-02T10:00:05.000Z', 3000, [{ type: 'gpu-process', description: '800' }]),
+              ],
+            },
+          ],
+        },
+      ],
+    },
+  ],
+};
+
+describe('gateReport', () => {
+  test('each test: its duration, the gap before it on its worker as set-up, its annotations summed', () => {
+    expect(testRuns(report)).toEqual([
+      expect.objectContaining({
+        title: 'first',
+        seconds: 2,
+        setupSeconds: 1,
+        pageLoadSeconds: 0.75,
+        gpuSeconds: 1.2,
+        rendererSeconds: 0.3,
+      }),
+      expect.objectContaining({
+        title: 'second',
+        seconds: 3,
+        setupSeconds: 2,
+        gpuSeconds: 0.8,
+        rendererSeconds: 0,
+      }),
+    ]);
+  });
+
+  test('per spec file and in all; the tests by their share of their timeout', () => {
+    const g = gateSummary({
+      stages: [{ name: 'x', seconds: 12 }],
+      totalSeconds: 12,
+      report,
+      passed: 2,
+      failed: 0,
+    });
+    expect(g.playwright).toEqual({
+      tests: 2,
+      wallSeconds: 9,
+      workerSeconds: 8,
+      setupSeconds: 3,
+      pageLoadSeconds: 0.8,
+      gpuSeconds: 2,
+      rendererSeconds: 0.3,
+    });
+    expect(g.slowestSpecs).toEqual([
+      {
+        file: 'a.spec.ts',
+        tests: 2,
+        seconds: 8,
+        setupSeconds: 3,
+        pageLoadSeconds: 0.8,
+        gpuSeconds: 2,
+        rendererSeconds: 0.3,
+      },
+    ]);
+    expect(g.slowestTests.map((t) => [t.test, t.shareOfTimeout])).toEqual([
+      ['a.spec.ts:9 second', 0.75],
+      ['a.spec.ts:3 first', 0.2],
+    ]);
+    expect(gateLines(g)).toContain('    8 s  (  3 /   1 s;   2 /   0 s)    2 tests  a.spec.ts');
+  });
+});
