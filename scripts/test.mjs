@@ -1,6 +1,7 @@
 // `npm test`: every set-up step, then type check, lint, unit and end-to-end/visual tests.
 // Runs every stage even when one fails, then prints one summary and exits non-zero on any failure. The summary
-// says what the run cost (scripts/gateReport.mjs): the machine's CPU, each stage's time, the spec files that took
+// says what the run cost (scripts/gateReport.mjs): the machine's CPU, each stage's time (the set-up's too: a fresh
+// clone's npm ci, and Chromium and Xvfb where the machine has none), the spec files that took
 // the most worker time and the tests nearest their timeouts; reports/gate.json holds it, and
 // `npm test -- --record` also writes it to bench/results/gate.json, which BENCHMARKS.md renders.
 // The three unit and documentation stages run at once (each about one core's work for a minute, sharing no
@@ -13,8 +14,18 @@ import { chromiumExecutable } from './browser.mjs';
 import { gateLines, gateSummary } from './gateReport.mjs';
 import { ensureBrowser, ensureDependencies, root, run } from './setup.mjs';
 
+const started = performance.now();
+const seconds = (/** @type {number} */ t0) => (performance.now() - t0) / 1000;
+/** @type {import('./gateReport.mjs').StageTime[]} each stage's wall time */
+const times = [];
 ensureDependencies();
+times.push({ name: 'set-up: node modules (npm ci on a fresh clone)', seconds: seconds(started) });
+const browserStarted = performance.now();
 await ensureBrowser();
+times.push({
+  name: 'set-up: Chromium and Xvfb (installed once, on a machine without them)',
+  seconds: seconds(browserStarted),
+});
 // Reports go to reports/: Playwright empties test-results/ (its output folder) when it starts.
 rmSync(join(root, 'reports'), { recursive: true, force: true });
 mkdirSync(join(root, 'reports'), { recursive: true });
@@ -82,10 +93,6 @@ function capture([, cmd, args]) {
 }
 
 const failed = [];
-/** @type {import('./gateReport.mjs').StageTime[]} each stage's wall time */
-const times = [];
-const seconds = (/** @type {number} */ t0) => (performance.now() - t0) / 1000;
-const started = performance.now();
 for (const step of stages) {
   const t0 = performance.now();
   if (typeof step[0] === 'string') {
