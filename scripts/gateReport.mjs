@@ -1,7 +1,7 @@
 // What `npm test` says about its own cost: the machine, each stage's wall time, the spec files that took the most
-// worker time, the tests closest to their timeouts and where the Playwright time went (page loads, builds). Pure
-// functions of Playwright's JSON report, so that scripts/test.mjs prints them and BENCHMARKS.md renders the
-// committed run (bench/results/gate.json) from the same numbers.
+// worker time, the tests closest to their timeouts and where the Playwright time went (page loads, builds, the
+// browsers' GPU processes and renderers). Pure functions of Playwright's JSON report, so that scripts/test.mjs
+// prints them and BENCHMARKS.md renders the committed run (bench/results/gate.json) from the same numbers.
 import { cpus } from 'node:os';
 
 /** @typedef {{ name: string, seconds: number }} StageTime */
@@ -16,10 +16,10 @@ import { cpus } from 'node:os';
  * @property {number} seconds the test's duration, its hooks and fixtures included
  * @property {number} timeoutSeconds the timeout the test ended with (test.setTimeout included)
  * @property {number} pageLoadSeconds what the test's `page-load` annotations add up to
- * @property {number} gpuSeconds CPU time of its browser's GPU process (shader and pipeline compiles, draws,
- *   read-backs): its `gpu-process` annotation (tests/harness-helpers.ts' test records it), else 0
- * @property {number} rendererSeconds CPU time of its browser's renderers (the pages' scripts): its `renderer`
- *   annotation, else 0
+ * @property {number | null} gpuSeconds CPU time of its browser's GPU process (shader and pipeline compiles, draws,
+ *   read-backs): its `gpu-process` annotation (tests/harness-helpers.ts' test records it), null without one
+ * @property {number | null} rendererSeconds CPU time of its browser's renderers (the pages' scripts): its
+ *   `renderer` annotation, null without one
  * @property {number} setupSeconds the time its worker spent before it since the test before it ended (or since
  *   the run started): its spec's `beforeAll` hooks and worker fixtures, which no test's duration holds
  * @property {string} status
@@ -31,6 +31,22 @@ import { cpus } from 'node:os';
  */
 const annotated = (annotations, type) =>
   annotations.filter((a) => a.type === type).reduce((sum, a) => sum + Number(a.description), 0) / 1000;
+
+/**
+ * The same for a measurement not every test records: null when the test has none.
+ * @param {{ type: string, description?: string }[]} annotations @param {string} type
+ */
+const measured = (annotations, type) =>
+  annotations.some((a) => a.type === type) ? annotated(annotations, type) : null;
+
+/**
+ * The sum of what the runs recorded, or null when none did.
+ * @param {(number | null)[]} values
+ */
+const sumMeasured = (values) =>
+  values.some((v) => v !== null)
+    ? round1(values.reduce((/** @type {number} */ sum, v) => sum + (v ?? 0), 0))
+    : null;
 
 /**
  * Every test run in a Playwright JSON report.
@@ -55,8 +71,8 @@ export function testRuns(report) {
             seconds: result.duration / 1000,
             timeoutSeconds: test.timeout / 1000,
             pageLoadSeconds: annotated(annotations, 'page-load'),
-            gpuSeconds: annotated(annotations, 'gpu-process'),
-            rendererSeconds: annotated(annotations, 'renderer'),
+            gpuSeconds: measured(annotations, 'gpu-process'),
+            rendererSeconds: measured(annotations, 'renderer'),
             setupSeconds: 0,
             status: result.status,
             parallelIndex: result.parallelIndex ?? 0,
@@ -96,8 +112,8 @@ export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
   const parts = (of) => ({
     setupSeconds: round1(of.reduce((sum, r) => sum + r.setupSeconds, 0)),
     pageLoadSeconds: round1(of.reduce((sum, r) => sum + r.pageLoadSeconds, 0)),
-    gpuSeconds: round1(of.reduce((sum, r) => sum + r.gpuSeconds, 0)),
-    rendererSeconds: round1(of.reduce((sum, r) => sum + r.rendererSeconds, 0)),
+    gpuSeconds: sumMeasured(of.map((r) => r.gpuSeconds)),
+    rendererSeconds: sumMeasured(of.map((r) => r.rendererSeconds)),
   });
   /** @param {TestRun[]} of */
   const workerSeconds = (of) => round1(of.reduce((sum, r) => sum + r.seconds + r.setupSeconds, 0));
@@ -142,6 +158,9 @@ export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
 /** @param {number} s */
 const secs = (s) => `${s.toFixed(0).padStart(5)} s`;
 
+/** Seconds in three columns, or – for what no test recorded. @param {number | null} x */
+const n = (x) => (x === null ? '–' : x.toFixed(0)).padStart(3);
+
 /**
  * The summary as the lines `npm test` prints.
  * @param {GateSummary} g @returns {string[]}
@@ -153,11 +172,10 @@ export function gateLines(g) {
   if (g.playwright.tests > 0) {
     lines.push(
       '',
-      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (set-up outside tests ${g.playwright.setupSeconds.toFixed(0)}, page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time; CPU in the browsers' GPU processes ${g.playwright.gpuSeconds.toFixed(0)} s, in their renderers ${g.playwright.rendererSeconds.toFixed(0)} s`,
+      `Playwright: ${g.playwright.tests} tests, ${g.playwright.workerSeconds.toFixed(0)} worker-seconds (set-up outside tests ${g.playwright.setupSeconds.toFixed(0)}, page loads ${g.playwright.pageLoadSeconds.toFixed(0)}), ${g.playwright.wallSeconds.toFixed(0)} s of wall time; CPU in the browsers' GPU processes ${n(g.playwright.gpuSeconds).trim()} s, in their renderers ${n(g.playwright.rendererSeconds).trim()} s`,
       '',
       'the 20 spec files that took the most worker time (set-up outside tests / page loads; CPU in the GPU process / the renderers):',
     );
-    const n = (/** @type {number} */ x) => x.toFixed(0).padStart(3);
     for (const s of g.slowestSpecs)
       lines.push(
         `${secs(s.seconds)}  (${n(s.setupSeconds)} / ${n(s.pageLoadSeconds)} s; ${n(s.gpuSeconds)} / ${n(s.rendererSeconds)} s)  ${String(s.tests).padStart(3)} tests  ${s.file}`,
@@ -191,7 +209,7 @@ export function gateSection(g, table) {
       g.stages.map((x) => [x.name, s(x.seconds)]),
     ),
     '',
-    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time. Of them, ${s(g.playwright.setupSeconds)} were set-up outside the tests (\`beforeAll\` hooks such as the tarball apps' installs and builds, browser launches: a worker's time between two tests), and ${s(g.playwright.pageLoadSeconds)} loading pages (from \`goto\` until a harness page or the playground says it is ready). The browsers' GPU processes (SwiftShader: shader and pipeline compiles, draws, read-backs) spent ${s(g.playwright.gpuSeconds)} s of CPU on the tests, their renderers (the pages' scripts) ${s(g.playwright.rendererSeconds)} s, as the tests on \`tests/harness-helpers.ts\`' \`test\` record them. The spec files that took the most worker time:`,
+    `Playwright: ${g.playwright.tests} tests, ${s(g.playwright.workerSeconds)} worker-seconds over ${s(g.playwright.wallSeconds)} s of wall time. Of them, ${s(g.playwright.setupSeconds)} were set-up outside the tests (\`beforeAll\` hooks such as the tarball apps' installs and builds, browser launches: a worker's time between two tests), and ${s(g.playwright.pageLoadSeconds)} loading pages (from \`goto\` until a harness page or the playground says it is ready). The browsers' GPU processes (SwiftShader: shader and pipeline compiles, draws, read-backs) spent ${s(g.playwright.gpuSeconds ?? 0)} s of CPU on the tests, their renderers (the pages' scripts) ${s(g.playwright.rendererSeconds ?? 0)} s, as the tests on \`tests/harness-helpers.ts\`' \`test\` record them (– for a spec whose tests are on Playwright's own). The spec files that took the most worker time:`,
     '',
     ...table(
       [
@@ -210,8 +228,8 @@ export function gateSection(g, table) {
         s(x.seconds),
         s(x.setupSeconds),
         s(x.pageLoadSeconds),
-        s(x.gpuSeconds),
-        s(x.rendererSeconds),
+        x.gpuSeconds === null ? '–' : s(x.gpuSeconds),
+        x.rendererSeconds === null ? '–' : s(x.rendererSeconds),
       ]),
     ),
     '',

@@ -1,6 +1,6 @@
 // scripts/gateReport.mjs on a small Playwright report: a worker's time between two tests is the later one's set-up,
-// the page-load, gpu-process and renderer annotations add up per test and per spec file, and the tests nearest
-// their timeout come first.
+// the page-load, gpu-process and renderer annotations add up per test and per spec file (– where no test recorded
+// the CPU times), and the tests nearest their timeout come first.
 import { describe, expect, test } from 'vitest';
 import { gateLines, gateSummary, testRuns } from './gateReport.mjs';
 
@@ -53,6 +53,18 @@ const report = {
             },
           ],
         },
+        {
+          file: 'b.spec.ts',
+          line: 1,
+          title: 'on Playwright’s own test',
+          tests: [
+            {
+              projectName: 'swiftshader',
+              timeout: 10_000,
+              results: [{ ...result('2026-12-02T10:00:01.000Z', 1000, []), parallelIndex: 1 }],
+            },
+          ],
+        },
       ],
     },
   ],
@@ -74,7 +86,13 @@ describe('gateReport', () => {
         seconds: 3,
         setupSeconds: 2,
         gpuSeconds: 0.8,
-        rendererSeconds: 0,
+        rendererSeconds: null,
+      }),
+      expect.objectContaining({
+        file: 'b.spec.ts',
+        setupSeconds: 1,
+        gpuSeconds: null,
+        rendererSeconds: null,
       }),
     ]);
   });
@@ -88,10 +106,10 @@ describe('gateReport', () => {
       failed: 0,
     });
     expect(g.playwright).toEqual({
-      tests: 2,
+      tests: 3,
       wallSeconds: 9,
-      workerSeconds: 8,
-      setupSeconds: 3,
+      workerSeconds: 10,
+      setupSeconds: 4,
       pageLoadSeconds: 0.8,
       gpuSeconds: 2,
       rendererSeconds: 0.3,
@@ -106,11 +124,22 @@ describe('gateReport', () => {
         gpuSeconds: 2,
         rendererSeconds: 0.3,
       },
+      {
+        file: 'b.spec.ts',
+        tests: 1,
+        seconds: 2,
+        setupSeconds: 1,
+        pageLoadSeconds: 0,
+        gpuSeconds: null,
+        rendererSeconds: null,
+      },
     ]);
     expect(g.slowestTests.map((t) => [t.test, t.shareOfTimeout])).toEqual([
       ['a.spec.ts:9 second', 0.75],
       ['a.spec.ts:3 first', 0.2],
+      ['b.spec.ts:1 on Playwright’s own test', 0.1],
     ]);
     expect(gateLines(g)).toContain('    8 s  (  3 /   1 s;   2 /   0 s)    2 tests  a.spec.ts');
+    expect(gateLines(g)).toContain('    2 s  (  1 /   0 s;   – /   – s)    1 tests  b.spec.ts');
   });
 });
