@@ -6,9 +6,14 @@ import { HIDE_OVERLAYS, settle } from './playground-helpers';
 /** The renderer select's WebGPU entry. */
 export const WEBGPU = 'WebGPU (WebGL2 fallback)';
 
-/** What the page shows of the canvas area (overlays hidden): the WebGPU canvas when it lies over the WebGL one. */
+/**
+ * What the page shows of the canvas area (overlays hidden): the WebGPU canvas when it lies over the WebGL one. The
+ * page is brought to the front first: a page behind another of its context composites no frame until it is, so
+ * its screenshot would wait seconds for one.
+ */
 export async function shot(page: Page): Promise<RgbaImage> {
   await page.addStyleTag({ content: HIDE_OVERLAYS });
+  await page.bringToFront();
   return decodePng(await page.getByTestId('viewport').screenshot());
 }
 
