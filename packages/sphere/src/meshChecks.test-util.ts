@@ -48,9 +48,10 @@ export function weld(positions: Float32Array, indices: Uint32Array): Uint32Array
 
 /**
  * Watertight and oriented: every directed edge u→w appears once and w→u once. Typed arrays only (fast enough for
- * 12M corners): the keys u·V + w (exact in a double while V < 2^26) are sorted, and so are the reversed keys
- * w·V + u; a closed oriented surface has no repeated key and the same two sorted lists. Returns V, E, F and the
- * number of problems (degenerate edges, repeated directed edges, directed edges without their reverse).
+ * 12M corners): the directed edges are bucketed by their start vertex (a counting sort), so each vertex's
+ * out-edges are a short list; a closed oriented surface has no repeat in a list, and w's list holds u for every
+ * u→w. Returns V, E, F and the number of problems (degenerate edges, repeated directed edges, directed edges
+ * without their reverse).
  */
 export function checkClosedOriented(indices: ArrayLike<number>): {
   V: number;
@@ -60,34 +61,64 @@ export function checkClosedOriented(indices: ArrayLike<number>): {
 } {
   let V = 0;
   for (let i = 0; i < indices.length; i++) if (indices[i] >= V) V = indices[i] + 1;
-  const forward = new Float64Array(indices.length);
-  const reverse = new Float64Array(indices.length);
-  let problems = 0;
+  const next = (t: number, k: number) => indices[t + (k === 2 ? 0 : k + 1)];
+  // start[u] … start[u + 1]: the ends w of the directed edges u→w.
+  const start = new Uint32Array(V + 1);
+  for (let i = 0; i < indices.length; i++) start[indices[i] + 1]++;
+  for (let u = 0; u < V; u++) start[u + 1] += start[u];
+  const fill = start.slice(0, V);
+  const ends = new Uint32Array(indices.length);
   for (let t = 0; t < indices.length; t += 3) {
-    for (let k = 0; k < 3; k++) {
-      const u = indices[t + k];
-      const w = indices[t + (k === 2 ? 0 : k + 1)];
-      if (u === w) problems++;
-      forward[t + k] = u * V + w;
-      reverse[t + k] = w * V + u;
-    }
+    for (let k = 0; k < 3; k++) ends[fill[indices[t + k]]++] = next(t, k);
   }
-  forward.sort();
-  reverse.sort();
+  const has = (u: number, w: number) => {
+    for (let j = start[u]; j < start[u + 1]; j++) if (ends[j] === w) return true;
+    return false;
+  };
+  let problems = 0;
   let distinct = 0;
-  for (let i = 0; i < forward.length; i++) {
-    if (i > 0 && forward[i] === forward[i - 1]) problems++;
-    else distinct++;
-    if (forward[i] !== reverse[i]) problems++;
+  for (let u = 0; u < V; u++) {
+    for (let j = start[u]; j < start[u + 1]; j++) {
+      const w = ends[j];
+      if (u === w) problems++;
+      let repeated = false;
+      for (let i = start[u]; i < j; i++) if (ends[i] === w) repeated = true;
+      if (repeated) problems++;
+      else distinct++;
+      if (!has(w, u)) problems++;
+    }
   }
   return { V, E: distinct / 2, F: indices.length / 3, problems };
 }
 
-/** Vertices at exactly the same place as another (float32 equality), found by sorting the vertex ids by position. */
+/**
+ * Vertices at exactly the same place as another (float32 equality, so −0 = 0), found with an open-addressing
+ * hash table of the positions' bit patterns.
+ */
 export function duplicateVertices(positions: Float32Array): number {
-  const order = sortedByPosition(positions);
+  const count = positions.length / 3;
+  const normalised = positions.map((x) => x + 0); // −0 + 0 = +0: equal floats, equal bits
+  const bits = new Uint32Array(normalised.buffer);
+  let size = 1;
+  while (size < 2 * count) size *= 2;
+  const table = new Int32Array(size).fill(-1);
   let duplicates = 0;
-  for (let i = 1; i < order.length; i++) if (samePosition(positions, order[i - 1], order[i])) duplicates++;
+  for (let v = 0; v < count; v++) {
+    const [x, y, z] = [bits[3 * v], bits[3 * v + 1], bits[3 * v + 2]];
+    let slot = (Math.imul(x, 0x9e3779b1) ^ Math.imul(y, 0x85ebca77) ^ Math.imul(z, 0xc2b2ae3d)) & (size - 1);
+    for (;;) {
+      const other = table[slot];
+      if (other < 0) {
+        table[slot] = v;
+        break;
+      }
+      if (bits[3 * other] === x && bits[3 * other + 1] === y && bits[3 * other + 2] === z) {
+        duplicates++;
+        break;
+      }
+      slot = (slot + 1) & (size - 1);
+    }
+  }
   return duplicates;
 }
 

@@ -101,6 +101,28 @@ describe('subdivideSphere topology and winding', () => {
   }
 });
 
+describe('the mesh checks find what they look for', () => {
+  const tetrahedron = () => subdivideSphere({ base: 'tetrahedron', level: 1, normals: 'none' });
+  it('a closed oriented mesh has no problems; a flipped, a missing or a repeated triangle does', () => {
+    const { indices } = tetrahedron();
+    expect(checkClosedOriented(indices!).problems).toBe(0);
+    const flipped = Uint32Array.from(indices!);
+    [flipped[1], flipped[2]] = [flipped[2]!, flipped[1]!];
+    expect(checkClosedOriented(flipped).problems).toBeGreaterThan(0);
+    expect(checkClosedOriented(indices!.slice(3)).problems).toBeGreaterThan(0);
+    const repeated = Uint32Array.from([...indices!, ...indices!.slice(0, 3)]);
+    expect(checkClosedOriented(repeated).problems).toBeGreaterThan(0);
+    expect(checkClosedOriented([0, 0, 1, 1, 0, 0]).problems).toBeGreaterThan(0); // degenerate
+  });
+  it('duplicate vertices: exact float equality, −0 equal to 0', () => {
+    const { positions } = tetrahedron();
+    expect(duplicateVertices(positions)).toBe(0);
+    const copy = new Float32Array([...positions, ...positions.slice(3, 6)]);
+    expect(duplicateVertices(copy)).toBe(1);
+    expect(duplicateVertices(new Float32Array([0, 1, 2, -0, 1, 2, 0, 1, 2.0000002]))).toBe(1);
+  });
+});
+
 describe('subdivideSphere against trusted references', () => {
   it("level 0 of the tetrahedron is the lecture's: a vertex at (0, 0, 1) and its four faces", () => {
     const mesh = subdivideSphere({ base: 'tetrahedron', level: 0, normals: 'none' });
