@@ -20,13 +20,17 @@ import {
   Skeleton,
   SkinnedMesh,
   SRGBColorSpace,
+  TorusKnotGeometry,
   Vector3,
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { skinnedCylinder } from './lib/deform';
 
-/** The models: a textured box (and a Points cloud, which the swap leaves), a vertex-coloured ball, a skinned cylinder bent by its clip. */
-export type ModelKind = 'textured' | 'vertexColours' | 'skinned';
+/**
+ * The models: a textured box (and a Points cloud, which the swap leaves), a vertex-coloured ball, a skinned
+ * cylinder bent by its clip, and a torus knot and a box in plain colours (one of them emissive).
+ */
+export type ModelKind = 'textured' | 'vertexColours' | 'skinned' | 'coloured';
 
 declare global {
   interface Window {
@@ -85,6 +89,23 @@ function vertexColours(scene: Scene): undefined {
   scene.add(mesh);
 }
 
+function coloured(scene: Scene): undefined {
+  const knot = new Mesh(
+    new TorusKnotGeometry(0.6, 0.2, 96, 12),
+    new MeshStandardMaterial({ color: 0x3080e0, roughness: 0.4, metalness: 0.2 }),
+  );
+  knot.name = 'torus knot';
+  knot.position.x = -0.9;
+  const box = new Mesh(
+    new BoxGeometry(1, 1, 1),
+    new MeshStandardMaterial({ color: 0xe04040, roughness: 0.7, emissive: 0x202000 }),
+  );
+  box.name = 'box';
+  box.position.x = 0.9;
+  box.rotation.set(0.4, 0.6, 0);
+  scene.add(knot, box);
+}
+
 /** The skinned cylinder (bones at y = −1.5 and 0) and a 2 s clip that bends it one way and back. */
 function skinned(scene: Scene): AnimationClip[] {
   const mesh = new SkinnedMesh(skinnedCylinder(0.45, 24, 16), new MeshStandardMaterial({ color: 0xd08050 }));
@@ -112,7 +133,7 @@ function skinned(scene: Scene): AnimationClip[] {
 
 window.makeModel = async (kind) => {
   const scene = new Scene();
-  const builders = { textured, vertexColours, skinned } as const;
+  const builders = { textured, vertexColours, skinned, coloured } as const;
   const animations = builders[kind](scene) ?? [];
   const glb = (await new GLTFExporter().parseAsync(scene, { binary: true, animations })) as ArrayBuffer;
   return Array.from(new Uint8Array(glb));

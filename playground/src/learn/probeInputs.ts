@@ -5,6 +5,7 @@
  */
 import {
   computeNormalMatrix,
+  type PhongLight,
   type ShadeLight,
   type ShadeMaterial,
   type ShadeThreeLight,
@@ -48,10 +49,23 @@ export function normalMatrixOf(
   return matrix;
 }
 
-/** The PhongLights on the material and three's lights in the scene, as `shade` takes them. */
+/**
+ * The PhongLights that light the material, as ShadingMaterial takes them: its `phongLights` list when it is not
+ * empty, else the scene's visible PhongLights in traversal order.
+ */
+export function phongLightsOf(material: ShadingMaterial, scene: THREE.Scene): readonly PhongLight[] {
+  if (material.phongLights.length > 0) return material.phongLights;
+  const found: PhongLight[] = [];
+  scene.traverseVisible((object) => {
+    if ((object as { isPhongLight?: boolean }).isPhongLight) found.push(object as PhongLight);
+  });
+  return found;
+}
+
+/** The PhongLights that light the material and three's lights in the scene, as `shade` takes them. */
 export function lightsOf(material: ShadingMaterial, scene: THREE.Scene): (ShadeLight | ShadeThreeLight)[] {
   const at = new THREE.Vector3();
-  const lights: (ShadeLight | ShadeThreeLight)[] = material.phongLights.map((l) => ({
+  const lights: (ShadeLight | ShadeThreeLight)[] = phongLightsOf(material, scene).map((l) => ({
     position: v3(l.getWorldPosition(at)),
     ambient: l.ambient.toArray(),
     diffuse: l.diffuse.toArray(),
@@ -132,4 +146,49 @@ export function outputOf(e: ShadeExplanation, output: string, view: THREE.Matrix
     default:
       return e.sum;
   }
+}
+
+/**
+ * Vertex `index`'s object normal as three's vertex stage makes it: the normal attribute (or, without one, the
+ * position: a sphere's analytic normal) with the morph targets' normals blended in (`morphnormal_vertex`), then
+ * skinned by the bones' matrices as a direction (`skinnormal_vertex`).
+ */
+export function objectNormalOf(mesh: THREE.Mesh, index: number, position: THREE.Vector3): THREE.Vector3 {
+  const geometry = mesh.geometry;
+  const normals = geometry.getAttribute('normal');
+  if (!normals) return position.clone();
+  const normal = new THREE.Vector3().fromBufferAttribute(normals, index);
+  const morphs = geometry.morphAttributes.normal;
+  const influences = mesh.morphTargetInfluences;
+  if (morphs && influences) {
+    const target = new THREE.Vector3();
+    let sum = 0;
+    const blended = new THREE.Vector3();
+    for (let k = 0; k < morphs.length; k++) {
+      const influence = influences[k] ?? 0;
+      if (influence === 0) continue;
+      sum += influence;
+      blended.addScaledVector(target.fromBufferAttribute(morphs[k]!, index), influence);
+    }
+    if (!geometry.morphTargetsRelative) normal.multiplyScalar(1 - sum);
+    normal.add(blended);
+  }
+  const skinned = mesh as THREE.SkinnedMesh;
+  if (skinned.isSkinnedMesh) {
+    const skinIndex = geometry.getAttribute('skinIndex');
+    const skinWeight = geometry.getAttribute('skinWeight');
+    const { bones, boneInverses } = skinned.skeleton;
+    const skin = new THREE.Matrix4().multiplyScalar(0);
+    const bone = new THREE.Matrix4();
+    for (let k = 0; k < 4; k++) {
+      const weight = skinWeight.getComponent(index, k);
+      if (weight === 0) continue;
+      const b = skinIndex.getComponent(index, k);
+      bone.multiplyMatrices(bones[b]!.matrixWorld, boneInverses[b]!);
+      for (let e = 0; e < 16; e++) skin.elements[e]! += weight * bone.elements[e]!;
+    }
+    skin.premultiply(skinned.bindMatrixInverse).multiply(skinned.bindMatrix);
+    normal.transformDirection(skin); // a direction: its length is normalised after the normal matrix anyway
+  }
+  return normal;
 }

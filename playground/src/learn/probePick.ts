@@ -7,8 +7,9 @@
 import { eyeOf, fogFactor, type ShadingMaterial } from '@shadelab/material';
 import { explainShade, type ShadeExplanation } from '@shadelab/material/explain';
 import * as THREE from 'three';
-import { lightsOf, modelOf, normalMatrixOf, outputOf, shadeMaterialOf } from './probeInputs';
+import { lightsOf, modelOf, normalMatrixOf, objectNormalOf, outputOf, shadeMaterialOf } from './probeInputs';
 import { barycentric, blend, displayed8, ndcOfPixel, pixelOfNdc, raw8, type V3 } from './probeMath';
+import { sampleTexture, type TexelRead, transformedUv, type V4 } from './probeTexture';
 
 /** One vertex of a Gouraud-shaded triangle: where it is lit and its colour (or output term; linear, unclamped). */
 export interface ProbeVertex {
@@ -46,8 +47,10 @@ export interface ProbeHit {
   readonly srgb8: V3;
   /** three's fog factor at the point; null without fog. */
   readonly fog: number | null;
-  /** What the probe does not reproduce here (a texture's texel, a deformed normal, a term view). */
+  /** What to know about this pixel (a centre on an edge). */
   readonly notes: readonly string[];
+  /** What the probe could not compute here (a minified texture's texel, …): when any, it shows no colour. */
+  readonly unreproduced: readonly string[];
 }
 
 /** A probe that met no shaded surface, and why. */
@@ -63,7 +66,13 @@ export type ProbeResult = ProbeHit | ProbeMiss;
 const isShading = (m: unknown): m is ShadingMaterial =>
   (m as { isShadingMaterial?: boolean } | null)?.isShadingMaterial === true;
 const MARKER = /^light marker/;
+/** A pixel centre this near an edge (in pixels: a rasteriser's sub-pixel precision) is a tie between faces. */
+const EDGE_PIXELS = 1 / 64;
+/** The note on such a pixel. */
+export const ON_EDGE =
+  'The pixel’s centre is on an edge (within 1/64 pixel): the GPU’s rasteriser may draw the neighbouring face.';
 const raycaster = new THREE.Raycaster();
+const neighbour = new THREE.Raycaster();
 const v3 = (v: THREE.Vector3): V3 => [v.x, v.y, v.z];
 
 /** Whether a world point survives the material's clipping planes (three drops the negative side). */
@@ -100,7 +109,7 @@ export function probePixel(
   if (!isShading(mesh.material)) {
     return { hit: false, pixel, reason: `The ${mesh.name} hides the surface at this pixel.` };
   }
-  return explainHit(scene, camera, mesh, mesh.material, found, pixel);
+  return explainHit(scene, camera, mesh, mesh.material, found, pixel, [width, height]);
 }
 
 function explainHit(
@@ -110,6 +119,7 @@ function explainHit(
   material: ShadingMaterial,
   found: THREE.Intersection,
   pixel: [number, number],
+  size: [number, number],
 ): ProbeHit {
   const notes: string[] = [];
   const instanceId = found.instanceId ?? null;
@@ -128,10 +138,6 @@ function explainHit(
   const front = faceNormal.dot(rayLocal) < 0;
   const side = material.side;
   const sign = side === THREE.BackSide || (side === THREE.DoubleSide && !front) ? -1 : 1;
-  // The object normals: the normal attribute, or the position (a sphere without one: analytic normals).
-  const normals = geometry.getAttribute('normal');
-  const objectNormal = (i: number, p: THREE.Vector3) =>
-    normals ? new THREE.Vector3().fromBufferAttribute(normals, i) : p.clone();
   // The tint: instance colour × vertex colour (three's USE_COLOR when vertexColors is on).
   const instanceColor = new THREE.Color(1, 1, 1);
   if (instanceId !== null && (mesh as THREE.InstancedMesh).instanceColor)
@@ -142,21 +148,80 @@ function explainHit(
     if (colors) for (let k = 0; k < 3; k++) t[k]! *= colors.getComponent(i, k);
     return t;
   });
-  if (material.map) notes.push('The texture’s texel tints ka and kd on the GPU; the probe does not read it.');
-  if (material.normalMap && material.shading === 'phong') notes.push('The normal map is not applied here.');
-  if ((mesh as THREE.SkinnedMesh).isSkinnedMesh || mesh.morphTargetInfluences?.length)
-    notes.push('Skinned or morphed: positions are deformed here, normals are not.');
   const output = (material as { output?: string }).output ?? 'color';
   const drawnValue = (e: ShadeExplanation) => outputOf(e, output, camera.matrixWorldInverse);
 
+  // The textures at the pixel. The rays through its right and upper neighbours meet the triangle's plane: the
+  // surface's change across one pixel, as the GPU's derivatives see it (the level of detail, the tangent frame).
+  const plane = new THREE.Plane().setFromCoplanarPoints(
+    ...(corners.map((p) => p.clone().applyMatrix4(model)) as [THREE.Vector3, THREE.Vector3, THREE.Vector3]),
+  );
+  const onPlane = (x: number, y: number) => {
+    const [nx, ny] = ndcOfPixel(x, y, size[0], size[1]);
+    neighbour.setFromCamera(new THREE.Vector2(nx, ny), camera);
+    const world = neighbour.ray.intersectPlane(plane, new THREE.Vector3());
+    if (!world) return null;
+    return { world, weights: barycentric(v3(world.clone().applyMatrix4(inverse)), v3(pa), v3(pb), v3(pc)) };
+  };
+  const right = onPlane(pixel[0] + 1, pixel[1]);
+  const up = onPlane(pixel[0], pixel[1] - 1);
+  const unreproduced: string[] = [];
+  const uvsOf = (texture: THREE.Texture) => {
+    const name = texture.channel === 0 ? 'uv' : `uv${texture.channel}`;
+    const uv = geometry.getAttribute(name);
+    if (!uv || !right || !up) return null;
+    const at = (w: V3) => {
+      const sum = new THREE.Vector2();
+      [a, b, c].forEach((index, k) => {
+        sum.addScaledVector(new THREE.Vector2(uv.getX(index), uv.getY(index)), w[k]!);
+      });
+      return transformedUv(texture, sum);
+    };
+    const here = at(weights);
+    return { here, dx: at(right.weights).sub(here), dy: at(up.weights).sub(here) };
+  };
+  const sample = (texture: THREE.Texture | null, what: string): V4 | null => {
+    if (!texture) return null;
+    const uvs = uvsOf(texture);
+    const read: TexelRead = uvs
+      ? sampleTexture(texture, uvs.here, uvs.dx, uvs.dy)
+      : { reason: 'the geometry has no uv for it' };
+    if ('value' in read) return read.value;
+    unreproduced.push(`The ${what}’s texel is not reproduced: ${read.reason}.`);
+    return null;
+  };
+  const texel = sample(material.map, 'texture');
+  const emissiveTexel = sample(material.emissiveMap, 'emissive map');
+  const texelTint = (t: V3): V3 => (texel ? [t[0] * texel[0], t[1] * texel[1], t[2] * texel[2]] : t);
+
   const eye = eyeOf(camera, new THREE.Vector4()).toArray();
-  const shadeMaterial = shadeMaterialOf(material);
+  const emissive = material.emissive.toArray();
+  const shadeMaterial = {
+    ...shadeMaterialOf(material),
+    emissive: emissiveTexel ? emissive.map((e, k) => e * emissiveTexel[k]!) : emissive,
+  };
   const lights = lightsOf(material, scene);
   const explain = (position: V3, normal: V3, tint: V3) =>
     explainShade({ position, normal, eye, tint }, shadeMaterial, lights);
   const toWorld = (p: THREE.Vector3) => v3(p.clone().applyMatrix4(model));
   const worldNormal = (n: THREE.Vector3) => v3(n.clone().applyMatrix3(normalMatrix).multiplyScalar(sign));
   const point = v3(found.point);
+  // Lit in the vertex stage with a texture: the ka/kd part × the texel at the fragment, plus the ks part.
+  const split = texel !== null && output === 'color';
+  const splitColor = (ad: V3, specular: V3, emissive: V3): V3 =>
+    [0, 1, 2].map((k) => ad[k]! * texel![k]! + specular[k]! + emissive[k]!) as V3;
+  const parts = (e: ShadeExplanation) => {
+    const ad: V3 = [0, 0, 0];
+    const specular: V3 = [0, 0, 0];
+    for (const light of e.lights)
+      for (let k = 0; k < 3; k++) {
+        ad[k]! += light.ambient[k]! + light.diffuse[k]!;
+        specular[k]! += light.specular[k]!;
+      }
+    return { ad, specular };
+  };
+  if (material.map && output !== 'color' && material.shading !== 'phong')
+    unreproduced.push('A term view of a textured, vertex-lit surface is not reproduced.');
 
   let at = point;
   let atLabel = 'the hit point';
@@ -171,19 +236,32 @@ function explainHit(
       at = toWorld(pa.clone().add(pb).add(pc).divideScalar(3));
       atLabel = 'the face’s centroid';
     }
-    explanation = explain(at, normal, tints[2]!);
-    if (Math.min(...weights) < 1e-9)
-      notes.push('The pixel’s centre is on an edge: the GPU’s fill rule may draw the neighbouring face.');
+    // The provoking vertex's tint (the last on WebGL2); lit per fragment, the texel is in the tint.
+    explanation = explain(at, normal, perFragment ? texelTint(tints[2]!) : tints[2]!);
+    // Within a rasteriser's sub-pixel precision of an edge, the GPU may draw the neighbouring face here.
+    const nearEdge = [
+      [1, 0],
+      [-1, 0],
+      [0, 1],
+      [0, -1],
+    ].some(([dx, dy]) => {
+      const moved = onPlane(pixel[0] + dx! * EDGE_PIXELS, pixel[1] + dy! * EDGE_PIXELS);
+      return moved !== null && Math.min(...moved.weights) < 0;
+    });
+    if (nearEdge) notes.push(ON_EDGE);
     flat = {
       centroid: toWorld(pa.clone().add(pb).add(pc).divideScalar(3)),
       normal: explanation.n,
       perFragment,
     };
-    linear = drawnValue(explanation);
+    if (split && !perFragment) {
+      const { ad, specular } = parts(explanation);
+      linear = splitColor(ad, specular, explanation.emissive as V3);
+    } else linear = drawnValue(explanation);
   } else if (material.shading === 'gouraud') {
     const vertices = [a, b, c].map((index, i): ProbeVertex => {
       const p = corners[i]!;
-      const e = explain(toWorld(p), worldNormal(objectNormal(index, p)), tints[i]!);
+      const e = explain(toWorld(p), worldNormal(objectNormalOf(mesh, index, p)), tints[i]!);
       return { point: toWorld(p), normal: e.n, color: drawnValue(e), explanation: e };
     });
     const k = weights.indexOf(Math.max(...weights));
@@ -191,16 +269,36 @@ function explainHit(
     atLabel = `vertex ${k + 1} (the largest weight)`;
     explanation = vertices[k]!.explanation;
     gouraud = { vertices, weights };
-    linear = blend([vertices[0]!.color, vertices[1]!.color, vertices[2]!.color], weights);
+    if (split) {
+      const blended = vertices.map((vertex) => parts(vertex.explanation));
+      linear = splitColor(
+        blend(blended.map((p) => p.ad) as [V3, V3, V3], weights),
+        blend(blended.map((p) => p.specular) as [V3, V3, V3], weights),
+        explanation.emissive as V3,
+      );
+    } else linear = blend([vertices[0]!.color, vertices[1]!.color, vertices[2]!.color], weights);
   } else {
     // Phong shading: the unit vertex normals (world) blended, the tint blended, lit at the hit point.
     const unit = [a, b, c].map((index, i): V3 => {
-      const n = objectNormal(index, corners[i]!).applyMatrix3(normalMatrix);
+      const n = objectNormalOf(mesh, index, corners[i]!).applyMatrix3(normalMatrix);
       const length = n.length();
       return length > 0 ? v3(n.divideScalar(length)) : [0, 0, 0];
     });
-    const n = blend(unit as [V3, V3, V3], weights).map((x) => x * sign) as V3;
-    const tint = blend(tints as [V3, V3, V3], weights);
+    let n = blend(unit as [V3, V3, V3], weights).map((x) => x * sign) as V3;
+    if (material.normalMap) {
+      const mapped = sample(material.normalMap, 'normal map');
+      const uvs = uvsOf(material.normalMap);
+      if (mapped && uvs && right && up) {
+        const frame = {
+          q0: right.world.clone().sub(found.point),
+          q1: up.world.clone().sub(found.point),
+          st0: uvs.dx,
+          st1: uvs.dy,
+        };
+        n = perturbedNormal(material, mapped, n, front, normalMatrix, frame);
+      }
+    }
+    const tint = texelTint(blend(tints as [V3, V3, V3], weights));
     explanation = explain(point, n, tint);
     linear = drawnValue(explanation);
   }
@@ -235,7 +333,46 @@ function explainHit(
     srgb8,
     fog,
     notes,
+    unreproduced,
   };
+}
+
+/**
+ * The normal a normal map gives (three's `normal_fragment_maps`): in tangent space through three's derivative
+ * tangent frame (`getTangentFrame`, from the point's and the uv's change across one pixel, `q0`/`st0` to the
+ * right and `q1`/`st1` upwards), or in object space through the normal matrix; turned to the drawn side.
+ */
+function perturbedNormal(
+  material: ShadingMaterial,
+  texel: V4,
+  normal: V3,
+  front: boolean,
+  normalMatrix: THREE.Matrix3,
+  frame: { q0: THREE.Vector3; q1: THREE.Vector3; st0: THREE.Vector2; st1: THREE.Vector2 },
+): V3 {
+  const mapN = new THREE.Vector3(texel[0] * 2 - 1, texel[1] * 2 - 1, texel[2] * 2 - 1);
+  const faceDirection = front ? 1 : -1;
+  if (material.normalMapType === THREE.ObjectSpaceNormalMap) {
+    if (material.side === THREE.BackSide) mapN.negate();
+    if (material.side === THREE.DoubleSide) mapN.multiplyScalar(faceDirection);
+    return v3(mapN.applyMatrix3(normalMatrix).normalize());
+  }
+  // A BackSide material's frame is turned round (three's refreshUniformsCommon negates normalScale).
+  const flip = material.side === THREE.BackSide ? -1 : 1;
+  mapN.x *= flip * material.normalScale.x;
+  mapN.y *= flip * material.normalScale.y;
+  const { q0, q1, st0, st1 } = frame;
+  const n = new THREE.Vector3(...normal).normalize();
+  const q1perp = q1.clone().cross(n);
+  const q0perp = n.clone().cross(q0);
+  const t = q1perp.clone().multiplyScalar(st0.x).addScaledVector(q0perp, st1.x);
+  const b = q1perp.clone().multiplyScalar(st0.y).addScaledVector(q0perp, st1.y);
+  const det = Math.max(t.dot(t), b.dot(b));
+  const scale =
+    (det === 0 ? 0 : 1 / Math.sqrt(det)) * (material.side === THREE.DoubleSide ? faceDirection : 1);
+  t.multiplyScalar(scale);
+  b.multiplyScalar(scale);
+  return v3(t.multiplyScalar(mapN.x).addScaledVector(b, mapN.y).addScaledVector(n, mapN.z).normalize());
 }
 
 /**

@@ -85,7 +85,8 @@ function LightRows({ light, index, lighting }: { light: LightExplanation; index:
 }
 
 function Colour({ hit, gpu }: { hit: ProbeHit; gpu: V3 | null }) {
-  const delta = gpu ? maxChannelDifference(gpu, hit.srgb8) : null;
+  const computed = hit.unreproduced.length === 0;
+  const delta = gpu && computed ? maxChannelDifference(gpu, hit.srgb8) : null;
   return (
     <dl className="probe-grid">
       {hit.output !== 'color' && <Row name="output">the {hit.output} view (the material’s `output`)</Row>}
@@ -95,9 +96,13 @@ function Colour({ hit, gpu }: { hit: ProbeHit; gpu: V3 | null }) {
       <Row name="clamped">{vec(clamp01(hit.linear))}</Row>
       {hit.fog !== null && <Row name="fog factor">{f3(hit.fog)}</Row>}
       <Row name="shade() → 8-bit">
-        <span data-testid="probe-cpu" data-rgb={hit.srgb8.join(',')}>
-          <Swatch rgb={hit.srgb8} /> ({hit.srgb8.join(', ')})
-        </span>
+        {computed ? (
+          <span data-testid="probe-cpu" data-rgb={hit.srgb8.join(',')}>
+            <Swatch rgb={hit.srgb8} /> ({hit.srgb8.join(', ')})
+          </span>
+        ) : (
+          <span data-testid="probe-unreproduced">— {hit.unreproduced.join(' ')}</span>
+        )}
       </Row>
       <Row name="GPU pixel">
         {gpu ? (
