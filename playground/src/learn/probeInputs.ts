@@ -14,6 +14,7 @@ import {
 import type { ShadeExplanation } from '@shadelab/material/explain';
 import * as THREE from 'three';
 import type { V3 } from './probeMath';
+import type { V4 } from './probeTexture';
 
 const v3 = (v: THREE.Vector3): V3 => [v.x, v.y, v.z];
 
@@ -191,4 +192,42 @@ export function objectNormalOf(mesh: THREE.Mesh, index: number, position: THREE.
     normal.transformDirection(skin); // a direction: its length is normalised after the normal matrix anyway
   }
   return normal;
+}
+
+/**
+ * The normal a normal map gives (three's `normal_fragment_maps`): in tangent space through three's derivative
+ * tangent frame (`getTangentFrame`, from the point's and the uv's change across one pixel, `q0`/`st0` to the
+ * right and `q1`/`st1` upwards), or in object space through the normal matrix; turned to the drawn side.
+ */
+export function perturbedNormal(
+  material: ShadingMaterial,
+  texel: V4,
+  normal: V3,
+  front: boolean,
+  normalMatrix: THREE.Matrix3,
+  frame: { q0: THREE.Vector3; q1: THREE.Vector3; st0: THREE.Vector2; st1: THREE.Vector2 },
+): V3 {
+  const mapN = new THREE.Vector3(texel[0] * 2 - 1, texel[1] * 2 - 1, texel[2] * 2 - 1);
+  const faceDirection = front ? 1 : -1;
+  if (material.normalMapType === THREE.ObjectSpaceNormalMap) {
+    if (material.side === THREE.BackSide) mapN.negate();
+    if (material.side === THREE.DoubleSide) mapN.multiplyScalar(faceDirection);
+    return v3(mapN.applyMatrix3(normalMatrix).normalize());
+  }
+  // A BackSide material's frame is turned round (three's refreshUniformsCommon negates normalScale).
+  const flip = material.side === THREE.BackSide ? -1 : 1;
+  mapN.x *= flip * material.normalScale.x;
+  mapN.y *= flip * material.normalScale.y;
+  const { q0, q1, st0, st1 } = frame;
+  const n = new THREE.Vector3(...normal).normalize();
+  const q1perp = q1.clone().cross(n);
+  const q0perp = n.clone().cross(q0);
+  const t = q1perp.clone().multiplyScalar(st0.x).addScaledVector(q0perp, st1.x);
+  const b = q1perp.clone().multiplyScalar(st0.y).addScaledVector(q0perp, st1.y);
+  const det = Math.max(t.dot(t), b.dot(b));
+  const scale =
+    (det === 0 ? 0 : 1 / Math.sqrt(det)) * (material.side === THREE.DoubleSide ? faceDirection : 1);
+  t.multiplyScalar(scale);
+  b.multiplyScalar(scale);
+  return v3(t.multiplyScalar(mapN.x).addScaledVector(b, mapN.y).addScaledVector(n, mapN.z).normalize());
 }

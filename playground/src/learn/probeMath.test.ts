@@ -11,6 +11,7 @@ import {
   displayed8,
   maxChannelDifference,
   ndcOfPixel,
+  nearCelEdge,
   pixelOfNdc,
   raw8,
   type V3,
@@ -178,4 +179,17 @@ describe('probePixel (three.js scene, no renderer)', () => {
     const { root, camera } = scene(shading);
     return [root, camera, 100, 100, 200, 200] as const;
   }
+});
+
+describe('nearCelEdge', () => {
+  const lit = (lDotN: number, cosine: number) =>
+    ({ lights: [{ lDotN, cosine }] }) as unknown as Parameters<typeof nearCelEdge>[0];
+  it('flags max(l·n, 0)·N at an inner band threshold and a highlight power at 0.5, nothing else', () => {
+    expect(nearCelEdge(lit(0.5 + 1e-4, 0), 4, 32)).toBe(true); // 0.5 · 4 = 2: the edge of bands 1 and 2
+    expect(nearCelEdge(lit(0.6, 0), 4, 32)).toBe(false);
+    expect(nearCelEdge(lit(1, 0), 4, 32)).toBe(false); // the top is no threshold
+    expect(nearCelEdge(lit(0.6, 0.5 ** (1 / 32)), 4, 32)).toBe(true); // power 0.5
+    expect(nearCelEdge(lit(0.6, 0.9), 4, 32)).toBe(false);
+    expect(nearCelEdge(lit(0.5, 0), 0, 32)).toBe(false); // cel off
+  });
 });

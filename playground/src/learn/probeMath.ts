@@ -1,8 +1,9 @@
 /**
  * The probe's pure arithmetic (no three.js, no DOM): which device pixel a click lands on and the NDC of its
  * centre, the barycentric weights with which the GPU blends a triangle's vertex values at a point, and the
- * 8-bit colour the canvas keeps (sRGB, after three's fog).
+ * 8-bit colour the canvas keeps (sRGB, after three's fog), and whether a cel-lit point is at a band's edge.
  */
+import type { ShadeExplanation } from '@shadelab/material/explain';
 
 /** A 3-vector. */
 export type V3 = [number, number, number];
@@ -110,4 +111,25 @@ export function raw8(value: ArrayLike<number>): V3 {
 /** The largest difference between two colours' channels (8-bit codes). */
 export function maxChannelDifference(a: ArrayLike<number>, b: ArrayLike<number>): number {
   return Math.max(Math.abs(a[0]! - b[0]!), Math.abs(a[1]! - b[1]!), Math.abs(a[2]! - b[2]!));
+}
+
+/** How near (in the cosine) a cel threshold counts as on it: float32 normals and positions move that much. */
+const CEL_EDGE = 2e-3;
+
+/**
+ * Whether a cel-lit explanation has a light at a band's edge: max(l·n, 0)·N within {@link CEL_EDGE} of an inner
+ * band threshold, or the highlight's power within as much of its 0.5 threshold (scaled by its slope).
+ */
+export function nearCelEdge(e: ShadeExplanation, bands: number, shininess: number): boolean {
+  if (bands <= 0) return false;
+  return e.lights.some((light) => {
+    if (light.lDotN === null) return false;
+    const x = Math.max(light.lDotN, 0) * bands;
+    const threshold = Math.round(x);
+    if (threshold > 0 && threshold < bands && Math.abs(x - threshold) < CEL_EDGE * bands) return true;
+    const cosine = Math.max(light.cosine, 0);
+    const power = cosine ** shininess;
+    const slope = cosine > 0 ? (shininess * power) / cosine : 0;
+    return Math.abs(power - 0.5) < CEL_EDGE * Math.max(slope, 1);
+  });
 }

@@ -26,6 +26,16 @@ describe('sampleTexture (the probe reads a texel as WebGL samples it)', () => {
     expect(value(at(texture({ flipY: true }), 0.25, 0.25))).toEqual([0, 0, 1, 1]);
   });
 
+  it('reads the pixels again after needsUpdate or a change of flipY', () => {
+    const t = texture();
+    expect(value(at(t, 0.25, 0.25))).toEqual([1, 0, 0, 1]);
+    (t.image.data as Uint8Array).set([0, 0, 0, 255], 0);
+    t.needsUpdate = true;
+    expect(value(at(t, 0.25, 0.25))).toEqual([0, 0, 0, 1]);
+    t.flipY = true;
+    expect(value(at(t, 0.25, 0.25))).toEqual([0, 0, 1, 1]);
+  });
+
   it('linear: bilinear between texel centres; repeat wraps, clamp holds the edge', () => {
     const linear = { magFilter: THREE.LinearFilter };
     expect(value(at(texture(linear), 0.5, 0.25))).toEqual([0.5, 0.5, 0, 1]);

@@ -25,7 +25,11 @@ const LOD_MARGIN = 0.05;
 /** A texel coordinate this near a texel boundary (in texels: twice a GPU's 1/256 sub-texel step) is a tie. */
 const SUBTEXEL = 1 / 128;
 
-const cache = new WeakMap<object, Pixels | null>();
+/** Each texture's pixels, read again when its image, `flipY` or version (a `needsUpdate`) changes. */
+const cache = new WeakMap<
+  THREE.Texture,
+  { image: unknown; flipY: boolean; version: number; pixels: Pixels | null }
+>();
 
 /** The texture's RGBA bytes, rows in the order WebGL uploads them (row 0 is v = 0); null when unreadable. */
 function pixelsOf(texture: THREE.Texture): Pixels | null {
@@ -34,7 +38,14 @@ function pixelsOf(texture: THREE.Texture): Pixels | null {
     | CanvasImageSource
     | null;
   if (!image || typeof image !== 'object') return null;
-  if (cache.has(image)) return cache.get(image)!;
+  const cached = cache.get(texture);
+  if (
+    cached &&
+    cached.image === image &&
+    cached.flipY === texture.flipY &&
+    cached.version === texture.version
+  )
+    return cached.pixels;
   let read: Pixels | null = null;
   const { width, height } = image as { width?: number; height?: number };
   if (typeof width === 'number' && typeof height === 'number' && width > 0 && height > 0) {
@@ -62,7 +73,7 @@ function pixelsOf(texture: THREE.Texture): Pixels | null {
       read = { data: flipped, width, height };
     }
   }
-  cache.set(image, read);
+  cache.set(texture, { image, flipY: texture.flipY, version: texture.version, pixels: read });
   return read;
 }
 
