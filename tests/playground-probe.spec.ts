@@ -85,6 +85,21 @@ function expectAgrees(probed: Probed, where: string): void {
   expect(delta, `${where}: probe ${probed.cpu} vs GPU ${probed.gpu}`).toBeLessThanOrEqual(1);
 }
 
+/**
+ * Probes each point of the state shown; every probe that hits (off the object and ties are passed over) agrees
+ * with the GPU. Returns how many hit, for the caller to require some.
+ */
+async function agreeingHits(points: readonly (readonly [number, number])[], where: string): Promise<number> {
+  let hits = 0;
+  for (const [fx, fy] of points) {
+    const probed = await probeAt(fx, fy);
+    if (probed.miss || tie(probed)) continue;
+    hits++;
+    expectAgrees(probed, `${where} at (${fx}, ${fy})`);
+  }
+  return hits;
+}
+
 /** Points on the default sphere (scale 2, 1, 2 from (0, 0, 3)): centre, highlight side, rim, lower left. */
 const SPHERE_POINTS = [
   [0.5, 0.5],
@@ -155,14 +170,8 @@ for (const { scene, points } of SCENES) {
     test(`the ${scene} scene, ${shading} shading: the probe agrees with the GPU pixel for every lighting`, async () => {
       for (const lighting of LIGHTINGS) {
         await show({ scene, material: { shading, ...lighting.material } });
-        let hits = 0;
-        for (const [fx, fy] of points) {
-          const probed = await probeAt(fx, fy);
-          if (probed.miss || tie(probed)) continue; // between the instances, or a tie
-          hits++;
-          expectAgrees(probed, `${scene} ${shading} × ${lighting.name} at (${fx}, ${fy})`);
-        }
-        expect(hits, `${scene} ${shading} × ${lighting.name}: probes that hit`).toBeGreaterThan(0);
+        const where = `${scene} ${shading} × ${lighting.name}`;
+        expect(await agreeingHits(points, where), `${where}: probes that hit`).toBeGreaterThan(0);
       }
     });
   }
@@ -208,14 +217,8 @@ for (const kind of MODELS) {
     for (const [i, shading] of SHADINGS.entries()) {
       for (const lighting of kind === 'coloured' ? LIGHTINGS : [LIGHTINGS[i]!]) {
         await show({ scene: 'model', material: { shading, ...lighting.material } });
-        let hits = 0;
-        for (const [fx, fy] of MODEL_POINTS) {
-          const probed = await probeAt(fx, fy);
-          if (probed.miss || tie(probed)) continue; // beside the model, or a tie
-          hits++;
-          expectAgrees(probed, `${kind} ${shading} × ${lighting.name} at (${fx}, ${fy})`);
-        }
-        expect(hits, `${kind} ${shading} × ${lighting.name}: probes that hit`).toBeGreaterThan(1);
+        const where = `${kind} ${shading} × ${lighting.name}`;
+        expect(await agreeingHits(MODEL_POINTS, where), `${where}: probes that hit`).toBeGreaterThan(1);
       }
     }
   });
@@ -248,14 +251,7 @@ test("normalMatrix 'model' (the lecture's wrong normals under the (2, 1, 2) scal
     }
   }
   await show({ scene: 'instanced', material: { shading: 'phong', normalMatrix: 'model' } });
-  let hits = 0;
-  for (const [fx, fy] of SCENES[0].points) {
-    const probed = await probeAt(fx, fy);
-    if (probed.miss) continue; // between the instances
-    hits++;
-    expectAgrees(probed, `instanced, normalMatrix model at (${fx}, ${fy})`);
-  }
-  expect(hits).toBeGreaterThan(0);
+  expect(await agreeingHits(SCENES[0].points, 'instanced, normalMatrix model')).toBeGreaterThan(0);
 });
 
 test('a probe off the object says so; the arrows toggle', async () => {

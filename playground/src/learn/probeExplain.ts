@@ -55,7 +55,7 @@ export interface ProbeHit {
   readonly srgb8: V3;
   /** three's fog factor at the point; null without fog. */
   readonly fog: number | null;
-  /** What to know about this pixel (a centre on an edge). */
+  /** Ties the GPU may break either way here (a centre on a flat face's edge, a light at a cel band's edge). */
   readonly notes: readonly string[];
   /** What the probe could not compute here (a minified texture's texel, …): when any, it shows no colour. */
   readonly unreproduced: readonly string[];
