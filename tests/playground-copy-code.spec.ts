@@ -137,17 +137,23 @@ async function playgroundPicture(page: Page): Promise<RgbaImage> {
   return decodePng(Buffer.from(url.slice(url.indexOf(',') + 1), 'base64'));
 }
 
-/** Clicks a copy button and reads the dialog's code, then closes it. */
+/**
+ * Clicks a copy button and reads the dialog's code, then closes it: the three.js dialog with its close button,
+ * the R3F one with Escape (its close button has the focus), and the focus goes back to the copy button.
+ */
 async function copied(page: Page, variant: CodeVariant): Promise<string> {
-  await page.getByTestId(`copy-code-${variant}`).click();
-  const code = page.getByTestId('copy-code');
+  const button = page.getByTestId(`copy-code-${variant}`);
+  await button.click();
+  const dialog = page.getByRole('dialog', { name: /^Copy as code/ });
+  const code = dialog.getByRole('textbox', { name: /: src\/main\.tsx?$/ });
   await expect(code).toHaveAttribute('data-variant', variant);
   const text = await code.inputValue();
-  await page
-    .getByRole('dialog', { name: /^Copy as code/ })
-    .getByRole('button', { name: 'close' })
-    .click();
-  await expect(code).toHaveCount(0);
+  const close = dialog.getByRole('button', { name: 'close' });
+  await expect(close).toBeFocused();
+  if (variant === 'three') await close.click();
+  else await page.keyboard.press('Escape');
+  await expect(dialog).toHaveCount(0);
+  await expect(button).toBeFocused();
   return text;
 }
 

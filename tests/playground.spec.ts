@@ -499,6 +499,15 @@ test.describe('the playground', () => {
     await page.keyboard.press('ArrowUp');
     await settle(page);
     expect(((await urlState(page))['material'] as { shading: string }).shading).toBe('gouraud');
+    // A number is shown with its step's decimals: the concepts page's c = 0.002 is typed and kept.
+    const c = page.locator('[id="Light 1.light1C"]');
+    await expect(c).toHaveValue('0.000');
+    await c.fill('0.002');
+    await c.press('Enter');
+    await settle(page);
+    await expect(c).toHaveValue('0.002');
+    const [light] = (await urlState(page))['lights'] as { attenuation: { c: number } }[];
+    expect(light!.attenuation.c).toBe(0.002);
   });
 });
 

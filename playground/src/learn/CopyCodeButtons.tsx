@@ -3,14 +3,14 @@
  * clipboard and shows it in a dialog (from which it can be selected and copied when the clipboard is refused).
  * The generators are loaded on the first click.
  */
-import { useState } from 'react';
+import { useEffect, useRef, useState } from 'react';
 import { createPortal } from 'react-dom';
 import { type PlaygroundState, validateState } from '../state/schema';
 import type { CodeVariant } from './copyCode';
 
 const LABELS: Record<CodeVariant, { button: string; title: string; file: string }> = {
   three: { button: 'three.js', title: 'three.js program', file: 'src/main.ts' },
-  r3f: { button: 'R3F', title: 'React Three Fiber app', file: 'src/main.tsx' },
+  r3f: { button: 'R3F', title: 'React Three Fiber (R3F) app', file: 'src/main.tsx' },
 };
 
 const DIALOG_STYLE = {
@@ -56,6 +56,24 @@ export function CopyCodeButtons({ state }: { state: PlaygroundState }) {
     setShown((s) => (s?.code === code ? { ...s, copied: copied ?? false } : s));
   };
   const label = shown && LABELS[shown.variant];
+  const opener = useRef<HTMLButtonElement | null>(null);
+  const close = useRef<HTMLButtonElement | null>(null);
+  const isShown = shown !== null;
+  // While the dialog is open, Escape closes it; the close button takes the focus, and the button that opened the
+  // dialog gets it back.
+  useEffect(() => {
+    if (!isShown) return;
+    const returnTo = opener.current;
+    close.current?.focus();
+    const onKey = (event: KeyboardEvent) => {
+      if (event.key === 'Escape') setShown(null);
+    };
+    document.addEventListener('keydown', onKey);
+    return () => {
+      document.removeEventListener('keydown', onKey);
+      returnTo?.focus();
+    };
+  }, [isShown]);
   return (
     <span>
       copy as code:{' '}
@@ -64,7 +82,11 @@ export function CopyCodeButtons({ state }: { state: PlaygroundState }) {
           key={variant}
           type="button"
           data-testid={`copy-code-${variant}`}
-          onClick={() => void copy(variant)}
+          aria-label={`copy as code: ${LABELS[variant].title}`}
+          onClick={(event) => {
+            opener.current = event.currentTarget;
+            void copy(variant);
+          }}
         >
           {LABELS[variant].button}
         </button>
@@ -73,7 +95,7 @@ export function CopyCodeButtons({ state }: { state: PlaygroundState }) {
       {shown &&
         label &&
         createPortal(
-          <div role="dialog" aria-label={`Copy as code: ${label.title}`} style={DIALOG_STYLE}>
+          <div role="dialog" aria-modal="true" aria-label={`Copy as code: ${label.title}`} style={DIALOG_STYLE}>
             <div>
               <strong>{label.title}</strong> ({label.file} of a Vite app;{' '}
               {shown.copied === null
@@ -82,12 +104,13 @@ export function CopyCodeButtons({ state }: { state: PlaygroundState }) {
                   ? 'copied to the clipboard'
                   : 'the clipboard was refused: select the code and copy it'}
               ){' '}
-              <button type="button" onClick={() => setShown(null)}>
+              <button type="button" ref={close} onClick={() => setShown(null)}>
                 close
               </button>
             </div>
             <textarea
               readOnly
+              aria-label={`${label.title}: ${label.file}`}
               data-testid="copy-code"
               data-variant={shown.variant}
               value={shown.code}

@@ -1,12 +1,15 @@
 // Copy as code, the generators alone: minimal (an option at its package default writes no line), complete (every
 // state field is either in the code, and changing it changes both programs, or documented as not exported), and
-// reading back the exact numbers. The programs are pasted, type-checked, built and run against the playground's
+// numbers written to 15 significant digits. The programs are pasted, type-checked, built and run against the playground's
 // picture in tests/playground-copy-code.spec.ts.
+import { readdirSync, readFileSync } from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import { isField, LIGHT_FIELDS, STATE_FIELDS, type Table } from '../state/fields';
 import { defaultState, type PlaygroundState, SCENES, validateState } from '../state/schema';
 import { NOT_EXPORTED, programOf } from './copyCode';
+import { num } from './copyCodeFormat';
 import { codeScene, defaults } from './copyCodeModel';
+import { SHADELAB_DEPENDENCIES } from './copyCodeThree';
 
 /** Every leaf field of the state, as a path (`material.ka`, `lights[].position`, `lights[].attenuation.a`). */
 function leaves(table: Table, prefix = ''): string[] {
@@ -223,10 +226,17 @@ describe('copy as code', () => {
     expect(three).toContain('sphere.scale.set(2, 1, 2);');
     // Package names, never the playground's modules.
     expect(three).not.toMatch(/from '\.|playground|engine|state\//);
-    expect(three.split('\n')[0]).toBe(
-      '// npm install @shadelab/camera @shadelab/material @shadelab/sphere @shadelab/trackball three && npm install --save-dev @types/three',
-    );
+    // The README's Install: the tarballs `npm run pack` writes (the packages are not on npm yet), three beside them.
+    expect(three.split('\n').slice(0, 2)).toEqual([
+      '// The @shadelab packages are not on npm yet: in a clone of shadelab, `npm ci && npm run pack -- --out /tmp/shadelab`, then',
+      '// npm install three /tmp/shadelab/shadelab-{camera,material,sphere,trackball}-*.tgz && npm install --save-dev @types/three',
+    ]);
     const r3f = programOf('r3f', defaultState());
+    // The R3F app imports nothing from three itself; three is installed all the same (every package's peer).
+    // @shadelab/react's own @shadelab peers come from the tarballs too (npm would look for them on the registry).
+    expect(r3f.split('\n')[1]).toBe(
+      '// npm install @react-three/fiber react react-dom three /tmp/shadelab/shadelab-{camera,material,react,sphere,trackball}-*.tgz && npm install --save-dev @types/react @types/react-dom @types/three',
+    );
     expect(r3f).toContain('<LectureCamera makeDefault fovy={90} far={10} />');
     expect(r3f).toContain('ks={[1, 1, 1]}'); // a number would be a hex colour in an R3F prop
     expect(r3f).not.toMatch(/from '\.|playground|engine|state\//);
@@ -261,13 +271,15 @@ describe('copy as code', () => {
     }
   });
 
-  test('numbers are written so that they read back exactly', () => {
+  test('numbers are written to 15 significant digits, without the noise of arithmetic', () => {
     const state = defaultState();
     state.material.shininess = 0.1 + 0.2;
     state.trackball.rotation = [0, Math.SQRT1_2, 0, Math.SQRT1_2];
+    state.camera.at = [0, 0, -0.20000000000000018];
     const three = programOf('three', state);
-    expect(three).toContain('shininess: 0.30000000000000004');
-    expect(three).toContain(`sphere.quaternion.set(0, ${Math.SQRT1_2}, 0, ${Math.SQRT1_2});`);
+    expect(three).toContain('shininess: 0.3');
+    expect(three).toContain('sphere.quaternion.set(0, 0.707106781186548, 0, 0.707106781186548);');
+    expect(three).toContain('[0, 0, -0.2]');
   });
 
   test('a glTF model: GLTFLoader with a placeholder URL and swapMaterials with the shading options', () => {
@@ -283,5 +295,49 @@ describe('copy as code', () => {
     const r3f = programOf('r3f', state);
     expect(r3f).toContain("useLoader(GLTFLoader, '/model.glb')");
     expect(r3f).toContain('<ShadedModel object={gltf.scene}');
+  });
+});
+
+test("the install line's @shadelab dependencies are the packages' own (package.json dependencies and peers)", () => {
+  const packages = new URL('../../../packages/', import.meta.url);
+  const fromPackageJsons: Record<string, string[]> = {};
+  for (const folder of readdirSync(packages)) {
+    const json = JSON.parse(readFileSync(new URL(`${folder}/package.json`, packages), 'utf8'));
+    const ours = Object.keys({ ...json.dependencies, ...json.peerDependencies })
+      .filter((name) => name.startsWith('@shadelab/'))
+      .sort();
+    if (ours.length > 0) fromPackageJsons[json.name] = ours;
+  }
+  expect(SHADELAB_DEPENDENCIES).toEqual(fromPackageJsons);
+});
+
+describe('num: numbers in copied code', () => {
+  test('15 significant digits, shortest form: the float noise goes; -0 as 0', () => {
+    expect(num(-0.20000000000000018)).toBe('-0.2');
+    expect(num(0.1 + 0.2)).toBe('0.3');
+    expect(num(0.002)).toBe('0.002');
+    expect(num(32)).toBe('32');
+    expect(num(-0)).toBe('0');
+    expect(num(1e-6)).toBe('0.000001');
+    expect(num(Math.SQRT1_2)).toBe('0.707106781186548');
+    expect(num(1e300)).toBe('1e+300');
+  });
+
+  test('property: 10,000 seeded values read back within half a unit of their 15th digit, never longer than String()', () => {
+    let seed = 20261202;
+    const random = () => {
+      seed = (Math.imul(seed, 1664525) + 1013904223) >>> 0;
+      return seed / 2 ** 32;
+    };
+    for (let i = 0; i < 10_000; i++) {
+      const value = (random() - 0.5) * 10 ** Math.floor(random() * 24 - 12);
+      const text = num(value);
+      expect(Math.abs(Number(text) - value), `${value} → ${text}`).toBeLessThanOrEqual(
+        Math.abs(value) * 5e-15,
+      );
+      expect(text.length, `${value} → ${text}`).toBeLessThanOrEqual(String(value).length);
+      // Typed values (at most 15 digits) are written as typed.
+      expect(num(Number(text)), text).toBe(text);
+    }
   });
 });

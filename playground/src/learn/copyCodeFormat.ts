@@ -5,9 +5,16 @@
  */
 import type { Literal, Options } from './copyCodeModel';
 
-/** A number as source text (`-0` is written `0`). */
+/**
+ * A number as source text, to 15 significant digits (DBL_DIG: every such decimal survives a trip through a
+ * double), in its shortest form: the noise arithmetic leaves below them goes (`-0.20000000000000018` is written
+ * `-0.2`), and the value read back is within 5e-15 of the state's, relatively (far below a float32's precision:
+ * its pictures are the playground's pixels). `-0` is written `0`.
+ */
 export function num(value: number): string {
-  return Object.is(value, -0) ? '0' : String(value);
+  if (value === 0) return '0';
+  if (!Number.isFinite(value)) return String(value);
+  return String(Number(value.toPrecision(15)));
 }
 
 /** A list of numbers: `[1, 2, 3]`. */

@@ -9,16 +9,53 @@ import { type CodeScene, codeScene } from './copyCodeModel';
 import { MODEL_URL, sceneCode } from './copyCodeScenes';
 
 /**
- * The first line of a generated program: the packages its imports name (three and `@shadelab/*`, …) and the
- * type packages `dev` (installed as dev dependencies).
+ * Whether the `@shadelab/*` packages are on the npm registry. Until they are, a program installs them as the
+ * README's Install does: from the tarballs that `npm run pack -- --out /tmp/shadelab` writes in a clone.
+ */
+export const PACKAGES_ON_NPM = false;
+
+/** Where the README's Install has `npm run pack` write the tarballs. */
+export const TARBALL_FOLDER = '/tmp/shadelab';
+
+/**
+ * The `@shadelab/*` packages each package depends on or has as a peer (its package.json). From tarballs, npm
+ * would look for these on the registry, so they are installed from the tarballs beside it.
+ */
+export const SHADELAB_DEPENDENCIES: Readonly<Record<string, readonly string[]>> = {
+  '@shadelab/material': ['@shadelab/sphere'],
+  '@shadelab/playwright': ['@shadelab/material', '@shadelab/reference'],
+  '@shadelab/react': ['@shadelab/camera', '@shadelab/material', '@shadelab/sphere', '@shadelab/trackball'],
+  '@shadelab/reference': ['@shadelab/material'],
+};
+
+/**
+ * The first lines of a generated program: how to install the packages its imports name (`three` always: it is
+ * every package's peer) and the type packages `dev` (as dev dependencies), as the README says.
  */
 export function installLine(imports: string, dev: readonly string[]): string {
-  const packages = new Set<string>();
+  const packages = new Set<string>(['three']);
   for (const [, module] of imports.matchAll(/from '([^']+)'/g)) {
     const parts = module!.split('/');
     packages.add(module!.startsWith('@') ? parts.slice(0, 2).join('/') : parts[0]!);
   }
-  return `// npm install ${[...packages].sort().join(' ')} && npm install --save-dev ${dev.join(' ')}`;
+  for (const name of packages)
+    for (const dependency of SHADELAB_DEPENDENCIES[name] ?? []) packages.add(dependency);
+  const ours = [...packages].filter((p) => p.startsWith('@shadelab/')).sort();
+  const others = [...packages].filter((p) => !p.startsWith('@shadelab/')).sort();
+  const install = `npm install ${[...others, ...tarballs(ours)].join(' ')} && npm install --save-dev ${dev.join(' ')}`;
+  if (PACKAGES_ON_NPM) return `// ${install}`;
+  return [
+    `// The @shadelab packages are not on npm yet: in a clone of shadelab, \`npm ci && npm run pack -- --out ${TARBALL_FOLDER}\`, then`,
+    `// ${install}`,
+  ].join('\n');
+}
+
+/** `ours` (`@shadelab/<name>`) as install arguments: the registry names, or today a glob over the tarballs. */
+function tarballs(ours: readonly string[]): string[] {
+  if (PACKAGES_ON_NPM || ours.length === 0) return [...ours];
+  const names = ours.map((p) => p.slice('@shadelab/'.length));
+  const name = names.length === 1 ? names[0] : `{${names.join(',')}}`;
+  return [`${TARBALL_FOLDER}/shadelab-${name}-*.tgz`];
 }
 
 /** The camera lines: placed with the lecture's lookAt, then its projection for the window's aspect. */

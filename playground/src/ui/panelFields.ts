@@ -33,7 +33,16 @@ export function panelRows(table: Table, prefix: readonly string[] = []): PanelRo
   });
 }
 
-/** The leva settings of a row: exactly the settings given (no `undefined` keys), options from the values. */
+/** The decimals `step` is written with: 0.001 → 3, 0.1 → 1, 5 → 0, 1e-7 → 7. */
+export function stepDecimals(step: number): number {
+  const [mantissa, exponent] = String(step).split('e');
+  return Math.max(0, (mantissa!.split('.')[1]?.length ?? 0) - Number(exponent ?? 0));
+}
+
+/**
+ * The leva settings of a row: exactly the settings given (no `undefined` keys), options from the values, and a
+ * number shown with its step's decimals (leva's own choice stops at 2, so c = 0.002 would read 0.00).
+ */
 export function levaInput({ field, input }: PanelRow): Record<string, unknown> {
   const out: Record<string, unknown> = { label: input.label };
   if (field.kind.type === 'enum')
@@ -43,6 +52,7 @@ export function levaInput({ field, input }: PanelRow): Record<string, unknown> {
   for (const key of ['step', 'min', 'max'] as const) {
     if (input[key] !== undefined) out[key] = input[key];
   }
+  if (input.step !== undefined) out['pad'] = stepDecimals(input.step);
   return out;
 }
 
