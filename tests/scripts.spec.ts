@@ -1,5 +1,5 @@
-// Node-only tests of the set-up scripts (no browser page): which Chromium is used, what `npm test` says when
-// there is none, that `npm start` serves the playground at the URL it prints, and that a signal stops it.
+// Tests of the set-up scripts: which Chromium is used, what `npm test` says when there is none, that `npm start`
+// serves the playground at the URL it prints (drawn in a page, with a quiet console), and that a signal stops it.
 import { spawn, spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { createServer } from 'node:net';
@@ -8,6 +8,7 @@ import { expect, test } from '@playwright/test';
 import { DEBIAN_CHROMIUM, describeBrowserSearch, lookupChromium } from '../scripts/browser.mjs';
 import { browserSetup, root } from '../scripts/setup.mjs';
 import { listening } from './net-helpers';
+import { choose, settle } from './playground-helpers';
 
 const PLAYWRIGHT_OWN = '/home/u/.cache/ms-playwright/chromium-1/chrome-linux/chrome';
 
@@ -223,7 +224,9 @@ test.describe('npm start', () => {
   // One after another: each builds the packages (tsc -b) in the same tree.
   test.describe.configure({ mode: 'default', timeout: 240_000 });
 
-  test('prints the 127.0.0.1 URL and serves the playground there; SIGTERM to its process frees the port within 2 s', async () => {
+  test('prints the 127.0.0.1 URL and serves the playground there, which draws with a quiet console (React in development, StrictMode); SIGTERM to its process frees the port within 2 s', async ({
+    page,
+  }) => {
     const started = await startPlayground('node');
     try {
       const response = await fetch(started.url);
@@ -234,6 +237,26 @@ test.describe('npm start', () => {
       )![0];
       expect(html).toContain(title);
       expect(html).toContain('id="root"');
+      // Development React mounts the app twice (StrictMode): the viewer takes its canvas's R3F root back, and
+      // R3F's THREE.Clock deprecation is not printed. Warnings and errors: none, on the first frame and after a
+      // scene change.
+      const loud: string[] = [];
+      page.on('console', (m) => {
+        if (m.type() === 'warning' || m.type() === 'error') loud.push(`${m.type()}: ${m.text()}`);
+      });
+      page.on('pageerror', (e) => loud.push(`pageerror: ${e.message}`));
+      const firstFrame = page.waitForEvent('console', {
+        predicate: (m) => m.text().includes('first frame rendered'),
+        timeout: 120_000,
+      });
+      await page.goto(started.url);
+      await firstFrame;
+      await choose(page, 'View.scene', "three's lights, fog, clipping");
+      await expect(
+        page.getByRole('img', { name: /^Lit scene: three's lights, fog, clipping\./ }),
+      ).toBeVisible();
+      await settle(page);
+      expect(loud).toEqual([]);
       await expectStopsOn(started, 'SIGTERM');
     } finally {
       await started.cleanUp();

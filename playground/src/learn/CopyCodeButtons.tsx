@@ -95,7 +95,12 @@ export function CopyCodeButtons({ state }: { state: PlaygroundState }) {
       {shown &&
         label &&
         createPortal(
-          <div role="dialog" aria-modal="true" aria-label={`Copy as code: ${label.title}`} style={DIALOG_STYLE}>
+          <div
+            role="dialog"
+            aria-modal="true"
+            aria-label={`Copy as code: ${label.title}`}
+            style={DIALOG_STYLE}
+          >
             <div>
               <strong>{label.title}</strong> ({label.file} of a Vite app;{' '}
               {shown.copied === null

@@ -18,6 +18,7 @@ import {
   flushSync,
   type ReconcilerRoot,
   type RootState,
+  unmountComponentAtNode,
   useFrame,
   useThree,
 } from '@react-three/fiber';
@@ -140,11 +141,46 @@ function LectureSphereScene({
   );
 }
 
+/**
+ * The R3F root of each canvas until R3F has torn it down. React's StrictMode (in development) disposes a viewer
+ * and makes a new one on the same canvas at once; R3F keeps the root's store and renderer for that (its teardown
+ * waits a commit), and a viewer takes the same root again instead of asking `createRoot` for a second one, which
+ * R3F refuses with a warning.
+ */
+const rootsOfCanvases = new WeakMap<HTMLCanvasElement, ReconcilerRoot<HTMLCanvasElement>>();
+
+/** three's message for R3F's `new THREE.Clock()` in every store it makes (three deprecated Clock for Timer). */
+const CLOCK_DEPRECATION = 'THREE.Clock: This module has been deprecated.';
+
+/**
+ * `canvas`'s R3F root: the one R3F still holds, or a new one. R3F 9 makes its store's clock a `THREE.Clock`, so
+ * three warns of the deprecation on every new root, about code neither this app nor its users can change: that
+ * one message is dropped while the store is made, and three's console is as it was after.
+ */
+function rootOf(canvas: HTMLCanvasElement): ReconcilerRoot<HTMLCanvasElement> {
+  const held = rootsOfCanvases.get(canvas);
+  if (held) return held;
+  const previous = THREE.getConsoleFunction();
+  THREE.setConsoleFunction((type, message, ...params) => {
+    if (message.startsWith(CLOCK_DEPRECATION)) return;
+    if (previous) previous(type, message, ...params);
+    else console[type](message, ...params);
+  });
+  try {
+    const root = createRoot(canvas);
+    rootsOfCanvases.set(canvas, root);
+    return root;
+  } finally {
+    THREE.setConsoleFunction(previous as Parameters<typeof THREE.setConsoleFunction>[0]);
+  }
+}
+
 /** The R3F root of one canvas: its renderer, its scene and the single view's objects. */
 export class SceneRoot {
   readonly renderer: THREE.WebGLRenderer;
   readonly scene: THREE.Scene;
   private readonly root: ReconcilerRoot<HTMLCanvasElement>;
+  private readonly canvas: HTMLCanvasElement;
   /** The objects the lecture sphere's JSX made (filled by its refs). */
   private readonly into: Into = { columns: [] };
   /** The props last rendered. */
@@ -164,7 +200,8 @@ export class SceneRoot {
    * on the canvas themselves). The camera is the viewer's, whose projection the viewer sets per cell (`manual`).
    */
   constructor(canvas: HTMLCanvasElement, depth: DepthMode, camera: Camera) {
-    this.root = createRoot(canvas);
+    this.canvas = canvas;
+    this.root = rootOf(canvas);
     let renderer: THREE.WebGLRenderer | undefined;
     const width = Math.max(1, canvas.clientWidth || canvas.width);
     const height = Math.max(1, canvas.clientHeight || canvas.height);
@@ -243,8 +280,14 @@ export class SceneRoot {
     }
   }
 
-  /** Unmounts the scene and releases the renderer (R3F made it, R3F frees it). */
+  /**
+   * Unmounts the scene and releases the renderer (R3F made it, R3F frees it, after a commit). A viewer made on
+   * the canvas before then takes the root back, and R3F keeps it.
+   */
   unmount(): void {
-    this.root.unmount();
+    const { canvas, root } = this;
+    unmountComponentAtNode(canvas, () => {
+      if (rootsOfCanvases.get(canvas) === root) rootsOfCanvases.delete(canvas);
+    });
   }
 }
