@@ -456,7 +456,13 @@ test.describe('the playground', () => {
     }
   });
 
-  test('WebGL context loss shows a message and recovers with the scene intact', async ({ page }) => {
+  test('WebGL context loss shows a message and recovers with the scene intact, its GPU timer too; the message is dismissed, or goes with the scene', async ({
+    page,
+  }) => {
+    const webglWarnings: string[] = [];
+    page.on('console', (m) => {
+      if (m.type() === 'warning' && m.text().startsWith('WebGL:')) webglWarnings.push(m.text());
+    });
     await open(page);
     await choose(page, 'Material.shading', 'flat');
     const before = await picture(page);
@@ -472,6 +478,23 @@ test.describe('the playground', () => {
     await settle(page);
     expect(await picture(page)).toBe(before);
     await expect(page.locator('[id="Material.shading"]')).toHaveValue('0');
+    // Frames on the restored context time themselves with its own timer-query extension (the lost context's is
+    // refused: "beginQuery: invalid target", 126 warnings). (three's WebGLRenderer still deletes the buffers of
+    // a geometry made before the loss when it is disposed after: "object does not belong to this context".)
+    await choose(page, 'Material.shading', 'phong');
+    await settle(page);
+    expect(webglWarnings.filter((w) => /query|timer/i.test(w))).toEqual([]);
+    await page.getByTestId('context-message').getByRole('button', { name: 'dismiss' }).click();
+    await expect(page.getByTestId('context-message')).toHaveCount(0);
+    // Lost and restored again: the message goes when the scene changes.
+    await page.evaluate(() => {
+      const lose = (window as unknown as { __lose: WEBGL_lose_context }).__lose;
+      lose.loseContext();
+      setTimeout(() => lose.restoreContext(), 0);
+    });
+    await expect(page.getByTestId('context-message')).toContainText('restored');
+    await choose(page, 'View.scene', 'instanced spheres');
+    await expect(page.getByTestId('context-message')).toHaveCount(0);
   });
 
   test('exports the canvas as PNG', async ({ page }) => {

@@ -42,6 +42,12 @@ export function App() {
   const [schemaError, setSchemaError] = useState<string | null>(null);
   const [sectionErrors, setSectionErrors] = useState<SectionErrors>({});
   const [context, setContext] = useState<'ok' | 'lost' | 'restored'>('ok');
+  // The recovery message goes with the scene it was about (React's state adjusted while rendering).
+  const [contextScene, setContextScene] = useState(state.scene);
+  if (contextScene !== state.scene) {
+    setContextScene(state.scene);
+    if (context === 'restored') setContext('ok');
+  }
   const [variant, setVariant] = useState<Variant | null>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const viewerRef = useRef<Viewer | null>(null);
@@ -235,6 +241,7 @@ export function App() {
         )}
         <Messages
           context={context}
+          dismissContext={() => setContext('ok')}
           notices={notices}
           dismissNotice={(n) => setNotices((all) => all.filter((m) => m !== n))}
           model={model.message}

@@ -1,5 +1,5 @@
 /**
- * The messages over the view: the WebGL context's loss and recovery, the notices (a refused URL or saved state, a
+ * The messages over the view: the WebGL context's loss and recovery (dismissable once recovered), the notices (a refused URL or saved state, a
  * copied link; each dismissable), the user's model's message, and the errors of the state shown.
  */
 import type { ModelMessage } from './useModel';
@@ -7,6 +7,7 @@ import type { ModelMessage } from './useModel';
 /** The messages over the view, top left; read by screen readers as they change. */
 export function Messages({
   context,
+  dismissContext,
   notices,
   dismissNotice,
   model,
@@ -15,6 +16,8 @@ export function Messages({
 }: {
   /** The WebGL context's status. */
   context: 'ok' | 'lost' | 'restored';
+  /** Hides the recovery message (the loss message stays until the context is back). */
+  dismissContext: () => void;
   notices: string[];
   dismissNotice: (notice: string) => void;
   model: ModelMessage | null;
@@ -31,7 +34,10 @@ export function Messages({
       )}
       {context === 'restored' && (
         <p className="message info" data-testid="context-message">
-          The WebGL context was restored; the scene was rebuilt.
+          The WebGL context was restored; the scene was rebuilt.{' '}
+          <button type="button" onClick={dismissContext}>
+            dismiss
+          </button>
         </p>
       )}
       {notices.map((n) => (

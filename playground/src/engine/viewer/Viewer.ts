@@ -272,7 +272,6 @@ export class Viewer implements ViewerHost {
   private readonly onGpuTime = () => this.applied && this.events.onStats?.(this.stats(Number.NaN));
   private readonly onContextLost = () => {
     this.contextLost = true;
-    this.gpuTimer.contextLost();
     this.events.onContext?.('lost');
   };
   private readonly onContextRestored = () => {

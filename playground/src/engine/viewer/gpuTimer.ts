@@ -7,7 +7,7 @@ export class GpuTimer {
   gpuMs: number | null = null;
   private pending: WebGLQuery | null = null;
   private disposed = false;
-  private readonly ext: { TIME_ELAPSED_EXT: number; GPU_DISJOINT_EXT: number } | null;
+  private ext: { TIME_ELAPSED_EXT: number; GPU_DISJOINT_EXT: number } | null;
 
   /** @param onResult - Called when a frame's time arrives. */
   constructor(
@@ -15,6 +15,8 @@ export class GpuTimer {
     private readonly onResult: () => void,
   ) {
     this.ext = gl.getExtension('EXT_disjoint_timer_query_webgl2');
+    gl.canvas.addEventListener('webglcontextlost', this.onContextChange);
+    gl.canvas.addEventListener('webglcontextrestored', this.onContextChange);
   }
 
   /** Starts timing a frame; null when the extension is missing or a query is still in flight. */
@@ -50,12 +52,18 @@ export class GpuTimer {
     setTimeout(() => poll(0), 0);
   }
 
-  /** The context was lost: the query in flight is gone with it. */
-  contextLost(): void {
+  /**
+   * The context was lost or restored: the query in flight is gone, and the extension is asked for again (none
+   * while lost; a restored context has none of the lost one's enabled, and would refuse its enums as invalid).
+   */
+  private readonly onContextChange = () => {
     this.pending = null;
-  }
+    this.ext = this.gl.getExtension('EXT_disjoint_timer_query_webgl2');
+  };
 
   dispose(): void {
     this.disposed = true;
+    this.gl.canvas.removeEventListener('webglcontextlost', this.onContextChange);
+    this.gl.canvas.removeEventListener('webglcontextrestored', this.onContextChange);
   }
 }
