@@ -215,6 +215,19 @@ test('a model opened with the picker is framed, drawn with ShadingMaterial, and 
   expect(bounds.y1).toBeLessThan(bounds.h - 1);
   const phong = await picture(page);
   expect(phong).not.toBe(sphere);
+  // What the model keeps of its own (ka/kd/ks, α) and the panel's lights (it is lit by its rig) are greyed
+  // out; the options that apply stay live. One cell: the stats count no cells.
+  for (const id of [
+    'Material.ka',
+    'Material.kd',
+    'Material.ks',
+    'Material.shininess',
+    'Light 1.light1Position',
+  ])
+    await expect(page.locator(`[id="${id}"]`).first(), id).toBeDisabled();
+  for (const id of ['Material.shading', 'Material.lighting', 'Material.celBands'])
+    await expect(page.locator(`[id="${id}"]`), id).toBeEnabled();
+  await expect(page.getByTestId('stats')).toContainText(/triangles\s*\d/);
   // Every shading, lighting and cel option changes the picture; back to phong gives it again.
   const seen = new Set([phong]);
   for (const [id, value] of [
@@ -236,6 +249,7 @@ test('a model opened with the picker is framed, drawn with ShadingMaterial, and 
   await choose(page, 'View.view', 'flat | Gouraud | Phong | cel');
   const compare = await picture(page);
   expect(compare).not.toBe(phong);
+  await expect(page.getByTestId('stats')).toContainText('triangles (4 cells)');
   await choose(page, 'View.view', 'single sphere');
   expect(await picture(page)).toBe(phong);
 });

@@ -182,6 +182,40 @@ test('on the lecture’s sphere every option applies: the sphere-only inputs are
   await expect(page.getByTestId('scene-note')).toContainText('every option applies');
 });
 
+test('the sphere folder greys out the detail the picture does not take, and the stats name what is drawn', async ({
+  page,
+}) => {
+  const detail = ['Sphere.base', 'Sphere.level'];
+  await open(page);
+  for (const id of [...detail, 'Sphere.auto', 'Sphere.maxErrorPx'])
+    await expect(page.locator(`[id="${id}"]`)).toBeEnabled();
+  // The mesh's level: its silhouette error (tetrahedron 6 at the demo's size: a fraction of a pixel).
+  await expect(page.getByTestId('stats-error')).toHaveText(/^\d+\.\d{3} px$/);
+  expect(Number.parseFloat((await page.getByTestId('stats-error').textContent())!)).toBeGreaterThan(0);
+  // The impostor is the exact sphere: no level to choose, no silhouette error; the radius still applies.
+  await choose(page, 'Sphere.render', 'ray-cast impostor');
+  await expect(page.getByTestId('stats-error')).toHaveText('0.000 px');
+  for (const id of [...detail, 'Sphere.auto', 'Sphere.maxErrorPx'])
+    await expect(page.locator(`[id="${id}"]`)).toBeDisabled();
+  await expect(page.locator('[id="Sphere.radius"]')).toBeEnabled();
+  // Automatic detail chooses the base and level (the stats say which); its error bound applies.
+  await choose(page, 'Sphere.render', 'subdivided mesh');
+  await toggle(page, 'Sphere.auto');
+  for (const id of detail) await expect(page.locator(`[id="${id}"]`)).toBeDisabled();
+  await expect(page.locator('[id="Sphere.maxErrorPx"]')).toBeEnabled();
+  await expect(page.getByTestId('stats-detail')).toHaveText(
+    /^(tetrahedron|octahedron|icosahedron) \d+ \(\d+\.\d{3} px\)$/,
+  );
+  await expect(page.getByTestId('stats-error')).not.toHaveText('0.000 px');
+});
+
+test('the stats count the cells drawn, not the parts of a scene', async ({ page }) => {
+  await open(page, { scene: 'lights' });
+  await expect(page.getByTestId('stats')).toContainText(/triangles\s*\d/);
+  await choose(page, 'View.view', 'flat | Gouraud | Phong | cel');
+  await expect(page.getByTestId('stats')).toContainText('triangles (4 cells)');
+});
+
 // One test per scene (nine edits each: together they came near the timeout on a busy machine).
 for (const scene of SCENES) {
   test(`in the ${scene} scene the options that apply stay live; the sphere-only inputs are greyed out and say why`, async ({

@@ -1,8 +1,8 @@
-import { button, levaStore } from 'leva';
-import { useEffect } from 'react';
-import { SCENE_LABELS, SPHERE_ONLY_INPUTS } from '../engine/scenes';
+import { button } from 'leva';
+import { SCENE_LABELS } from '../engine/scenes';
 import type { PlaygroundState } from '../state/schema';
 import { MAX_LIGHTS, SCENES } from '../state/schema';
+import { isIdleInput } from './idleInputs';
 import { folderFields, lightFields } from './panelFields';
 import { type Update, useFolder } from './useFolder';
 
@@ -39,7 +39,9 @@ export function SceneControls({
     },
     0,
   );
-  useFolder('Material', folderFields('Material'), state, update, {}, 1);
+  // Inputs that change nothing in this state's picture are greyed out (idleInputs.ts).
+  const idle = (path: string) => isIdleInput(state, path);
+  useFolder('Material', folderFields('Material'), state, update, {}, 1, idle);
   useFolder(
     'Lights',
     {},
@@ -49,9 +51,10 @@ export function SceneControls({
       'add light': button(actions.addLight, { disabled: false }),
     },
     2,
+    idle,
   );
 
-  useFolder('Sphere', folderFields('Sphere'), state, update, {}, 3);
+  useFolder('Sphere', folderFields('Sphere'), state, update, {}, 3, idle);
   useFolder('Camera', folderFields('Camera'), state, update, {}, 4);
   useFolder(
     'Trackball',
@@ -68,14 +71,6 @@ export function SceneControls({
     5,
   );
 
-  // The sphere's own inputs are greyed out while another scene is shown (the note beside the panel says why).
-  const sphereOnly = state.scene !== 'sphere';
-  useEffect(() => {
-    const data = levaStore.getData();
-    for (const path of SPHERE_ONLY_INPUTS) {
-      if (data[path]) levaStore.disableInputAtPath(path, sphereOnly);
-    }
-  }, [sphereOnly]);
   return null;
 }
 
@@ -107,6 +102,7 @@ export function LightControls({
       ),
     },
     2 + (index + 1) / 100,
+    (path) => isIdleInput(state, path),
   );
   return null;
 }

@@ -49,13 +49,13 @@ export function Stats({ feed }: { feed: StatsFeed }) {
       {stats.errorPx !== null && (
         <>
           <dt>silhouette error ≤</dt>
-          <dd>{stats.errorPx.toFixed(3)} px</dd>
+          <dd data-testid="stats-error">{stats.errorPx.toFixed(3)} px</dd>
         </>
       )}
       {stats.detail && (
         <>
           <dt>auto detail</dt>
-          <dd>
+          <dd data-testid="stats-detail">
             {stats.detail.base} {stats.detail.level} ({stats.detail.errorPx.toFixed(3)} px)
           </dd>
         </>

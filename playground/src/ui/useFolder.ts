@@ -1,4 +1,4 @@
-import { useControls } from 'leva';
+import { levaStore, useControls } from 'leva';
 import { useEffect, useRef, useState } from 'react';
 import type { PlaygroundState } from '../state/schema';
 import { folderCollapsed } from './panelLayout';
@@ -26,7 +26,8 @@ export type Extra = Record<string, unknown>;
 
 /**
  * A leva folder whose inputs edit the state both ways: an edit in the panel calls `update`, and a change of
- * the state from elsewhere (URL, trackball, movement keys) is pushed back into the panel.
+ * the state from elsewhere (URL, trackball, movement keys) is pushed back into the panel. The inputs for which
+ * `idle(path)` holds (leva path `name.key`) are greyed out, the others live.
  */
 export function useFolder(
   name: string,
@@ -35,6 +36,7 @@ export function useFolder(
   update: Update,
   extra: Extra = {},
   order = 0,
+  idle: (path: string) => boolean = () => false,
 ) {
   // Read once: leva takes a folder's settings when it creates the folder.
   const [collapsed] = useState(() => folderCollapsed(name));
@@ -72,4 +74,13 @@ export function useFolder(
   useEffect(() => {
     set(JSON.parse(text) as Record<string, unknown>);
   }, [text, set]);
+  // After leva has the folder's inputs (its own effect, above): each input greyed out or live.
+  const paths = [...Object.keys(fields), ...Object.keys(extra)].map((key) => `${name}.${key}`);
+  const idleText = JSON.stringify(paths.map((path) => [path, idle(path)]));
+  useEffect(() => {
+    const data = levaStore.getData();
+    for (const [path, isIdle] of JSON.parse(idleText) as [string, boolean][]) {
+      if (data[path]) levaStore.disableInputAtPath(path, isIdle);
+    }
+  }, [idleText]);
 }

@@ -127,26 +127,27 @@ export class PickedScene {
         part.outline.visible = outline;
       }
     };
-    const drawnParts = () => {
-      for (const part of parts) drawn.push({ geometry: part.mesh.geometry, outline: part.outline.visible });
+    const drawnParts = (cell: number) => {
+      for (const part of parts)
+        drawn.push({ geometry: part.mesh.geometry, outline: part.outline.visible, cell });
     };
     const outline = material.outline && material.celBands > 0;
     if (layout.cols * layout.rows === 1) {
       setShading(material.shading, material.celBands, outline);
-      drawnParts();
+      drawnParts(0);
       renderer.setScissorTest(false);
       renderer.setViewport(0, 0, w, h);
       renderer.render(scene, camera);
       return;
     }
     try {
-      drawCells(renderer, scene, camera, layout, w, h, (column) => {
+      drawCells(renderer, scene, camera, layout, w, h, (column, cell) => {
         setShading(
           column.shading,
           column.cel ? Math.max(3, material.celBands) : 0,
           column.cel && material.outline,
         );
-        drawnParts();
+        drawnParts(cell);
       });
     } finally {
       renderer.setScissorTest(false);

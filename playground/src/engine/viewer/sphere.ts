@@ -35,6 +35,8 @@ export class LectureSphere {
   /** Geometries of the current base, level and radius, by {@link sphereKey}. */
   private geometries = new Map<string, THREE.BufferGeometry>();
   private current: { base: SphereBase; level: number; radius: number } | null = null;
+  /** Whether the last frame drew the impostor (the single view's; the compare view draws the meshes). */
+  private drewImpostor = false;
 
   /** Takes the meshes, the material and the impostor that sceneRoot.tsx mounted, and gives the meshes outlines. */
   constructor({
@@ -106,9 +108,13 @@ export class LectureSphere {
     if (outline) outline.geometry = geometry;
   }
 
-  /** The silhouette error on screen in pixels (at most); null before a sphere is built or when unknown. */
+  /**
+   * The silhouette error on screen in pixels (at most) of the sphere drawn last: 0 for the impostor (the exact
+   * sphere); null before a sphere is built or when unknown.
+   */
   errorPx(errorScalePx: () => number): number | null {
     if (!this.current) return null;
+    if (this.drewImpostor) return 0;
     try {
       const scale = errorScalePx();
       return sphereError(this.current.base, this.current.level) * scale;
@@ -130,6 +136,7 @@ export class LectureSphere {
     drawn: Drawn[],
   ): void {
     const impostor = state.sphere.render === 'impostor';
+    this.drewImpostor = impostor && layout.cols * layout.rows === 1;
     if (layout.cols * layout.rows === 1) {
       this.outline.visible = state.material.outline && state.material.celBands > 0;
       this.mesh.visible = !impostor;
@@ -137,8 +144,8 @@ export class LectureSphere {
       this.showGeometry(state.material.shading);
       drawn.push(
         impostor
-          ? { geometry: this.impostor.geometry, outline: false }
-          : { geometry: this.mesh.geometry, outline: this.outline.visible },
+          ? { geometry: this.impostor.geometry, outline: false, cell: 0 }
+          : { geometry: this.mesh.geometry, outline: this.outline.visible, cell: 0 },
       );
       renderer.setScissorTest(false);
       renderer.setViewport(0, 0, w, h);
@@ -154,7 +161,7 @@ export class LectureSphere {
         });
         this.setGeometry(this.columns[i]!, outline, column.shading);
         if (outline) outline.visible = state.material.outline;
-        drawn.push({ geometry: this.columns[i]!.geometry, outline: outline?.visible ?? false });
+        drawn.push({ geometry: this.columns[i]!.geometry, outline: outline?.visible ?? false, cell: i });
       });
     } finally {
       renderer.setScissorTest(false);

@@ -39,6 +39,8 @@ export interface FrameStats {
 export interface Drawn {
   geometry: THREE.BufferGeometry;
   outline: boolean;
+  /** The cell it was drawn in (0 in the single view): a scene of several parts draws several times in one. */
+  cell: number;
 }
 
 /** What the viewer knows beside three's counters when it reports stats. */
@@ -99,7 +101,7 @@ export class FrameCounter {
       triangles: info.render.triangles,
       vertices,
       bufferBytes,
-      cells: this.drawn.length,
+      cells: new Set(this.drawn.map((d) => d.cell)).size,
       programs: info.programs?.length ?? 0,
       depth: extras.depth,
       detail: extras.detail,
