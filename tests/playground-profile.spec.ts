@@ -100,6 +100,32 @@ test('the profile plot is the canvas’s pixels along the line, in flat, Gouraud
   }
 });
 
+test('the legend counts the slope jumps it marks, and says what a profile without one means', async ({
+  page,
+}) => {
+  await open(page, { sphere: { level: 3 }, model: { scale: [1, 1, 1] }, camera: { eye: [0, 0, 2.2] } });
+  await page.getByRole('button', { name: 'intensity profile' }).click();
+  await expect(page.getByTestId('profile-panel')).toContainText('Drag a line');
+  await dragLine(page, [0.15, 0.55], [0.85, 0.4]);
+  const plot = page.getByTestId('profile-plot');
+  await expect(plot).toBeVisible({ timeout: 15_000 });
+  const legend = page.getByTestId('profile-panel');
+  for (const shading of ['flat', 'gouraud'] as const) {
+    const marks = await plot.locator(`g:has(> polyline[data-shading="${shading}"]) > [data-break]`).count();
+    const label = shading === 'flat' ? 'flat' : 'Gouraud';
+    // Gouraud's slope changes at its triangle edges by less than the flat facets' steps: often under the mark's
+    // threshold in 8-bit codes, and then the legend says so instead of "0 slope jumps" under a text saying they
+    // are there.
+    if (marks > 0) await expect(legend).toContainText(`${label}: ${marks} slope jumps`);
+    else
+      await expect(legend).toContainText(
+        `${label}: no slope jump of 3 or more per pixel² (its slope still changes at every triangle edge`,
+      );
+  }
+  await expect(plot.locator('g:has(> polyline[data-shading="flat"]) > [data-break]')).not.toHaveCount(0);
+  await expect(legend).not.toContainText(' 0 slope jumps');
+});
+
 test('a zero-length line does nothing; outside profile mode a drag turns the trackball', async ({ page }) => {
   await open(page, { sphere: { level: 3 } });
   const rotation = await urlRotation(page);

@@ -78,7 +78,10 @@ export default function ProfilePlot({
           {series.map(({ shading, breaks }) => (
             <span key={shading} style={{ color: COLORS[shading] }}>
               ━ {LABELS[shading]}
-              {shading !== 'phong' && `: ${breaks.length} slope jumps ▮`}
+              {shading !== 'phong' &&
+                (breaks.length > 0
+                  ? `: ${breaks.length} slope jumps ▮`
+                  : `: no slope jump of ${BREAK} or more per pixel² (its slope still changes at every triangle edge, by less than that here)`)}
             </span>
           ))}
         </span>
