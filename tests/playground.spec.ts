@@ -556,6 +556,14 @@ test("the camera follows a resize: the aspect is the canvas's, so the sphere kee
 
 test('a light moves with the gizmo', async ({ page }) => {
   await open(page);
+  // The lecture's light 1 is behind the eye: its gizmo would be off the view, and the page says what to do.
+  await press(page, 'move light 1 with the gizmo');
+  await expect(page.getByTestId('notice')).toContainText(
+    'Light 1 is behind the eye, so its gizmo is off the view',
+  );
+  // Turned off again (nothing to redraw: it was off the view).
+  await page.getByRole('button', { name: 'move light 1 with the gizmo', exact: true }).click();
+  await settle(page);
   await press(page, 'add light'); // light 2 at (0.4, 0.3, 2.4), in front of the sphere
   const before = await picture(page);
   await press(page, 'move light 2 with the gizmo');

@@ -25,6 +25,7 @@ import {
   validateState,
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
+import { gizmoNotice } from './ui/gizmoNotice';
 import { Messages } from './ui/Messages';
 import { ModelPicker, modelDropProps, modelNote } from './ui/ModelPicker';
 import { SidePanel } from './ui/SidePanel';
@@ -199,7 +200,14 @@ export function App() {
   );
   const clearShader = useCallback(() => viewerRef.current?.clearShaderOverride(), []);
   const [gizmo, setGizmo] = useState<number | null>(null);
-  const toggleGizmo = useCallback((index: number) => setGizmo((g) => (g === index ? null : index)), []);
+  const toggleGizmo = useCallback(
+    (index: number) => {
+      const notice = gizmo === index ? null : gizmoNotice(state, index);
+      setGizmo(gizmo === index ? null : index);
+      if (notice) setNotices((n) => (n.includes(notice) ? n : [...n, notice]));
+    },
+    [gizmo, state],
+  );
   useEffect(() => {
     const index = gizmo !== null && gizmo < state.lights.length ? gizmo : null;
     viewerRef.current?.selectLight(index);
@@ -220,7 +228,7 @@ export function App() {
           data-testid="viewport"
           tabIndex={0}
           role="img"
-          aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom; camera keys: ${MOVE_KEYS}.`}
+          aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom, Alt+click to probe a pixel; camera keys: ${MOVE_KEYS}.`}
           onPointerDown={(e) => e.currentTarget.focus()}
           {...modelDropProps(model.open)}
         />
@@ -251,7 +259,8 @@ export function App() {
         <Stats feed={feed} />
         <ProbeLauncher viewerRef={viewerRef} state={state} />
         <p className="hint">
-          Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
+          Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · Alt+click: probe a pixel · click the view, then{' '}
+          {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>{' '}
