@@ -259,8 +259,7 @@ export function App() {
         <Stats feed={feed} />
         <ProbeLauncher viewerRef={viewerRef} state={state} />
         <p className="hint">
-          Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · Alt+click: probe a pixel · click the view, then{' '}
-          {MOVE_KEYS} ·{' '}
+          Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
           <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
             speed/accuracy trade-off of this view
           </a>{' '}
