@@ -2,6 +2,7 @@
 // worker time, the tests closest to their timeouts and where the Playwright time went (page loads, builds, the
 // browsers' GPU processes and renderers). Pure functions of Playwright's JSON report, so that scripts/test.mjs
 // prints them and BENCHMARKS.md renders the committed run (bench/results/gate.json) from the same numbers.
+import { createHash } from 'node:crypto';
 import { cpus } from 'node:os';
 
 /** @typedef {{ name: string, seconds: number }} StageTime */
@@ -16,6 +17,8 @@ import { cpus } from 'node:os';
  * @property {number} seconds the test's duration, its hooks and fixtures included
  * @property {number} timeoutSeconds the timeout the test ended with (test.setTimeout included)
  * @property {number} pageLoadSeconds what the test's `page-load` annotations add up to
+ * @property {string[]} pageLoads those annotations: "<ms> <id>", the id naming one load (a `beforeAll` load is on
+ *   every test of its group, and counted once in a sum over tests)
  * @property {number | null} gpuSeconds CPU time of its browser's GPU process (shader and pipeline compiles, draws,
  *   read-backs): its `gpu-process` annotation (tests/harness-helpers.ts' test records it), null without one
  * @property {number | null} rendererSeconds CPU time of its browser's renderers (the pages' scripts): its
@@ -30,7 +33,9 @@ import { cpus } from 'node:os';
  * @param {{ type: string, description?: string }[]} annotations @param {string} type
  */
 const annotated = (annotations, type) =>
-  annotations.filter((a) => a.type === type).reduce((sum, a) => sum + Number(a.description), 0) / 1000;
+  annotations
+    .filter((a) => a.type === type)
+    .reduce((sum, a) => sum + Number.parseFloat(a.description ?? ''), 0) / 1000;
 
 /**
  * The same for a measurement not every test records: null when the test has none.
@@ -71,6 +76,7 @@ export function testRuns(report) {
             seconds: result.duration / 1000,
             timeoutSeconds: test.timeout / 1000,
             pageLoadSeconds: annotated(annotations, 'page-load'),
+            pageLoads: annotations.filter((a) => a.type === 'page-load').map((a) => String(a.description)),
             gpuSeconds: measured(annotations, 'gpu-process'),
             rendererSeconds: measured(annotations, 'renderer'),
             setupSeconds: 0,
@@ -103,15 +109,52 @@ export function testRuns(report) {
 const round1 = (x) => Math.round(x * 10) / 10;
 
 /**
- * The summary of one gate run.
- * @param {{ stages: StageTime[], totalSeconds: number, report?: any, passed: number, failed: number }} run
+ * How fast one core of this machine is now: the median time of a fixed single-threaded workload (a SHA-256 of
+ * 16 MiB and a floating-point loop), in ms. Machines of one kind differ, and one machine differs from day to day
+ * (noisy neighbours): a run's times are judged against this reading, taken while nothing else of the run works.
+ * @returns {number}
  */
-export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
+export function singleCoreMs() {
+  const data = Buffer.alloc(16 << 20, 7);
+  const times = [];
+  for (let round = 0; round < 5; round++) {
+    const t0 = performance.now();
+    createHash('sha256').update(data).digest();
+    let x = 0;
+    for (let i = 1; i <= 20_000_000; i++) x += Math.sqrt(i) / i;
+    if (!Number.isFinite(x)) throw new Error('unreachable');
+    times.push(performance.now() - t0);
+  }
+  return round1(times.sort((a, b) => a - b)[2]);
+}
+
+/**
+ * The seconds the runs spent loading pages, each load once: a load without an id (an older annotation) is its own.
+ * @param {TestRun[]} of
+ */
+function pageLoadSeconds(of) {
+  /** @type {Map<string, number>} */
+  const loads = new Map();
+  for (const [i, r] of of.entries()) {
+    for (const [j, load] of r.pageLoads.entries()) {
+      const [ms, id] = load.split(' ');
+      loads.set(id ?? `${i}.${j}`, Number.parseFloat(ms) / 1000);
+    }
+  }
+  return [...loads.values()].reduce((sum, x) => sum + x, 0);
+}
+
+/**
+ * The summary of one gate run.
+ * @param {{ stages: StageTime[], totalSeconds: number, singleCoreMs: number, report?: any, passed: number,
+ *   failed: number }} run
+ */
+export function gateSummary({ stages, totalSeconds, singleCoreMs, report, passed, failed }) {
   const runs = report ? testRuns(report) : [];
   /** @param {TestRun[]} of */
   const parts = (of) => ({
     setupSeconds: round1(of.reduce((sum, r) => sum + r.setupSeconds, 0)),
-    pageLoadSeconds: round1(of.reduce((sum, r) => sum + r.pageLoadSeconds, 0)),
+    pageLoadSeconds: round1(pageLoadSeconds(of)),
     gpuSeconds: sumMeasured(of.map((r) => r.gpuSeconds)),
     rendererSeconds: sumMeasured(of.map((r) => r.rendererSeconds)),
   });
@@ -126,6 +169,7 @@ export function gateSummary({ stages, totalSeconds, report, passed, failed }) {
   return {
     cpuModel: cpus()[0]?.model.trim() ?? 'unknown',
     cpus: cpus().length,
+    singleCoreMs,
     totalSeconds: round1(totalSeconds),
     passed,
     failed,
@@ -166,7 +210,11 @@ const n = (x) => (x === null ? '–' : x.toFixed(0)).padStart(3);
  * @param {GateSummary} g @returns {string[]}
  */
 export function gateLines(g) {
-  const lines = [`machine: ${g.cpuModel}, ${g.cpus} cores`, '', 'stages (wall time):'];
+  const lines = [
+    `machine: ${g.cpuModel}, ${g.cpus} cores${g.singleCoreMs ? `; one core's fixed workload (singleCoreMs in scripts/gateReport.mjs): ${g.singleCoreMs} ms` : ''}`,
+    '',
+    'stages (wall time):',
+  ];
   for (const s of g.stages) lines.push(`${secs(s.seconds)}  ${s.name}`);
   lines.push(`${secs(g.totalSeconds)}  in all`);
   if (g.playwright.tests > 0) {
@@ -201,7 +249,7 @@ export function gateSection(g, table) {
   return [
     '## The gate',
     '',
-    `What \`npm test\` cost in one recorded run (\`npm test -- --record\`) on ${g.cpuModel} (${g.cpus} cores): **${minutes(g.totalSeconds)}** in all, ending ${g.passed} passed, ${g.failed} failed. Its budget is 12 minutes on an Intel Xeon machine of this kind and 15 on an AMD EPYC one ([DEVELOPERS.md](DEVELOPERS.md#the-gates-budget)); every run prints the same summary.`,
+    `What \`npm test\` cost in one recorded run (\`npm test -- --record\`) on ${g.cpuModel} (${g.cpus} cores${g.singleCoreMs ? `; one core's fixed workload took ${g.singleCoreMs} ms, the reading that tells a slow day from a slow change` : ''}): **${minutes(g.totalSeconds)}** in all, ending ${g.passed} passed, ${g.failed} failed. Its budget is 12 minutes on an Intel Xeon machine of this kind and 15 on an AMD EPYC one ([DEVELOPERS.md](DEVELOPERS.md#the-gates-budget)); every run prints the same summary.`,
     '',
     ...table(
       ['stage', 'seconds'],

@@ -2,7 +2,7 @@
 // the page-load, gpu-process and renderer annotations add up per test and per spec file (– where no test recorded
 // the CPU times), and the tests nearest their timeout come first.
 import { describe, expect, test } from 'vitest';
-import { gateLines, gateSummary, testRuns } from './gateReport.mjs';
+import { gateLines, gateSummary, singleCoreMs, testRuns } from './gateReport.mjs';
 
 const result = (
   startTime: string,
@@ -30,8 +30,8 @@ const report = {
               timeout: 10_000,
               results: [
                 result('2026-12-02T10:00:01.000Z', 2000, [
-                  { type: 'page-load', description: '500' },
-                  { type: 'page-load', description: '250' },
+                  { type: 'page-load', description: '500 7.1' },
+                  { type: 'page-load', description: '250 7.2' },
                   { type: 'gpu-process', description: '1200' },
                   { type: 'renderer', description: '300' },
                 ]),
@@ -48,7 +48,11 @@ const report = {
               projectName: 'swiftshader',
               timeout: 4000,
               results: [
-                result('2026-12-02T10:00:05.000Z', 3000, [{ type: 'gpu-process', description: '800' }]),
+                // The load of a beforeAll hook, on each test of its group: counted once per spec file.
+                result('2026-12-02T10:00:05.000Z', 3000, [
+                  { type: 'page-load', description: '500 7.1' },
+                  { type: 'gpu-process', description: '800' },
+                ]),
               ],
             },
           ],
@@ -85,6 +89,7 @@ describe('gateReport', () => {
         title: 'second',
         seconds: 3,
         setupSeconds: 2,
+        pageLoadSeconds: 0.5,
         gpuSeconds: 0.8,
         rendererSeconds: null,
       }),
@@ -101,6 +106,7 @@ describe('gateReport', () => {
     const g = gateSummary({
       stages: [{ name: 'x', seconds: 12 }],
       totalSeconds: 12,
+      singleCoreMs: 230.5,
       report,
       passed: 2,
       failed: 0,
@@ -139,7 +145,16 @@ describe('gateReport', () => {
       ['a.spec.ts:3 first', 0.2],
       ['b.spec.ts:1 on Playwright’s own test', 0.1],
     ]);
+    expect(gateLines(g)[0]).toMatch(
+      /, \d+ cores; one core's fixed workload \(singleCoreMs in scripts\/gateReport\.mjs\): 230\.5 ms$/,
+    );
     expect(gateLines(g)).toContain('    8 s  (  3 /   1 s;   2 /   0 s)    2 tests  a.spec.ts');
     expect(gateLines(g)).toContain('    2 s  (  1 /   0 s;   – /   – s)    1 tests  b.spec.ts');
+  });
+
+  test('singleCoreMs: a positive, finite time of the fixed workload', () => {
+    const ms = singleCoreMs();
+    expect(ms).toBeGreaterThan(0);
+    expect(Number.isFinite(ms)).toBe(true);
   });
 });

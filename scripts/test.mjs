@@ -4,16 +4,17 @@
 // clone's npm ci, and Chromium and Xvfb where the machine has none), the spec files that took
 // the most worker time and the tests nearest their timeouts; reports/gate.json holds it, and
 // `npm test -- --record` also writes it to bench/results/gate.json, which BENCHMARKS.md renders.
-// The three unit and documentation stages run at once (each about one core's work for a minute, sharing no
-// output files: about 50 s less on 2 cores than one after another), their output printed stage by stage.
+// The unit stages run beside the documentation stages and Playwright (see `stages`), on cores they would leave idle.
 import { execFileSync, spawn } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { recordBrowser, writeJson } from '../bench/lib/meta.mjs';
 import { chromiumExecutable } from './browser.mjs';
-import { gateLines, gateSummary } from './gateReport.mjs';
-import { ensureBrowser, ensureDependencies, root, run } from './setup.mjs';
+import { gateLines, gateSummary, singleCoreMs } from './gateReport.mjs';
+import { ensureBrowser, ensureDependencies, root } from './setup.mjs';
 
+/** This machine's speed today, read before the run loads it. */
+const coreMs = singleCoreMs();
 const started = performance.now();
 const seconds = (/** @type {number} */ t0) => (performance.now() - t0) / 1000;
 /** @type {import('./gateReport.mjs').StageTime[]} each stage's wall time */
@@ -36,7 +37,14 @@ const E2E_PORT = Number(process.env.SHADELAB_E2E_PORT ?? 4173);
 process.env.SHADELAB_E2E_BUILT = '1';
 
 /** @typedef {[string, string, string[]]} Stage */
-/** @type {(Stage | Stage[])[]} a stage, or stages run at once */
+/**
+ * A stage, or tracks run at once, each a chain of stages one after another. The unit and documentation stages use
+ * about one core each and leave the other idle for part of their time, so Playwright (which keeps both busy)
+ * starts beside the unit stages, after the stages it needs: the docs site (the link check reads it,
+ * tests/docs-site.spec.ts serves it) and its own build. The first track prints as it goes; the others print each
+ * stage's output when it ends.
+ * @type {(Stage | Stage[][])[]}
+ */
 const stages = [
   ['type check (tsc -b, tests)', 'npx', ['tsc', '-b']],
   ['type check (tests, playground, bench)', 'npx', ['tsc', '-p', 'tsconfig.test.json']],
@@ -54,26 +62,30 @@ const stages = [
   ],
   [
     [
-      'unit (vitest)',
-      'npx',
+      ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],
+      ['links in the Markdown and the docs site resolve', 'node', ['scripts/check-links.mjs']],
       [
-        'vitest',
-        'run',
-        '--reporter=./scripts/vitestReporter.mjs',
-        '--reporter=json',
-        '--outputFile.json=reports/vitest.json',
+        'build the playground and the harness pages for Playwright',
+        'node',
+        ['scripts/e2e-build.mjs', '--port', String(E2E_PORT)],
+      ],
+      ['end-to-end and visual (playwright)', 'npx', ['playwright', 'test']],
+    ],
+    [
+      [
+        'unit (vitest)',
+        'npx',
+        [
+          'vitest',
+          'run',
+          '--reporter=./scripts/vitestReporter.mjs',
+          '--reporter=json',
+          '--outputFile.json=reports/vitest.json',
+        ],
       ],
     ],
-    ['unit (vitest) against the oldest supported three', 'node', ['scripts/three-compat.mjs']],
-    ['API reference (TypeDoc, every export documented)', 'node', ['scripts/docs.mjs', '--check']],
+    [['unit (vitest) against the oldest supported three', 'node', ['scripts/three-compat.mjs']]],
   ],
-  ['links in the Markdown and the docs site resolve', 'node', ['scripts/check-links.mjs']],
-  [
-    'build the playground and the harness pages for Playwright',
-    'node',
-    ['scripts/e2e-build.mjs', '--port', String(E2E_PORT)],
-  ],
-  ['end-to-end and visual (playwright)', 'npx', ['playwright', 'test']],
 ];
 
 /**
@@ -92,25 +104,54 @@ function capture([, cmd, args]) {
   });
 }
 
+/**
+ * Run a stage with its output shown as it comes; resolves with its exit code.
+ * @param {Stage} stage @returns {Promise<number>}
+ */
+function live([, cmd, args]) {
+  return new Promise((resolve) => {
+    const child = spawn(cmd, args, { cwd: root, stdio: 'inherit' });
+    child.on('error', () => resolve(1));
+    child.on('close', (code) => resolve(code ?? 1));
+  });
+}
+
+/** @type {string[]} the stages that failed */
 const failed = [];
-for (const step of stages) {
+/**
+ * Run one stage, showing its output as it comes (`shown`) or when it ends; records its time and any failure.
+ * @param {Stage} stage @param {boolean} shown
+ */
+async function runStage(stage, shown) {
   const t0 = performance.now();
+  let code;
+  if (shown) {
+    console.log(`\n── ${stage[0]} ──`);
+    code = await live(stage);
+  } else {
+    const result = await capture(stage);
+    console.log(`\n── ${stage[0]} ──`);
+    process.stdout.write(result.output);
+    code = result.code;
+  }
+  if (code !== 0) failed.push(stage[0]);
+  times.push({ name: stage[0], seconds: seconds(t0) });
+}
+
+for (const step of stages) {
   if (typeof step[0] === 'string') {
-    const [name, cmd, args] = /** @type {Stage} */ (step);
-    console.log(`\n── ${name} ──`);
-    if (run(cmd, args) !== 0) failed.push(name);
-    times.push({ name, seconds: seconds(t0) });
+    await runStage(/** @type {Stage} */ (step), true);
     continue;
   }
-  const group = /** @type {Stage[]} */ (step);
-  const running = group.map(capture);
-  for (const [i, [name]] of group.entries()) {
-    const { code, output } = await running[i];
-    console.log(`\n── ${name} ──`);
-    process.stdout.write(output);
-    if (code !== 0) failed.push(name);
-  }
-  times.push({ name: `${group.map(([name]) => name).join(' + ')} (at once)`, seconds: seconds(t0) });
+  const tracks = /** @type {Stage[][]} */ (step);
+  const t0 = performance.now();
+  await Promise.all(
+    tracks.map(async (track, i) => {
+      for (const stage of track) await runStage(stage, i === 0);
+    }),
+  );
+  const names = tracks.map((track) => track.map(([name]) => name).join(', then '));
+  times.push({ name: `in all, at once: ${names.join('; ')}`, seconds: seconds(t0) });
 }
 
 let passed = 0;
@@ -132,6 +173,7 @@ if (failed.length && failedTests === 0) failedTests = failed.length;
 const gate = gateSummary({
   stages: times,
   totalSeconds: seconds(started),
+  singleCoreMs: coreMs,
   report,
   passed,
   failed: failedTests,

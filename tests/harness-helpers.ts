@@ -7,16 +7,19 @@ import {
 } from '@playwright/test';
 import { shadelabUse } from '@shadelab/playwright';
 
+/** Loads timed in this worker: each load's id. */
+let loads = 0;
+
 /**
  * Records how long a page took to load (from `goto` until it said it was ready) as the test's `page-load`
- * annotation, which `npm test`'s summary adds up per spec file (scripts/gateReport.mjs).
+ * annotation, "<ms> <id>", which `npm test`'s summary adds up per spec file (scripts/gateReport.mjs). A load in a
+ * `beforeAll` hook is on every test of its group; the id has the summary count it once.
  */
 export async function timedLoad(load: () => Promise<unknown>): Promise<void> {
   const t0 = performance.now();
   await load();
-  base
-    .info()
-    .annotations.push({ type: 'page-load', description: String(Math.round(performance.now() - t0)) });
+  const ms = Math.round(performance.now() - t0);
+  base.info().annotations.push({ type: 'page-load', description: `${ms} ${process.pid}.${++loads}` });
 }
 
 /**
