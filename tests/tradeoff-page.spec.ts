@@ -82,3 +82,79 @@ test("trade-off page reads the playground's URL state", async ({ page }) => {
   await expect(page.getByTestId('base')).toHaveValue('octahedron');
   await expect(page.getByTestId('level')).toHaveValue('3');
 });
+
+test('trade-off page opened from another scene says it draws the lecture’s sphere; from the sphere it says nothing', async ({
+  page,
+}) => {
+  await page.goto(`/tradeoff.html#s=${encodeURIComponent(JSON.stringify({ scene: 'instanced' }))}`);
+  await expect(page.getByTestId('stats')).toBeVisible();
+  await expect(page.getByTestId('other-scene')).toContainText('instanced scene');
+  await expect(page.getByTestId('other-scene')).toContainText('draws the sphere');
+  await page.goto(`/tradeoff.html#s=${encodeURIComponent(JSON.stringify({ scene: 'sphere' }))}`);
+  await page.reload(); // a new hash alone does not reload the page
+  await expect(page.getByTestId('stats')).toBeVisible();
+  await expect(page.getByTestId('other-scene')).toHaveCount(0);
+});
+
+test('the charts: the axes are labelled over the range of the points, and each legend entry shows the marker its series draws', async ({
+  page,
+}) => {
+  await page.goto('/tradeoff.html');
+  await expect(page.locator('.recharts-scatter-symbol').first()).toBeVisible();
+  const chart = page.locator('.recharts-wrapper').first();
+  // Every dot lies between the first and the last labelled tick of each axis (on screen: x grows to the right,
+  // y upwards).
+  const ticks = async (axis: 'x' | 'y') =>
+    chart
+      .locator(`.recharts-${axis}Axis-tick-labels .recharts-cartesian-axis-tick-value`)
+      .evaluateAll((nodes) =>
+        nodes.map((n) => {
+          const box = n.getBoundingClientRect();
+          return { text: n.textContent ?? '', x: box.x + box.width / 2, y: box.y + box.height / 2 };
+        }),
+      );
+  const dots = await chart.locator('.recharts-scatter-symbol').evaluateAll((nodes) =>
+    nodes
+      .map((n) => n.getBoundingClientRect())
+      // The front's points draw nothing (its line joins them): no box.
+      .filter((b) => b.width > 0 && b.height > 0)
+      .map((b) => ({ x: b.x + b.width / 2, y: b.y + b.height / 2 })),
+  );
+  const x = await ticks('x');
+  const y = await ticks('y');
+  expect(x.length, JSON.stringify(x)).toBeGreaterThan(3);
+  const left = Math.min(...x.map((t) => t.x));
+  const right = Math.max(...x.map((t) => t.x));
+  const top = Math.min(...y.map((t) => t.y));
+  const bottom = Math.max(...y.map((t) => t.y));
+  for (const d of dots) {
+    expect(d.x, JSON.stringify({ d, x })).toBeGreaterThanOrEqual(left - 1);
+    expect(d.x, JSON.stringify({ d, x })).toBeLessThanOrEqual(right + 1);
+    expect(d.y, JSON.stringify({ d, y })).toBeGreaterThanOrEqual(top - 1);
+    expect(d.y, JSON.stringify({ d, y })).toBeLessThanOrEqual(bottom + 1);
+  }
+  // The frame-time axis names times past the slowest measured option (the log axis once stopped at 23 ms).
+  expect(Math.max(...x.map((t) => Number.parseFloat(t.text)))).toBeGreaterThan(23);
+
+  // The legends: the star of the current option, and in the adaptive chart a circle for the published view's
+  // series and a triangle for the deeper view's, the shapes the series draw.
+  const legendIcon = (name: RegExp) =>
+    page
+      .locator('.recharts-legend-item')
+      .filter({ hasText: name })
+      .first()
+      .locator('.recharts-symbols')
+      .getAttribute('d');
+  expect(await legendIcon(/current option/)).not.toBe(await legendIcon(/^flat$/));
+  // The Pareto front's entry is its dashed line, drawn in the line's colour.
+  await expect(
+    page
+      .locator('.recharts-legend-item')
+      .filter({ hasText: /^Pareto front$/ })
+      .first()
+      .locator('line'),
+  ).toHaveAttribute('stroke', '#ddd');
+  const published = await legendIcon(/^adaptive \(published view\)$/);
+  const deeper = await legendIcon(/^adaptive \(deeper view\)$/);
+  expect(published).not.toBe(deeper);
+});

@@ -92,6 +92,7 @@ export function AdaptiveParetoChart() {
                 data={dots(ADAPTIVE_POINTS.filter((p) => p.view === view && p.kind === kind))}
                 fill={COLORS[kind]}
                 shape={SHAPES[view]}
+                legendType={SHAPES[view]}
                 isAnimationActive={false}
               />
             )),

@@ -15,6 +15,7 @@ import {
   chartPoints,
   currentMarker,
   type ErrorMetric,
+  logTicks,
   paretoFront,
   TRADE_POINTS,
   type TradePoint,
@@ -39,6 +40,10 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
   const label = metric === 'rmse' ? 'interior RMSE (8-bit sRGB)' : 'silhouette error (px)';
   const front = chartPoints(paretoFront(TRADE_POINTS, metric), metric);
   const chosen = currentMarker(current, metric);
+  const all = chartPoints(TRADE_POINTS, metric);
+  const xTicks = logTicks(all.map((p) => p.x));
+  const yTicks = logTicks(all.map((p) => p.y));
+  const tick = (v: number) => String(Number(v.toPrecision(2)));
   const pick = (data: unknown) => {
     const name = (data as { payload?: ChartPoint } | undefined)?.payload?.name;
     const point = TRADE_POINTS.find((p) => p.name === name);
@@ -46,7 +51,7 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
   };
   return (
     <ResponsiveContainer width="100%" height={380}>
-      <ScatterChart margin={{ top: 10, right: 20, bottom: 30, left: 10 }}>
+      <ScatterChart margin={{ top: 10, right: 40, bottom: 30, left: 10 }}>
         <CartesianGrid stroke="#333" />
         <XAxis
           type="number"
@@ -54,8 +59,10 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
           name="frame"
           unit=" ms"
           scale="log"
-          domain={['auto', 'auto']}
-          tickFormatter={(v: number) => v.toFixed(v < 10 ? 1 : 0)}
+          domain={[xTicks[0], xTicks.at(-1)!]}
+          ticks={xTicks}
+          interval={0}
+          tickFormatter={tick}
           stroke="#aaa"
           label={{ value: 'frame time at 1280×720 (ms, log)', position: 'bottom', fill: '#aaa' }}
         />
@@ -64,8 +71,10 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
           dataKey="y"
           name={label}
           scale="log"
-          domain={['auto', 'auto']}
-          tickFormatter={(v: number) => String(Number(v.toPrecision(2)))}
+          domain={[yTicks[0], yTicks.at(-1)!]}
+          ticks={yTicks}
+          interval={0}
+          tickFormatter={tick}
           stroke="#aaa"
           label={{ value: `${label}, log`, angle: -90, position: 'insideLeft', fill: '#aaa', dy: 90 }}
         />
@@ -99,8 +108,9 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
           name="Pareto front"
           data={front}
           line={{ stroke: '#ddd', strokeDasharray: '4 3' }}
-          fill="none"
+          fill="#ddd"
           shape={() => <g />}
+          legendType="plainline"
           isAnimationActive={false}
         />
         <Scatter
@@ -108,6 +118,7 @@ export function ParetoChart({ metric, current, onPick }: ParetoChartProps) {
           data={chosen}
           fill="#ff3030"
           shape="star"
+          legendType="star"
           isAnimationActive={false}
         />
       </ScatterChart>

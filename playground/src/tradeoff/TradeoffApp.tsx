@@ -106,6 +106,13 @@ export function TradeoffApp() {
   return (
     <div className="tradeoff">
       <h1>Speed against accuracy: the lit sphere against its exact image</h1>
+      {initial.otherScene && (
+        <p className="note" data-testid="other-scene">
+          Opened from the playground's {initial.otherScene} scene: the trade measured here is the lecture's
+          sphere (its detail and shading), so this page draws the sphere, with that state's camera, lights and
+          material.
+        </p>
+      )}
       <div className="controls">
         <label>
           shading

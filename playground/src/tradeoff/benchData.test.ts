@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { CHART_FLOOR, chartPoints, currentMarker, TRADE_POINTS } from './benchData';
+import { CHART_FLOOR, chartPoints, currentMarker, logTicks, TRADE_POINTS } from './benchData';
 import { optionCost, optionKey } from './tradeoffScene';
 
 describe('the chart data', () => {
@@ -35,6 +35,22 @@ describe('the chart data', () => {
       const cost = optionCost(p.option);
       expect(p.triangles).toBe(cost.triangles);
       expect(p.bytes).toBe(cost.bytes);
+    }
+  });
+
+  it('log ticks span every value: 1, 2, 5 × 10^k from at or below the least to at or above the greatest', () => {
+    expect(logTicks([3.1, 23.4, 180])).toEqual([2, 5, 10, 20, 50, 100, 200]);
+    expect(logTicks([0.01, 0.5])).toEqual([0.01, 0.02, 0.05, 0.1, 0.2, 0.5]);
+    expect(logTicks([7])).toEqual([5, 10]);
+    expect(logTicks([])).toEqual([1]);
+    for (const metric of ['rmse', 'silhouettePx'] as const) {
+      const points = chartPoints(TRADE_POINTS, metric);
+      for (const axis of ['x', 'y'] as const) {
+        const values = points.map((p) => p[axis]);
+        const ticks = logTicks(values);
+        expect(ticks[0]).toBeLessThanOrEqual(Math.min(...values));
+        expect(ticks.at(-1)).toBeGreaterThanOrEqual(Math.max(...values));
+      }
     }
   });
 });

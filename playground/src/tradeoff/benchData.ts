@@ -119,3 +119,24 @@ export function cheapestMeeting(rmse: number, silhouettePx: number): TradePoint 
     .filter((p) => p.rmse <= rmse && p.silhouettePx <= silhouettePx)
     .sort((a, b) => a.frameMs - b.frameMs || a.bytes - b.bytes)[0];
 }
+
+/**
+ * Ticks of a log axis over the whole range of `values`: 1, 2 and 5 times the powers of ten, from the largest at or
+ * below the smallest value to the smallest at or above the largest, so the axis' domain is its first and last tick
+ * and every value lies between two labelled ticks.
+ */
+export function logTicks(values: readonly number[]): number[] {
+  const positive = values.filter((v) => v > 0 && Number.isFinite(v));
+  if (positive.length === 0) return [1];
+  const lo = Math.min(...positive);
+  const hi = Math.max(...positive);
+  const candidates: number[] = [];
+  for (let power = Math.floor(Math.log10(lo)); power <= Math.ceil(Math.log10(hi)); power++) {
+    // toPrecision: 2 · 0.1 is 0.2, not 0.20000000000000004.
+    for (const step of [1, 2, 5]) candidates.push(Number((step * 10 ** power).toPrecision(12)));
+  }
+  let first = 0;
+  while (candidates[first + 1] <= lo) first++;
+  const last = candidates.findIndex((t) => t >= hi);
+  return candidates.slice(first, last + 1);
+}

@@ -1,6 +1,7 @@
 // The trade-off page's first view and option: the playground's URL state (`#s=…`, same schema and parser)
 // mapped onto the trade-off scene when there is one, else the lecture's.
 import { readUrlState } from '../state/persist';
+import type { SceneName } from '../state/schema';
 import type { TradeOption, TradeView } from './tradeOption';
 
 /** The live view's size, px. */
@@ -12,6 +13,8 @@ export const MAX_LEVEL = 7;
 export interface Initial {
   view: TradeView;
   option: TradeOption;
+  /** The playground scene the URL names when it is not the lecture's sphere, which this page draws instead. */
+  otherScene: SceneName | null;
 }
 
 /** The playground's state from the URL, mapped onto the trade-off scene (camera looks at the origin). */
@@ -19,10 +22,11 @@ export function initialFromUrl(): Initial {
   const view: TradeView = { width: WIDTH, height: HEIGHT };
   const parsed = readUrlState();
   if (parsed === null || !parsed.ok) {
-    return { view, option: { shading: 'phong', base: 'tetrahedron', level: 6 } };
+    return { view, option: { shading: 'phong', base: 'tetrahedron', level: 6 }, otherScene: null };
   }
-  const { material, lights, model, camera, sphere } = parsed.state;
+  const { material, lights, model, camera, sphere, scene } = parsed.state;
   return {
+    otherScene: scene === 'sphere' ? null : scene,
     view: {
       ...view,
       projection: camera.projection,
