@@ -46,6 +46,38 @@ const heatPixels = (page: Page) =>
     return n;
   });
 
+/**
+ * How the heat map fits the objects drawn: of the canvas's object pixels (any channel more than 2 levels from
+ * the background, the corner's colour), the share under the heat map; of the heat map's pixels, the share off
+ * the objects.
+ */
+const heatFit = (page: Page) =>
+  page.evaluate(() => {
+    const view = document.querySelector<HTMLCanvasElement>('[data-testid=viewport]')!;
+    const heat = document.querySelector<HTMLCanvasElement>('[data-testid=adaptive-heatmap]')!;
+    const { width: w, height: h } = heat;
+    const copy = document.createElement('canvas');
+    copy.width = w;
+    copy.height = h;
+    const ctx = copy.getContext('2d')!;
+    ctx.drawImage(view, 0, 0, w, h);
+    const picture = ctx.getImageData(0, 0, w, h).data;
+    const overlay = heat.getContext('2d')!.getImageData(0, 0, w, h).data;
+    let objects = 0;
+    let covered = 0;
+    let heated = 0;
+    let off = 0;
+    for (let i = 0; i < picture.length; i += 4) {
+      const object = [0, 1, 2].some((c) => Math.abs(picture[i + c] - picture[c]) > 2);
+      const hot = overlay[i + 3] > 0;
+      if (object) objects++;
+      if (object && hot) covered++;
+      if (hot) heated++;
+      if (hot && !object) off++;
+    }
+    return { objects, covered: covered / objects, off: off / heated };
+  });
+
 test('instanced scene: within the budget at 8 and 64 levels, every instance listed, heat map drawn, off restores the picture', async ({
   page,
 }) => {
@@ -64,7 +96,16 @@ test('instanced scene: within the budget at 8 and 64 levels, every instance list
   // The scene's 40 instances, each once.
   expect(sum(await choices(page))).toBe(40);
   expect(await heatPixels(page)).toBeGreaterThan(1000);
+  // The heat map lies on the spheres (each instance's exact outline under the perspective, off-axis too): it
+  // covers their pixels and spills only its anti-aliased edge past them.
+  const fit = await heatFit(page);
+  test.info().annotations.push({ type: 'heat map fit', description: JSON.stringify(fit) });
+  expect(fit.objects).toBeGreaterThan(5000);
+  expect(fit.covered, JSON.stringify(fit)).toBeGreaterThan(0.995);
+  expect(fit.off, JSON.stringify(fit)).toBeLessThan(0.08);
+  // Both frame times measured, in the same cycle.
   await expect(page.getByTestId('adaptive-frame-on')).toContainText('ms');
+  await expect(page.getByTestId('adaptive-frame-off')).toContainText('ms');
   // The largest budget: measured again, still within it.
   await page.getByTestId('adaptive-budget').fill('24');
   await expect(page.getByTestId('adaptive-budget-value')).toHaveText('64');
@@ -106,6 +147,16 @@ test('a loaded glTF model: its meshes listed, within the budget', async ({ page 
   expect(sum(c)).toBeGreaterThanOrEqual(1);
   expect(m.p99).toBeLessThanOrEqual(8);
   expect(m.over).toBeLessThanOrEqual(0.005);
+  // Turning the view makes the error and the frame times stale: they are measured again for the new view.
+  const stats = page.getByTestId('adaptive-stats');
+  const count = Number(await stats.getAttribute('data-measurements'));
+  await page.getByTestId('viewport').focus();
+  await page.keyboard.press('l'); // the trackball turns the field
+  await expect
+    .poll(async () => Number(await stats.getAttribute('data-measurements')), { timeout: 20_000 })
+    .toBeGreaterThan(count);
+  await expect(page.getByTestId('adaptive-frame-off')).toContainText('ms');
+  await expect(page.getByTestId('adaptive-error')).toContainText('p99');
 });
 
 test('in the compare view it says why it does not run, and changes nothing', async ({ page }) => {
