@@ -2,8 +2,8 @@ import { expect, type Page } from '@playwright/test';
 import { test } from './harness-helpers';
 import { HIDE_OVERLAYS, open, panelAtRest } from './playground-helpers';
 
-// The playground's layout at the two common desktop sizes: canvas on the left, the side column (the leva panel
-// above, the shader view below) on the right; nothing wider than the window, no part overlapping another, each
+// The playground's layout at the two common desktop sizes: canvas on the left, the side column (the Learn panel's
+// button, the leva panel below it, the shader view at the bottom) on the right; nothing wider than the window, no part overlapping another, each
 // at least the size below (measured from the layout: index.html's CSS gives the side column 340 px, 520 px from
 // 1800 px up, and splits its height 55 : 45 between the panel and the shader view). Whole-page screenshots
 // (maxDiffPixels 0 as everywhere) with the animated overlays (stats, hint) hidden. Update the baselines after an
@@ -11,8 +11,15 @@ import { HIDE_OVERLAYS, open, panelAtRest } from './playground-helpers';
 //   SHADELAB_E2E_PORT=4316 npx playwright test tests/playground-layout.spec.ts --update-snapshots
 
 const SIZES = [
-  { width: 1280, height: 800, canvas: [935, 800], panel: [340, 420], shader: [340, 340] },
-  { width: 1920, height: 1080, canvas: [1395, 1080], panel: [520, 575], shader: [520, 470] },
+  { width: 1280, height: 800, canvas: [935, 800], lesson: [320, 24], panel: [340, 390], shader: [340, 320] },
+  {
+    width: 1920,
+    height: 1080,
+    canvas: [1395, 1080],
+    lesson: [500, 24],
+    panel: [520, 545],
+    shader: [520, 450],
+  },
 ] as const;
 
 type Box = { x: number; y: number; width: number; height: number };
@@ -39,6 +46,7 @@ for (const size of SIZES) {
     expect(scroll[0]).toBeLessThanOrEqual(scroll[1]!);
     const boxes = {
       canvas: await box(page, '[data-testid="viewport"]'),
+      lesson: await box(page, '[data-testid="lesson-open"]'),
       panel: await box(page, '.panel'),
       shader: await box(page, '.shader-view'),
     };
@@ -49,6 +57,8 @@ for (const size of SIZES) {
       expect(b.x + b.width, `${name} right edge`).toBeLessThanOrEqual(size.width);
       expect(b.y + b.height, `${name} bottom edge`).toBeLessThanOrEqual(size.height);
     }
+    expect(overlap(boxes.canvas, boxes.lesson)).toBe(false);
+    expect(overlap(boxes.lesson, boxes.panel)).toBe(false);
     expect(overlap(boxes.canvas, boxes.panel)).toBe(false);
     expect(overlap(boxes.canvas, boxes.shader)).toBe(false);
     expect(overlap(boxes.panel, boxes.shader)).toBe(false);

@@ -10,6 +10,7 @@ import { AdaptiveTool } from './learn/adaptiveTool';
 import { AttenuationTool } from './learn/attenuationTool';
 import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
+import { Lesson } from './learn/Lesson';
 import { NormalMatrixTool } from './learn/normalMatrixTool';
 import { ProbeLauncher } from './learn/probeLauncher';
 import { ProfileTool } from './learn/profileTool';
@@ -278,6 +279,7 @@ export function App() {
         webgpu={webgpu}
         gpuShader={gpuShader}
         modelNote={state.scene === 'model' && model.shown ? modelNote(model.shown) : null}
+        lesson={<Lesson update={update} />}
       />
       <SceneControls state={state} update={update} actions={actions} />
       {state.lights.map((_, i) => (

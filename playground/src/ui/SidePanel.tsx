@@ -1,5 +1,5 @@
 import { Leva } from 'leva';
-import { useEffect, useRef, useState } from 'react';
+import { type ReactNode, useEffect, useRef, useState } from 'react';
 import type { ShaderCheck, ShaderSource } from '../engine/ShaderProbe';
 import { sceneNote } from '../engine/scenes';
 import { backendLabel, type GeneratedShader, type WebGPUStatus, webgpuNotes } from '../engine/webgpu/status';
@@ -26,14 +26,25 @@ interface Props {
   gpuShader: GeneratedShader | null;
   /** What the shown model is and what was swapped (scene `model`), or null. */
   modelNote?: string | null;
+  /** The Learn panel, at the top of the column. */
+  lesson?: ReactNode;
 }
 
 /**
- * The column beside the canvas: the leva panel (its folders collapse), the scene note, WebGPU mode's notes, and the
+ * The column beside the canvas: the Learn panel, the leva panel (its folders collapse), the scene note, WebGPU mode's notes, and the
  * shader view (it collapses to its title), with a splitter between the panel and the shader view; the page
  * remembers all three (`panelLayout.ts`).
  */
-export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuShader, modelNote }: Props) {
+export function SidePanel({
+  state,
+  variant,
+  tryShader,
+  clearShader,
+  webgpu,
+  gpuShader,
+  modelNote,
+  lesson,
+}: Props) {
   const panelRef = useRef<HTMLDivElement>(null);
   useRememberFolders(panelRef);
   useVectorLabels(panelRef);
@@ -48,6 +59,7 @@ export function SidePanel({ state, variant, tryShader, clearShader, webgpu, gpuS
   const split = (webgpuMode || showEditor) && !collapsed;
   return (
     <aside className="side">
+      {lesson}
       <div className="panel" ref={panelRef} style={split ? { flexBasis: `${share}%` } : undefined}>
         <Leva fill flat titleBar={false} hideCopyButton />
       </div>
