@@ -35,7 +35,13 @@ export default defineConfig({
     setupFiles: [...[base.test?.setupFiles ?? []].flat(), here('./checkRevision.ts')],
     // The node materials (`@shadelab/material/webgpu`) need three ≥ 0.187: their tests import three/webgpu, which
     // has no pinned counterpart here (it would be the root's three beside the pinned one).
-    exclude: [...(base.test?.exclude ?? configDefaults.exclude), 'packages/*/src/**/*Node*.test.ts'],
+    // The repository's own tools (scripts/, bench/) never load three: their tests are the same code on any three.
+    exclude: [
+      ...(base.test?.exclude ?? configDefaults.exclude),
+      'packages/*/src/**/*Node*.test.ts',
+      'scripts/**',
+      'bench/**',
+    ],
     // React Three Fiber goes through the aliases too (its ES module, inlined), so that it and the packages share
     // the pinned three as they share one three in an app: left external, it loaded the root's three, and its
     // `instanceof THREE.Color` failed on the packages' colours (@shadelab/react's applyProps test).
