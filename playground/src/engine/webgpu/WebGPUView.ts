@@ -39,6 +39,9 @@ type Backend = {
 };
 type GpuNavigator = { gpu?: { requestAdapter(): Promise<unknown> } };
 
+/** This browser gave no WebGPU adapter (it will not give one later in the page's life). */
+let noAdapter = false;
+
 export class WebGPUView {
   private renderer: WebGPURenderer | null = null;
   private canvas: HTMLCanvasElement | null = null;
@@ -66,12 +69,10 @@ export class WebGPUView {
   private async start(): Promise<void> {
     const gpu = (navigator as GpuNavigator).gpu;
     let reason: FallbackReason | null = gpu ? null : 'no-webgpu';
-    if (gpu) {
-      try {
-        if ((await gpu.requestAdapter()) === null) reason = 'no-adapter';
-      } catch {
-        reason = 'no-adapter';
-      }
+    if (gpu && (noAdapter || (await gpu.requestAdapter().catch(() => null)) === null)) {
+      // Chromium warns "No available adapters." at each request that finds none: asked once per page.
+      noAdapter = true;
+      reason = 'no-adapter';
     }
     await this.open(reason);
   }
