@@ -257,19 +257,21 @@ export function App() {
           dismissModel={model.dismiss}
           errors={errors}
         />
-        <Stats feed={feed} />
         <ProbeLauncher viewerRef={viewerRef} state={state} />
-        <p className="hint">
-          Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
-          <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
-            speed/accuracy trade-off of this view
-          </a>{' '}
-          · <ModelPicker model={model} /> · <CopyCodeButtons state={state} /> · learn:{' '}
-          <ProfileTool viewerRef={viewerRef} state={state} />{' '}
-          <AttenuationTool viewerRef={viewerRef} state={state} />{' '}
-          <NormalMatrixTool viewerRef={viewerRef} state={state} />{' '}
-          <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
-        </p>
+        <div className="stage-foot">
+          <Stats feed={feed} />
+          <p className="hint">
+            Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
+            <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
+              speed/accuracy trade-off of this view
+            </a>{' '}
+            · <ModelPicker model={model} /> · <CopyCodeButtons state={state} /> · learn:{' '}
+            <ProfileTool viewerRef={viewerRef} state={state} />{' '}
+            <AttenuationTool viewerRef={viewerRef} state={state} />{' '}
+            <NormalMatrixTool viewerRef={viewerRef} state={state} />{' '}
+            <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
+          </p>
+        </div>
       </main>
       <SidePanel
         state={state}
