@@ -1,8 +1,9 @@
 import { expect, type Locator, type Page } from '@playwright/test';
 import { timedLoad } from './harness-helpers';
 
-/** Overlays drawn over the canvas (stats, hints, messages): hidden in canvas screenshots. */
-export const HIDE_OVERLAYS = '.stats, .hint, .messages, .compare-labels { visibility: hidden !important; }';
+/** Overlays drawn over the canvas (stats, hints, messages, arrows to lights): hidden in canvas screenshots. */
+export const HIDE_OVERLAYS =
+  '.stats, .hint, .messages, .compare-labels, .light-arrow { visibility: hidden !important; }';
 
 /** The playground URL for a (partial) state: the same `#s=<json>` the app writes. */
 export function stateUrl(state: object): string {

@@ -256,8 +256,7 @@ test.describe('the learning views’ baselines', () => {
     const dialog = page.getByRole('dialog', { name: /^Copy as code/ });
     await expect(dialog).not.toContainText('copying…');
     // The dialog alone: its rounded corners show the page behind it, which is hidden here.
-    await expect(dialog).toHaveScreenshot('learn-copy-code-r3f.png', {
-      style: '.side, .stage-foot { visibility: hidden !important; }',
-    });
+    await page.addStyleTag({ content: '.side, .stage-foot { visibility: hidden !important; }' });
+    await expect(dialog).toHaveScreenshot('learn-copy-code-r3f.png');
   });
 });

@@ -61,6 +61,17 @@ test('a student walks every step of the Learn panel, and each step shows what it
   await page.setViewportSize({ width: 1280, height: 800 });
   await open(page);
   const lesson = page.getByTestId('lesson');
+  // Light 1 sits behind the eye, up and to the left: an arrow on the view's border points that way.
+  const arrows = page.getByTestId('light-arrow');
+  await expect(arrows).toHaveCount(1);
+  await expect(arrows).toHaveAttribute('data-light', '1');
+  await expect(arrows).toHaveAttribute('aria-label', 'Light 1 is behind the eye: this way');
+  const view = (await page.getByTestId('viewport').boundingBox())!;
+  const arrow = (await arrows.boundingBox())!;
+  expect(arrow.x).toBeGreaterThanOrEqual(view.x);
+  expect(arrow.y).toBeGreaterThanOrEqual(view.y);
+  expect(arrow.x + arrow.width / 2).toBeLessThan(view.x + view.width / 2);
+  expect(arrow.y + arrow.height / 2).toBeLessThan(view.y + view.height / 2);
   await page.getByRole('button', { name: /Learn the lecture/ }).click();
   await expect(lesson).toHaveAttribute('data-step', 'lights');
   await expect(lesson).toContainText(`Step 1 of ${LESSON_STEPS.length}`);
@@ -72,6 +83,9 @@ test('a student walks every step of the Learn panel, and each step shows what it
   const lights = state['lights'] as { position: number[] }[];
   expect(lights).toHaveLength(2);
   expect(lights[1]!.position).toEqual(LESSON_LIGHT_POSITION);
+  // Light 2 is in the view: no arrow for it.
+  await expect(arrows).toHaveCount(1);
+  await expect(arrows).toHaveAttribute('data-light', '1');
   await probe(page, 0.3, 0.32); // the upper left, which light 2 lights
   const diffuse = await row(page, 'att·kd·Id·max(l·n,0)', 2);
   expect(diffuse).toHaveLength(3);

@@ -27,6 +27,7 @@ import {
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
 import { gizmoNotice } from './ui/gizmoNotice';
+import { LightArrows } from './ui/LightArrows';
 import { Messages } from './ui/Messages';
 import { ModelPicker, modelDropProps, modelNote } from './ui/ModelPicker';
 import { SidePanel } from './ui/SidePanel';
@@ -258,6 +259,7 @@ export function App() {
           errors={errors}
         />
         <ProbeLauncher viewerRef={viewerRef} state={state} />
+        <LightArrows viewerRef={viewerRef} state={state} feed={feed} />
         <div className="stage-foot">
           <Stats feed={feed} />
           <p className="hint">
