@@ -1,5 +1,5 @@
 import type { ExpectMatcherState, Locator } from '@playwright/test';
-import { describe, expect, it } from 'vitest';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { type CanvasState, inspectCanvas } from './canvasContexts.js';
 import { encodePng } from './png.js';
 import { toHaveRendered, waitForFirstFrame } from './toHaveRendered.js';
@@ -40,6 +40,7 @@ function fakeCanvas(
   const canvas = {
     evaluate: async (fn: unknown, probe: unknown) => {
       if (fn !== inspectCanvas) return undefined; // readCanvas marking the element
+      lookTick();
       const result = answer(n++, probe === true);
       if (result instanceof Error) throw result;
       return result;
@@ -55,7 +56,30 @@ const thenTimeouts = (first: CanvasState) => (n: number) => (n === 0 ? first : t
 
 const matcher = (isNot: boolean) => ({ isNot, timeout: 300 }) as ExpectMatcherState;
 
+/** Each look at the fake canvas takes this long on the clock {@link onTheLooksClock} sets. */
+const LOOK_MS = 40;
+/** Called by the fake canvas at each look (a no-op off {@link onTheLooksClock}). */
+let lookTick = () => {};
+
+/**
+ * The matcher's clock (Date.now) advanced by the looks alone, {@link LOOK_MS} each: how many looks fit in a
+ * timeout is then the same on an idle and on a busy machine.
+ */
+function onTheLooksClock(): void {
+  let now = 0;
+  vi.spyOn(Date, 'now').mockImplementation(() => now);
+  lookTick = () => {
+    now += LOOK_MS;
+  };
+}
+
 describe('toHaveRendered on a page too slow to answer (a look cut short by its own timeout)', () => {
+  beforeEach(onTheLooksClock);
+  afterEach(() => {
+    vi.restoreAllMocks();
+    lookTick = () => {};
+  });
+
   it('reports what an earlier look saw, not that the canvas could not be found', async () => {
     // The flake: the canvas had no context, and the last look ran out of time under load.
     const { canvas, calls } = fakeCanvas(thenTimeouts(canvasState({ context: null })));
