@@ -6,7 +6,7 @@
 import { Fragment, useState } from 'react';
 import { isEmbedded } from '../state/embed';
 import type { Update } from '../ui/useFolder';
-import { LESSON_STEPS } from './lessonSteps';
+import { applyStep, LESSON_STEPS } from './lessonSteps';
 
 /** The step's text with its **bold** parts (the controls it names) in bold. */
 function withBold(text: string) {
@@ -25,7 +25,7 @@ export function Lesson({ update }: { update: Update }) {
   const go = (index: number) => {
     setStep(index);
     setReached(index);
-    update((d) => LESSON_STEPS[index]!.set(d));
+    update((d) => applyStep(d, LESSON_STEPS[index]!));
   };
   if (step === null) {
     return (

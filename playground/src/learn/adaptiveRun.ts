@@ -42,6 +42,7 @@ const _eye = new THREE.Vector3();
 const _a = new THREE.Vector3();
 const _b = new THREE.Vector3();
 const _p = new THREE.Vector3();
+const _centre = new THREE.Vector3();
 
 /** A choice's name in the legend: "phong full", "phong 1", "gouraud full", "flat full prepared", … */
 export function choiceKey(c: AdaptiveChoice | null): string {
@@ -264,18 +265,17 @@ function ellipsoidOutline(
   h: number,
 ): [number, number][] | null {
   _inverse.copy(A).invert();
-  let centre: THREE.Vector3;
   let radius: number;
   if (ortho) {
     // The view direction (the camera's −z in world space), as a direction in the unit sphere's frame.
     _eye.set(0, 0, -1).transformDirection(camera.matrixWorld).transformDirection(_inverse);
-    centre = new THREE.Vector3();
+    _centre.set(0, 0, 0);
     radius = 1;
   } else {
     _eye.setFromMatrixPosition(camera.matrixWorld).applyMatrix4(_inverse);
     const d2 = _eye.lengthSq();
     if (d2 <= 1) return null;
-    centre = _eye.clone().divideScalar(d2);
+    _centre.copy(_eye).divideScalar(d2);
     radius = Math.sqrt(1 - 1 / d2);
   }
   // An orthonormal pair across the axis _eye.
@@ -286,7 +286,7 @@ function ellipsoidOutline(
   const outline: [number, number][] = [];
   for (let k = 0; k < OUTLINE_POINTS; k++) {
     const t = (2 * Math.PI * k) / OUTLINE_POINTS;
-    _p.copy(centre)
+    _p.copy(_centre)
       .addScaledVector(_a, radius * Math.cos(t))
       .addScaledVector(_b, radius * Math.sin(t))
       .applyMatrix4(A)

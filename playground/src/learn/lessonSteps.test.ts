@@ -1,7 +1,7 @@
 import { PerspectiveCamera, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { defaultState, parseState } from '../state/schema';
-import { LESSON_LIGHT_POSITION, LESSON_STEPS } from './lessonSteps';
+import { applyStep, LESSON_LIGHT_POSITION, LESSON_STEPS } from './lessonSteps';
 
 describe('the lesson’s steps', () => {
   it('the lecture’s thirteen steps, in its order, each with a title and a text', () => {
@@ -27,8 +27,8 @@ describe('the lesson’s steps', () => {
     let walked = defaultState();
     for (const step of LESSON_STEPS) {
       const fresh = defaultState();
-      step.set(fresh);
-      step.set(walked);
+      applyStep(fresh, step);
+      applyStep(walked, step);
       for (const state of [fresh, walked]) {
         const parsed = parseState(JSON.stringify(state));
         expect(parsed.ok, `${step.id}: ${JSON.stringify(parsed)}`).toBe(true);
