@@ -116,7 +116,14 @@ export class NodeMirror {
       const current = new Map<THREE.Mesh, Materials>();
       const byMesh = new Map<THREE.Mesh, Materials>();
       let swap: SwappedMaterials<ShadingNodeMaterial>;
+      // The viewer's outlines are the viewer's, not the model's: WebGPU mode draws them with its own node hull
+      // (above), so the swap, which would leave them in place and say so, does not see them.
+      const outlines: [THREE.Object3D, THREE.Object3D][] = [];
+      found.root.traverse((o) => {
+        if ((o as THREE.Mesh).material instanceof OutlineMaterial && o.parent) outlines.push([o, o.parent]);
+      });
       try {
+        for (const [o] of outlines) o.removeFromParent();
         for (const [m, original] of found.meshes) {
           current.set(m, m.material);
           m.material = original;
@@ -125,6 +132,7 @@ export class NodeMirror {
         for (const m of found.meshes.keys()) byMesh.set(m, m.material);
       } finally {
         for (const [m, material] of current) m.material = material;
+        for (const [o, parent] of outlines) parent.add(o);
       }
       const made: ModelSwap = { byMesh, swap, key: '' };
       model = made;
