@@ -1,9 +1,12 @@
 import { expect, type Locator, type Page } from '@playwright/test';
 import { timedLoad } from './harness-helpers';
 
-/** Overlays drawn over the canvas (stats, hints, messages, arrows to lights): hidden in canvas screenshots. */
+/**
+ * What is drawn over the canvas (messages, the compare view's labels, arrows to lights) and the render statistics
+ * (they change every frame): hidden in screenshots.
+ */
 export const HIDE_OVERLAYS =
-  '.stats, .hint, .messages, .compare-labels, .light-arrow { visibility: hidden !important; }';
+  '.stats-box, .messages, .compare-labels, .light-arrow { visibility: hidden !important; }';
 
 /** The playground URL for a (partial) state: the same `#s=<json>` the app writes. */
 export function stateUrl(state: object): string {

@@ -170,12 +170,17 @@ test.describe('the learning views’ baselines', () => {
     await page.close();
   });
 
-  /** The view and what is drawn over it (the stats, the hint and the messages hidden). */
+  /**
+   * The view and what is drawn over it (the messages hidden), and, when a tool's panel is open, the dock that holds
+   * it (`<name>-dock.png`).
+   */
   async function stageShot(name: string): Promise<void> {
-    // Removed after the shot: the hint line holds the tools' toggles, and `open` on the same page only changes
-    // the hash (no reload).
+    // Removed after the shot: `open` on the same page only changes the hash (no reload).
     const style = await page.addStyleTag({ content: HIDE_OVERLAYS });
     await expect(page.locator('main.stage')).toHaveScreenshot(name);
+    if (await page.getByTestId('dock').locator('> *').count()) {
+      await expect(page.getByTestId('dock')).toHaveScreenshot(name.replace(/\.png$/, '-dock.png'));
+    }
     await style.evaluate((element) => (element as Element).remove());
   }
 
@@ -256,7 +261,7 @@ test.describe('the learning views’ baselines', () => {
     const dialog = page.getByRole('dialog', { name: /^Copy as code/ });
     await expect(dialog).not.toContainText('copying…');
     // The dialog alone: its rounded corners show the page behind it, which is hidden here.
-    await page.addStyleTag({ content: '.side, .stage-foot { visibility: hidden !important; }' });
+    await page.addStyleTag({ content: '.side { visibility: hidden !important; }' });
     await expect(dialog).toHaveScreenshot('learn-copy-code-r3f.png');
   });
 });

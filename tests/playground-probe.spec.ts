@@ -302,7 +302,7 @@ test('the probe follows the trackball while the panel is open, and still agrees 
   await expect(page.getByTestId('probe-panel')).toHaveCount(0);
 });
 
-test('the open panel fits the view at 1280 × 800 and 1920 × 1080, below the object', async () => {
+test('the open panel docks beside the view at 1280 × 800 and 1920 × 1080, in the side column', async () => {
   for (const [width, height] of [
     [1280, 800],
     [1920, 1080],
@@ -313,12 +313,11 @@ test('the open panel fits the view at 1280 × 800 and 1920 × 1080, below the ob
     expectAgrees(probed, `${width} × ${height}`);
     const canvas = (await page.getByTestId('viewport').boundingBox())!;
     const panel = (await page.getByTestId('probe-panel').boundingBox())!;
-    expect(panel.x).toBeGreaterThanOrEqual(canvas.x);
-    expect(panel.x + panel.width).toBeLessThanOrEqual(canvas.x + canvas.width + 0.5);
-    expect(panel.y + panel.height).toBeLessThanOrEqual(canvas.y + canvas.height + 0.5);
-    expect(panel.y, 'the upper 60 % of the view (the object) stays uncovered').toBeGreaterThanOrEqual(
-      canvas.y + 0.6 * canvas.height,
-    );
+    const side = (await page.locator('.side').boundingBox())!;
+    expect(panel.x, 'the panel lies beside the view').toBeGreaterThanOrEqual(canvas.x + canvas.width);
+    expect(panel.x).toBeGreaterThanOrEqual(side.x);
+    expect(panel.x + panel.width).toBeLessThanOrEqual(side.x + side.width + 0.5);
+    expect(panel.y).toBeGreaterThanOrEqual(side.y);
     const page_ = await page.evaluate(() => ({
       overflowX: document.documentElement.scrollWidth > window.innerWidth,
       overflowY: document.documentElement.scrollHeight > window.innerHeight,

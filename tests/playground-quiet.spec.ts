@@ -63,7 +63,7 @@ test('the console stays quiet on load and across the tools, and every control ha
   await expect(page.getByTestId('probe-panel')).toHaveAttribute('data-probed', '1');
   expect(await unnamed(page), 'controls without a name with the lesson and the probe open').toEqual([]);
   await page.getByTestId('lesson').getByRole('button', { name: 'leave the lesson' }).click();
-  // Each learning tool under the view, turned on and off.
+  // Each learning tool, turned on and off.
   for (const tool of ['intensity profile', 'attenuation curve', 'normal matrix']) {
     await page.getByRole('button', { name: tool }).click();
     await settle(page);

@@ -6,14 +6,9 @@ import { COMPARE_COLUMNS, compareLayout, type Layout } from './engine/viewer/lay
 import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
-import { AdaptiveTool } from './learn/adaptiveTool';
-import { AttenuationTool } from './learn/attenuationTool';
-import { CopyCodeButtons } from './learn/CopyCodeButtons';
 import { EmbedStrip } from './learn/embedStrip';
 import { Lesson } from './learn/Lesson';
-import { NormalMatrixTool } from './learn/normalMatrixTool';
 import { ProbeLauncher } from './learn/probeLauncher';
-import { ProfileTool } from './learn/profileTool';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -22,16 +17,17 @@ import {
   defaultState,
   MAX_LIGHTS,
   type PlaygroundState,
-  serializeState,
   validateState,
 } from './state/schema';
 import { LightControls, SceneControls } from './ui/Controls';
+import { DockContext } from './ui/dock';
 import { gizmoNotice } from './ui/gizmoNotice';
 import { LightArrows } from './ui/LightArrows';
 import { Messages } from './ui/Messages';
-import { ModelPicker, modelDropProps, modelNote } from './ui/ModelPicker';
+import { modelDropProps, modelNote } from './ui/ModelPicker';
 import { SidePanel } from './ui/SidePanel';
 import { Stats, StatsFeed } from './ui/Stats';
+import { Tools } from './ui/Tools';
 import type { Update } from './ui/useFolder';
 import { useModel } from './ui/useModel';
 
@@ -61,6 +57,7 @@ export function App() {
   const [webgpu, setWebgpu] = useState<WebGPUStatus | null>(null);
   const [gpuShader, setGpuShader] = useState<GeneratedShader | null>(null);
   const [parity, setParity] = useState<ParityResult | null>(null);
+  const [dock, setDock] = useState<HTMLElement | null>(null);
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -222,75 +219,66 @@ export function App() {
   ];
 
   return (
-    <div className="app">
-      <main className="stage">
-        <canvas
-          key={depth}
-          ref={canvasRef}
-          data-testid="viewport"
-          tabIndex={0}
-          role="img"
-          aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom, Alt+click to probe a pixel; camera keys: ${MOVE_KEYS}.`}
-          onPointerDown={(e) => e.currentTarget.focus()}
-          {...modelDropProps(model.open)}
+    <DockContext.Provider value={dock}>
+      <div className="app">
+        <main className="stage">
+          <canvas
+            key={depth}
+            ref={canvasRef}
+            data-testid="viewport"
+            tabIndex={0}
+            role="img"
+            aria-label={`${state.scene === 'sphere' ? 'Lit sphere' : `Lit scene: ${SCENE_LABELS[state.scene]}`}. Drag or ${TURN_KEYS_TEXT} to turn it (trackball), wheel to zoom, Alt+click to probe a pixel; camera keys: ${MOVE_KEYS}.`}
+            onPointerDown={(e) => e.currentTarget.focus()}
+            {...modelDropProps(model.open)}
+          />
+          {state.view === 'parity' && <ParityPanel result={parity} layout={layout} status={webgpu} />}
+          {state.view === 'compare' && (
+            <ol
+              className="compare-labels"
+              aria-label="comparison columns"
+              style={{
+                gridTemplateColumns: `repeat(${layout.cols}, 1fr)`,
+                gridTemplateRows: `repeat(${layout.rows}, 1fr)`,
+              }}
+            >
+              {COMPARE_COLUMNS.map((c) => (
+                <li key={c.label}>{c.label}</li>
+              ))}
+            </ol>
+          )}
+          <Messages
+            context={context}
+            dismissContext={() => setContext('ok')}
+            notices={notices}
+            dismissNotice={(n) => setNotices((all) => all.filter((m) => m !== n))}
+            model={model.message}
+            dismissModel={model.dismiss}
+            errors={errors}
+          />
+          <ProbeLauncher viewerRef={viewerRef} state={state} />
+          <LightArrows viewerRef={viewerRef} state={state} feed={feed} />
+        </main>
+        <SidePanel
+          state={state}
+          variant={variant}
+          tryShader={tryShader}
+          clearShader={clearShader}
+          webgpu={webgpu}
+          gpuShader={gpuShader}
+          modelNote={state.scene === 'model' && model.shown ? modelNote(model.shown) : null}
+          lesson={<Lesson update={update} />}
+          tools={<Tools viewerRef={viewerRef} state={state} feed={feed} update={update} model={model} />}
+          stats={<Stats feed={feed} />}
+          dockRef={setDock}
         />
-        {state.view === 'parity' && <ParityPanel result={parity} layout={layout} status={webgpu} />}
-        {state.view === 'compare' && (
-          <ol
-            className="compare-labels"
-            aria-label="comparison columns"
-            style={{
-              gridTemplateColumns: `repeat(${layout.cols}, 1fr)`,
-              gridTemplateRows: `repeat(${layout.rows}, 1fr)`,
-            }}
-          >
-            {COMPARE_COLUMNS.map((c) => (
-              <li key={c.label}>{c.label}</li>
-            ))}
-          </ol>
-        )}
-        <Messages
-          context={context}
-          dismissContext={() => setContext('ok')}
-          notices={notices}
-          dismissNotice={(n) => setNotices((all) => all.filter((m) => m !== n))}
-          model={model.message}
-          dismissModel={model.dismiss}
-          errors={errors}
-        />
-        <ProbeLauncher viewerRef={viewerRef} state={state} />
-        <LightArrows viewerRef={viewerRef} state={state} feed={feed} />
-        <div className="stage-foot">
-          <Stats feed={feed} />
-          <p className="hint">
-            Drag or {TURN_KEYS_TEXT}: trackball · wheel: zoom · click the view, then {MOVE_KEYS} ·{' '}
-            <a href={`./tradeoff.html#${new URLSearchParams({ s: serializeState(state) })}`}>
-              speed/accuracy trade-off of this view
-            </a>{' '}
-            · <ModelPicker model={model} /> · <CopyCodeButtons state={state} /> · learn:{' '}
-            <ProfileTool viewerRef={viewerRef} state={state} />{' '}
-            <AttenuationTool viewerRef={viewerRef} state={state} />{' '}
-            <NormalMatrixTool viewerRef={viewerRef} state={state} />{' '}
-            <AdaptiveTool viewerRef={viewerRef} state={state} feed={feed} update={update} />
-          </p>
-        </div>
-      </main>
-      <SidePanel
-        state={state}
-        variant={variant}
-        tryShader={tryShader}
-        clearShader={clearShader}
-        webgpu={webgpu}
-        gpuShader={gpuShader}
-        modelNote={state.scene === 'model' && model.shown ? modelNote(model.shown) : null}
-        lesson={<Lesson update={update} />}
-      />
-      <SceneControls state={state} update={update} actions={actions} />
-      {state.lights.map((_, i) => (
-        // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.
-        <LightControls key={i} index={i} state={state} update={update} onGizmo={toggleGizmo} />
-      ))}
-      <EmbedStrip state={state} update={update} />
-    </div>
+        <SceneControls state={state} update={update} actions={actions} />
+        {state.lights.map((_, i) => (
+          // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.
+          <LightControls key={i} index={i} state={state} update={update} onGizmo={toggleGizmo} />
+        ))}
+        <EmbedStrip state={state} update={update} />
+      </div>
+    </DockContext.Provider>
   );
 }

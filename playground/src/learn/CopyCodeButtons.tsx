@@ -1,5 +1,5 @@
 /**
- * The "copy as code" buttons (in the hint line under the view): each puts the current scene's program on the
+ * The "copy as code" buttons (in the side column's tools): each puts the current scene's program on the
  * clipboard and shows it in a dialog (from which it can be selected and copied when the clipboard is refused).
  * The generators are loaded on the first click.
  */

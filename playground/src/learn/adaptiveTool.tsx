@@ -12,6 +12,7 @@ import { createPortal } from 'react-dom';
 import type { Viewer } from '../engine/viewer/Viewer';
 import { isEmbedded } from '../state/embed';
 import type { PlaygroundState } from '../state/schema';
+import { useDock } from '../ui/dock';
 import type { StatsFeed } from '../ui/Stats';
 import type { Update } from '../ui/useFolder';
 import type { AdaptiveMeasured, AdaptiveRun, AdaptiveUnit } from './adaptiveRun';
@@ -52,6 +53,7 @@ export function AdaptiveTool({
   feed: StatsFeed;
   update: Update;
 }) {
+  const dock = useDock();
   const [open, setOpen] = useState(false);
   const [on, setOn] = useState(false);
   const [step, setStep] = useState(12); // 8 levels
@@ -144,11 +146,11 @@ export function AdaptiveTool({
     }
     setOn(value);
   };
-  // The toggle sits in the hint line under the view; the heat map and the panel go over the canvas, in the stage.
+  // The heat map goes over the canvas, in the stage; the panel in the dock.
   const stage = viewerRef.current?.canvas.parentElement ?? null;
   const panel = (
     <section
-      style={{ ...LEARN_PANEL, top: 8, maxHeight: 'calc(100% - 40px)', font: '12px system-ui, sans-serif' }}
+      style={{ ...LEARN_PANEL, font: '12px system-ui, sans-serif' }}
       aria-label="Adaptive shading"
       data-testid="adaptive-panel"
     >
@@ -240,7 +242,7 @@ export function AdaptiveTool({
           />,
           stage,
         )}
-      {stage && open && createPortal(panel, stage)}
+      {dock && open && createPortal(panel, dock)}
     </>
   );
 }

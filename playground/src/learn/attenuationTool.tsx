@@ -1,5 +1,5 @@
 /**
- * The attenuation tool: a toggle (in the hint line under the view) that opens, over the canvas, the plot of each
+ * The attenuation tool: a toggle (in the side column's tools) that opens, in the dock, the plot of each
  * light's 1/(a + b·t + c·t²) over the distances the scene spans, with the object's range of t marked
  * (`attenuationPlot.tsx`, loaded when first opened).
  */
@@ -26,7 +26,6 @@ export function AttenuationTool({
       panel={{
         name: 'Attenuation curve',
         testId: 'attenuation-panel',
-        style: { bottom: 52, maxHeight: 'calc(50% - 56px)' },
         loading: 'Loading the plot…',
       }}
     >

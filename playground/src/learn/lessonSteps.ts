@@ -68,7 +68,7 @@ export const LESSON_STEPS: readonly LessonStep[] = [
   {
     id: 'attenuation',
     title: 'Attenuation: 1 / (a + b·t + c·t²)',
-    text: 'Light 1 is attenuated with c = 0.002: its diffuse and specular terms are scaled by 1/(a + b·t + c·t²), its ambient term is not. Press **attenuation curve** under the view: the factor against the distance t, the sphere’s range of t drawn thick. **Alt+click**: the probe gives t and att at the pixel.',
+    text: 'Light 1 is attenuated with c = 0.002: its diffuse and specular terms are scaled by 1/(a + b·t + c·t²), its ambient term is not. Press **attenuation curve** among the tools: the factor against the distance t, the sphere’s range of t drawn thick. **Alt+click**: the probe gives t and att at the pixel.',
     set(d) {
       if (d.lights.length === 0) d.lights.push(defaultLight());
       d.lights[0]!.attenuation = { a: 1, b: 0, c: 0.002 };
@@ -86,7 +86,7 @@ export const LESSON_STEPS: readonly LessonStep[] = [
   {
     id: 'mach-bands',
     title: 'Mach bands',
-    text: 'Gouraud shading on a coarse sphere. Press **intensity profile** under the view and drag a line across the sphere: the plot shows the displayed intensity along it for flat, Gouraud and Phong shading, and marks where a profile’s slope jumps. Gouraud’s slope changes at every triangle edge: the eye sees a bright or dark band there that the pixels do not hold.',
+    text: 'Gouraud shading on a coarse sphere. Press **intensity profile** among the tools and drag a line across the sphere: the plot shows the displayed intensity along it for flat, Gouraud and Phong shading, and marks where a profile’s slope jumps. Gouraud’s slope changes at every triangle edge: the eye sees a bright or dark band there that the pixels do not hold.',
     set(d) {
       d.material.shading = 'gouraud';
       d.sphere.level = 2;
@@ -95,7 +95,7 @@ export const LESSON_STEPS: readonly LessonStep[] = [
   {
     id: 'normal-matrix',
     title: 'The normal matrix under a non-uniform scale',
-    text: 'The sphere is scaled (2, 1, 2). **Alt+click** a point off the centre, then press **normal matrix** under the view: the sphere shaded with (M⁻¹)ᵀ and with M side by side, a tangent and both normals at the point. Only (M⁻¹)ᵀ keeps the normal perpendicular to the surface; **Material → normal matrix** = M (wrong) draws the whole view the wrong way.',
+    text: 'The sphere is scaled (2, 1, 2). **Alt+click** a point off the centre, then press **normal matrix** among the tools: the sphere shaded with (M⁻¹)ᵀ and with M side by side, a tangent and both normals at the point. Only (M⁻¹)ᵀ keeps the normal perpendicular to the surface; **Material → normal matrix** = M (wrong) draws the whole view the wrong way.',
     set(d) {
       if (d.model.scale.every((s) => s === d.model.scale[0])) d.model.scale = [2, 1, 2];
     },
@@ -135,7 +135,7 @@ export const LESSON_STEPS: readonly LessonStep[] = [
   {
     id: 'take-home',
     title: 'Take the code home',
-    text: 'Press **three.js** or **R3F** under the view: the program that draws this picture, with its install line, ready to paste into an app. Every step above lives in the URL: **View → copy link** shares what you reached.',
+    text: 'Press **three.js** or **R3F** among the tools: the program that draws this picture, with its install line, ready to paste into an app. Every step above lives in the URL: **View → copy link** shares what you reached.',
   },
 ];
 

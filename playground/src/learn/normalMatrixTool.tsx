@@ -1,5 +1,5 @@
 /**
- * The normal-matrix tool: a toggle (in the hint line under the view) that opens, over the canvas, the lecture's
+ * The normal-matrix tool: a toggle (in the side column's tools) that opens, in the dock, the lecture's
  * slide live (`normalMatrixView.tsx`, loaded when first opened): the sphere shaded with (M⁻¹)ᵀ and with M side by
  * side, with the tangent and both normals at the probed point.
  */
@@ -26,7 +26,6 @@ export function NormalMatrixTool({
       panel={{
         name: 'The normal matrix',
         testId: 'normal-matrix-panel',
-        style: { left: 8, right: 'auto', top: 8, width: 'min(360px, calc(100% - 16px))' },
         loading: 'Loading the figure…',
       }}
     >

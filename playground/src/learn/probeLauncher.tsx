@@ -1,10 +1,14 @@
 /**
- * Alt+click on the view opens the pixel probe (a plain drag still turns the trackball). This part is loaded with
- * the app and is tiny; the panel and the probe's code (probePanel.tsx) load on the first Alt+click.
+ * Alt+click on the view opens the pixel probe (a plain drag still turns the trackball), in the dock. This part is
+ * loaded with the app and is tiny; the panel and the probe's code (probePanel.tsx) load on the first Alt+click. Not
+ * in embed mode, which shows the view alone.
  */
 import { lazy, type RefObject, Suspense, useEffect, useState } from 'react';
+import { createPortal } from 'react-dom';
 import type { Viewer } from '../engine/viewer/Viewer';
+import { isEmbedded } from '../state/embed';
 import type { PlaygroundState } from '../state/schema';
+import { useDock } from '../ui/dock';
 import type { ProbeRequest } from './probePanel';
 
 const ProbePanel = lazy(() => import('./probePanel'));
@@ -17,8 +21,10 @@ export function ProbeLauncher({
   viewerRef: RefObject<Viewer | null>;
   state: PlaygroundState;
 }) {
+  const dock = useDock();
   const [request, setRequest] = useState<ProbeRequest | null>(null);
   useEffect(() => {
+    if (isEmbedded()) return;
     let serial = 0;
     const onClick = (event: MouseEvent) => {
       const target = event.target as HTMLElement | null;
@@ -30,10 +36,11 @@ export function ProbeLauncher({
     document.addEventListener('click', onClick);
     return () => document.removeEventListener('click', onClick);
   }, []);
-  if (!request) return null;
-  return (
+  if (!request || !dock) return null;
+  return createPortal(
     <Suspense fallback={null}>
       <ProbePanel viewerRef={viewerRef} state={state} request={request} onClose={() => setRequest(null)} />
-    </Suspense>
+    </Suspense>,
+    dock,
   );
 }

@@ -34,19 +34,13 @@ type Followed =
   | { kind: 'pixel'; pixel: [number, number] };
 
 const PANEL_STYLE: React.CSSProperties = {
-  position: 'absolute',
-  left: 8,
-  right: 8,
-  bottom: 24,
-  maxHeight: '30%',
-  overflow: 'auto',
+  flex: '0 0 auto',
   margin: 0,
   padding: '4px 8px',
   background: '#101010',
   color: '#ddd',
   font: '11px ui-monospace, monospace',
   borderRadius: 4,
-  zIndex: 2,
 };
 const GRID_CSS = `.probe-grid{display:grid;grid-template-columns:auto 1fr;gap:0 8px;margin:2px 0}
 .probe-grid dd{margin:0}.probe-note{color:#fb6;margin:4px 0}.probe h4{font-size:11px}

@@ -6,8 +6,10 @@
  * keys, panel edits) while the mode is on.
  */
 import { type RefObject, useEffect, useState } from 'react';
+import { createPortal } from 'react-dom';
 import type { Viewer } from '../engine/viewer/Viewer';
 import type { PlaygroundState } from '../state/schema';
+import { useDock } from '../ui/dock';
 import { LEARN_PANEL } from './learnTool';
 import { type CanvasPoint, linePixels } from './profileLine';
 import ProfilePlot from './profilePlot';
@@ -39,6 +41,7 @@ export default function ProfileMode({
   viewerRef: RefObject<Viewer | null>;
   state: PlaygroundState;
 }) {
+  const dock = useDock();
   const [segment, setSegment] = useState<Segment | null>(null);
   const [dragging, setDragging] = useState<Segment | null>(null);
   const [profile, setProfile] = useState<Profile | null>(null);
@@ -139,14 +142,16 @@ export default function ProfileMode({
           )}
         </svg>
       )}
-      <section
-        style={{ ...LEARN_PANEL, top: 8, maxHeight: 'calc(50% - 12px)' }}
-        aria-label="Mach bands: intensity profile"
-        data-testid="profile-panel"
-      >
-        {blocked ?? error ?? (!profile && 'Drag a line across the view: its intensity profile appears here.')}
-        {!blocked && profile && <ProfilePlot pixels={profile.pixels} samples={profile.samples} />}
-      </section>
+      {dock &&
+        createPortal(
+          <section style={LEARN_PANEL} aria-label="Mach bands: intensity profile" data-testid="profile-panel">
+            {blocked ??
+              error ??
+              (!profile && 'Drag a line across the view: its intensity profile appears here.')}
+            {!blocked && profile && <ProfilePlot pixels={profile.pixels} samples={profile.samples} />}
+          </section>,
+          dock,
+        )}
     </>
   );
 }

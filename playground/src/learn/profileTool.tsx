@@ -1,5 +1,5 @@
 /**
- * The Mach-band tool's toggle (in the hint line under the view): it puts the view in profile mode
+ * The Mach-band tool's toggle (in the side column's tools): it puts the view in profile mode
  * (`profileMode.tsx`, drawn over the canvas), where a drag across the canvas draws a line instead of turning the
  * trackball and a plot shows the intensity along it in flat, Gouraud and Phong shading. Only this toggle is in the
  * first frame's bundle: the mode, the read-back and the plot load when the mode is first turned on. Esc leaves the

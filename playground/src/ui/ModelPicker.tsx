@@ -1,5 +1,5 @@
 /**
- * The model's controls under the view: a button that opens the file picker (a .glb, or a .gltf with embedded
+ * The model's controls in the side column's tools: a button that opens the file picker (a .glb, or a .gltf with embedded
  * resources), the play/pause button of a model's animation, and the drop target on the canvas
  * ({@link modelDropProps}). What the model is and what was swapped is in the note beside the panel
  * ({@link modelNote}).
@@ -12,7 +12,7 @@ import type { ModelControls } from './useModel';
 /** The file types the picker offers. */
 const ACCEPT = '.glb,.gltf,model/gltf-binary,model/gltf+json';
 
-/** The picker and the animation's button (inline, in the hint line under the view). */
+/** The picker and the animation's button (inline, in the side column's tools). */
 export function ModelPicker({ model }: { model: ModelControls }) {
   const input = useRef<HTMLInputElement>(null);
   const clip = model.shown?.clip;

@@ -28,12 +28,18 @@ interface Props {
   modelNote?: string | null;
   /** The Learn panel, at the top of the column. */
   lesson?: ReactNode;
+  /** The tools (under the Learn panel), the render statistics (under the notes). */
+  tools?: ReactNode;
+  stats?: ReactNode;
+  /** Receives the dock, where the learning tools' panels open (under the tools). */
+  dockRef?: (dock: HTMLElement | null) => void;
 }
 
 /**
- * The column beside the canvas: the Learn panel, the leva panel (its folders collapse), the scene note, WebGPU mode's notes, and the
- * shader view (it collapses to its title), with a splitter between the panel and the shader view; the page
- * remembers all three (`panelLayout.ts`).
+ * The column beside the canvas: the Learn panel, the tools, the dock of the learning tools' panels, the leva panel
+ * (its folders collapse), the scene note, WebGPU mode's notes, the render statistics and the shader view (it
+ * collapses to its title), with a splitter between the panel and the shader view; the page remembers the folders,
+ * the shader view, the statistics and the split (`panelLayout.ts`). Nothing of it lies over the view.
  */
 export function SidePanel({
   state,
@@ -44,6 +50,9 @@ export function SidePanel({
   gpuShader,
   modelNote,
   lesson,
+  tools,
+  stats,
+  dockRef,
 }: Props) {
   const panelRef = useRef<HTMLDivElement>(null);
   useRememberFolders(panelRef);
@@ -60,6 +69,8 @@ export function SidePanel({
   return (
     <aside className="side">
       {lesson}
+      {tools}
+      <div className="dock" ref={dockRef} data-testid="dock" />
       <div className="panel" ref={panelRef} style={split ? { flexBasis: `${share}%` } : undefined}>
         <Leva fill flat titleBar={false} hideCopyButton />
       </div>
@@ -86,6 +97,7 @@ export function SidePanel({
           </ul>
         </div>
       )}
+      {stats}
       {split && <Splitter share={share} onShare={setShare} />}
       {(webgpuMode || showEditor) && (
         <div

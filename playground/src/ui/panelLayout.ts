@@ -1,9 +1,10 @@
 /**
- * The side column's layout: which panel folders are open, whether the shader view is, and how the column's height
- * is split between the panel and the shader view. The folders open on a first visit are the ones used on every
- * visit (the View folder's scene, renderer and export, the Material folder, the Lights folder's "add light"); the
- * others (Sphere, Camera, Trackball, each light) start collapsed. What the user changes is kept in localStorage
- * (this browser only, not in the URL: it is the page's layout, not the scene's state).
+ * The side column's layout: which panel folders are open, whether the shader view and the render statistics are,
+ * and how the column's height is split between the panel and the shader view. The folders open on a first visit
+ * are the ones used on every visit (the View folder's scene, renderer and export, the Material folder, the Lights
+ * folder's "add light"); the others (Sphere, Camera, Trackball, each light) start collapsed; the statistics show
+ * their summary line. What the user changes is kept in localStorage (this browser only, not in the URL: it is the
+ * page's layout, not the scene's state).
  */
 import { useEffect } from 'react';
 
@@ -21,6 +22,8 @@ interface Remembered {
   shaderCollapsed: boolean;
   /** The panel's share of the column's height when the shader view is open, percent. */
   panelShare: number;
+  /** Whether the render statistics show every row (else their summary line only). */
+  statsOpen: boolean;
 }
 
 /** The panel's share of the column by default, and the range the splitter allows, percent. */
@@ -29,7 +32,7 @@ export const PANEL_SHARE = { default: 55, min: 20, max: 85 } as const;
 function load(): Remembered {
   try {
     const value: unknown = JSON.parse(window.localStorage.getItem(STORAGE_KEY) ?? '{}');
-    const { folders, shaderCollapsed, panelShare } = (value ?? {}) as Partial<Remembered>;
+    const { folders, shaderCollapsed, panelShare, statsOpen } = (value ?? {}) as Partial<Remembered>;
     const clean = Object.fromEntries(
       Object.entries(typeof folders === 'object' && folders !== null ? folders : {}).filter(
         ([, collapsed]) => typeof collapsed === 'boolean',
@@ -39,10 +42,15 @@ function load(): Remembered {
       typeof panelShare === 'number' && panelShare >= PANEL_SHARE.min && panelShare <= PANEL_SHARE.max
         ? panelShare
         : PANEL_SHARE.default;
-    return { folders: clean, shaderCollapsed: shaderCollapsed === true, panelShare: share };
+    return {
+      folders: clean,
+      shaderCollapsed: shaderCollapsed === true,
+      panelShare: share,
+      statsOpen: statsOpen === true,
+    };
   } catch {
     // Malformed or storage disabled: the defaults.
-    return { folders: {}, shaderCollapsed: false, panelShare: PANEL_SHARE.default };
+    return { folders: {}, shaderCollapsed: false, panelShare: PANEL_SHARE.default, statsOpen: false };
   }
 }
 
@@ -76,6 +84,18 @@ export function panelShare(): number {
 export function rememberPanelShare(share: number) {
   save((r) => {
     r.panelShare = Math.min(PANEL_SHARE.max, Math.max(PANEL_SHARE.min, share));
+  });
+}
+
+/** Whether the render statistics open with every row (as the user left them; their summary line by default). */
+export function statsOpen(): boolean {
+  return load().statsOpen;
+}
+
+/** Remembers whether the render statistics show every row. */
+export function rememberStatsOpen(open: boolean) {
+  save((r) => {
+    r.statsOpen = open;
   });
 }
 
