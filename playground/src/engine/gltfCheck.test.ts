@@ -1,5 +1,7 @@
+import { validateBytes } from 'gltf-validator';
 import { describe, expect, it } from 'vitest';
-import { checkModelBytes, dataUriBytes, formatBytes, MODEL_MAX_BYTES, ModelError } from './gltfCheck';
+import { type CheckedModel, checkModelBytes, formatBytes, MODEL_MAX_BYTES, ModelError } from './gltfCheck';
+import { DRAWN_ANYWAY, validateModel } from './gltfValidate';
 
 /** A GLB from a JSON object and an optional binary chunk (each padded to 4 bytes), as the spec lays it out. */
 function glb(json: object, bin: Uint8Array | null = null, version = 2): ArrayBuffer {
@@ -41,19 +43,42 @@ const refused = (bytes: ArrayBuffer, name = 'm.glb') => {
   throw new Error('not refused');
 };
 
+/** The message of the validator's refusal of a file that passes the hand checks. */
+const invalid = async (bytes: ArrayBuffer, name = 'm.glb') => {
+  const checked: CheckedModel = checkModelBytes(name, bytes);
+  const error = await validateModel(name, checked).then(
+    () => null,
+    (e: unknown) => e,
+  );
+  expect(error).toBeInstanceOf(ModelError);
+  return (error as Error).message;
+};
+
 describe('checkModelBytes', () => {
-  it('takes a GLB and a .gltf with a data: buffer, and says when meshopt is used', () => {
+  it('takes a GLB and a .gltf with a data: buffer, and says which decoders it needs', async () => {
     const ok = checkModelBytes('m.glb', glb(GOOD, new Uint8Array(8)));
-    expect(ok.meshopt).toBe(false);
+    expect(ok.decoders).toEqual({ meshopt: false, draco: false, ktx2: false });
     expect(ok.data).toBeInstanceOf(ArrayBuffer);
+    await validateModel('m.glb', ok);
     const text = JSON.stringify({
       ...GOOD,
-      buffers: [{ byteLength: 8, uri: `data:;base64,${btoa('12345678')}` }],
+      buffers: [{ byteLength: 8, uri: `data:application/octet-stream;base64,${btoa('12345678')}` }],
     });
     const gltf = checkModelBytes('m.gltf', new TextEncoder().encode(`\ufeff \n${text}`).buffer);
     expect(typeof gltf.data).toBe('string');
+    await validateModel('m.gltf', gltf);
     const meshopt = { ...GOOD, extensionsUsed: ['EXT_meshopt_compression'] };
-    expect(checkModelBytes('m.glb', glb(meshopt, new Uint8Array(8))).meshopt).toBe(true);
+    expect(checkModelBytes('m.glb', glb(meshopt, new Uint8Array(8))).decoders.meshopt).toBe(true);
+    // Draco meshes and KTX2 textures, required or only used: their decoders are loaded for the file.
+    for (const [extension, decoder] of [
+      ['KHR_draco_mesh_compression', 'draco'],
+      ['KHR_texture_basisu', 'ktx2'],
+    ] as const) {
+      const json = { ...GOOD, extensionsUsed: [extension], extensionsRequired: [extension] };
+      expect(checkModelBytes('m.glb', glb(json, new Uint8Array(8))).decoders[decoder]).toBe(true);
+      const used = { ...GOOD, extensionsUsed: [extension] };
+      expect(checkModelBytes('m.glb', glb(used, new Uint8Array(8))).decoders[decoder]).toBe(true);
+    }
   });
 
   it('refuses a GLB whose header claims more than the limit, before reading further', () => {
@@ -76,46 +101,101 @@ describe('checkModelBytes', () => {
       '"p.png" is not a glTF file: it starts with the bytes 89 50 4e 47, neither a GLB\'s magic "glTF" nor JSON text.',
     );
     expect(refused(new TextEncoder().encode('{"asset":').buffer, 'a.gltf')).toMatch(/its JSON is malformed/);
-    expect(refused(new TextEncoder().encode('{"x":1}').buffer, 'a.gltf')).toMatch(/no asset.version/);
     expect(refused(new Uint8Array(0).buffer)).toBe('"m.glb" is empty.');
   });
 
-  it('refuses missing buffers and views, external references and undecodable extensions, naming them', () => {
-    expect(refused(glb(GOOD))).toMatch(/buffer 0 is missing \(no uri, and the file has no binary chunk\)/);
-    expect(refused(glb(GOOD, new Uint8Array(4)))).toMatch(
-      /buffer 0 declares 8 bytes, its binary chunk holds 4 bytes/,
-    );
-    expect(refused(glb({ ...GOOD, bufferViews: [{ buffer: 3, byteLength: 8 }] }, new Uint8Array(8)))).toMatch(
-      /bufferView 0 refers to buffer 3, which is missing/,
-    );
-    expect(refused(glb({ ...GOOD, accessors: [{ bufferView: 2 }] }, new Uint8Array(8)))).toMatch(
-      /accessor 0 refers to bufferView 2/,
-    );
+  it('refuses external references and extensions three does not read, naming them', () => {
     const external = { ...GOOD, buffers: [{ byteLength: 8, uri: 'm.bin' }] };
     expect(refused(glb(external))).toMatch(/buffer 0 refers to the external file "m.bin"/);
     const image = { ...GOOD, images: [{ uri: 'https://example.invalid/t.png' }] };
     expect(refused(glb(image, new Uint8Array(8)))).toMatch(/image 0 refers to the external file/);
-    for (const extension of ['KHR_draco_mesh_compression', 'KHR_texture_basisu']) {
-      const json = { ...GOOD, extensionsUsed: [extension], extensionsRequired: [extension] };
-      expect(refused(glb(json, new Uint8Array(8)))).toMatch(
-        `needs the extension ${extension}, which the playground`,
-      );
-    }
-    // KTX2 only used (not required): three takes the fallback image.
-    expect(() =>
-      checkModelBytes('m.glb', glb({ ...GOOD, extensionsUsed: ['KHR_texture_basisu'] }, new Uint8Array(8))),
-    ).not.toThrow();
     const unknown = { ...GOOD, extensionsUsed: ['X_y'], extensionsRequired: ['X_y'] };
     expect(refused(glb(unknown, new Uint8Array(8)))).toMatch(
       /needs the extension X_y, which three's GLTFLoader/,
     );
   });
 
-  it('measures data: URIs and sizes', () => {
-    expect(dataUriBytes(`data:application/octet-stream;base64,${btoa('abcde')}`)).toBe(5);
-    expect(dataUriBytes('data:,abc%20d')).toBe(5);
-    expect(dataUriBytes('m.bin')).toBeNull();
+  it('measures sizes', () => {
     expect(formatBytes(MODEL_MAX_BYTES)).toBe('64 MiB');
     expect(formatBytes(1234)).toBe('1,234 bytes');
+  });
+});
+
+describe('validateModel (the Khronos glTF Validator)', () => {
+  it('refuses missing buffers, short buffers and data: URIs, and missing views, naming the error and where it is', async () => {
+    expect(await invalid(glb(GOOD))).toBe(
+      '"m.glb" is not valid glTF: the Khronos glTF Validator found an error: /buffers/0: Buffer refers to an unresolved GLB binary chunk.',
+    );
+    expect(await invalid(glb(GOOD, new Uint8Array(4)))).toMatch(/^"m.glb" is not valid glTF: .*\/buffers\/0/);
+    const short = {
+      ...GOOD,
+      buffers: [{ byteLength: 8, uri: `data:application/octet-stream;base64,${btoa('abcde')}` }],
+    };
+    expect(await invalid(new TextEncoder().encode(JSON.stringify(short)).buffer, 'm.gltf')).toMatch(
+      /\/buffers\/0: Actual data byte length \(5\) is less than the declared buffer byte length \(8\)/,
+    );
+    expect(
+      await invalid(glb({ ...GOOD, bufferViews: [{ buffer: 3, byteLength: 8 }] }, new Uint8Array(8))),
+    ).toMatch(/\/bufferViews\/0\/buffer: Unresolved reference: 3/);
+    expect(
+      await invalid(
+        glb({ ...GOOD, accessors: [{ ...GOOD.accessors[0], bufferView: 2 }] }, new Uint8Array(8)),
+      ),
+    ).toMatch(/\/accessors\/0\/bufferView: Unresolved reference: 2/);
+    expect(await invalid(glb({ ...GOOD, images: [{}] }, new Uint8Array(8)))).toMatch(
+      /\/images\/0: Exactly one of \('bufferView', 'uri'\) properties must be defined/,
+    );
+    expect(await invalid(new TextEncoder().encode('{"x":1}').buffer, 'a.gltf')).toMatch(
+      /^"a.gltf" is not valid glTF: .*Property 'asset' must be defined/,
+    );
+  });
+
+  it('counts the errors and shows the first three', async () => {
+    const json = { ...GOOD, bufferViews: [0, 1, 2, 3].map((i) => ({ buffer: 5 + i, byteLength: 8 })) };
+    const message = await invalid(glb(json, new Uint8Array(8)));
+    expect(message).toMatch(/found (\d+) errors: /);
+    expect(message.split('Unresolved reference').length - 1).toBe(3);
+    expect(message).toMatch(/; …$/);
+  });
+
+  it('takes the value errors three draws anyway (bounds that do not match), refuses the others (an index out of range)', async () => {
+    const positions = new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    const triangle = (max: number[], index: number) => {
+      const bin = new Uint8Array(44);
+      bin.set(new Uint8Array(positions.buffer), 0);
+      bin.set(new Uint8Array(new Uint16Array([0, 1, index]).buffer), 36);
+      return glb(
+        {
+          asset: { version: '2.0' },
+          scene: 0,
+          scenes: [{ nodes: [0] }],
+          nodes: [{ mesh: 0 }],
+          meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+          buffers: [{ byteLength: 44 }],
+          bufferViews: [
+            { buffer: 0, byteOffset: 0, byteLength: 36, target: 34962 },
+            { buffer: 0, byteOffset: 36, byteLength: 6, target: 34963 },
+          ],
+          accessors: [
+            { bufferView: 0, componentType: 5126, count: 3, type: 'VEC3', min: [0, 0, 0], max },
+            { bufferView: 1, componentType: 5123, count: 3, type: 'SCALAR' },
+          ],
+        },
+        bin,
+      );
+    };
+    const exact = checkModelBytes('t.glb', triangle([1, 1, 0], 2));
+    await validateModel('t.glb', exact);
+    // The declared maximum is off: an error for the validator, drawn as it is by three.
+    const off = triangle([1.5, 1, 0], 2);
+    const report = await validateBytes(new Uint8Array(off), { writeTimestamp: false });
+    expect(report.issues.messages.filter((m) => m.severity === 0).map((m) => m.code)).toEqual([
+      'ACCESSOR_MAX_MISMATCH',
+    ]);
+    expect(DRAWN_ANYWAY).toContain('ACCESSOR_MAX_MISMATCH');
+    await validateModel('t.glb', checkModelBytes('t.glb', off));
+    expect(await invalid(triangle([1, 1, 0], 7), 't.glb')).toMatch(
+      /\/meshes\/0\/primitives\/0\/indices: Indices accessor element at index 2 has value 7 that is greater than the maximum vertex index available \(2\)/,
+    );
   });
 });

@@ -1,7 +1,9 @@
 /**
- * What the playground checks in a user's glTF file before three's GLTFLoader sees it: its size, its container
- * (a GLB's header and chunks, or JSON text), and that everything it refers to is inside the file and decodable
- * here. Each refusal is a {@link ModelError} whose message the page shows as it is. Pure (no three, no DOM):
+ * What the playground checks in a user's glTF file before three's GLTFLoader sees it. First, here and at once:
+ * its size, its container (a GLB's header and chunks, or JSON text), that every buffer and image is inside the
+ * file, and that three can decode every extension it requires ({@link checkModelBytes}). Then the Khronos glTF
+ * Validator checks the rest of the spec (`gltfValidate.ts`, loaded with the model loader, not at the page's
+ * start). Each refusal is a {@link ModelError} whose message the page shows as it is. No three, no DOM:
  * unit-tested in gltfCheck.test.ts.
  */
 
@@ -13,15 +15,13 @@ export class ModelError extends Error {
   override name = 'ModelError';
 }
 
-/** The parts of a glTF's JSON the checks read (everything else is three's GLTFLoader's). */
+/** The parts of a glTF's JSON the checks read (everything else is the validator's and three's GLTFLoader's). */
 export interface GltfJson {
-  asset?: { version?: unknown };
+  asset?: unknown;
   extensionsUsed?: unknown;
   extensionsRequired?: unknown;
   buffers?: unknown;
-  bufferViews?: unknown;
   images?: unknown;
-  accessors?: unknown;
   [key: string]: unknown;
 }
 
@@ -30,18 +30,17 @@ export interface CheckedModel {
   /** What `GLTFLoader.parse` takes: the GLB's bytes, or the .gltf's text. */
   readonly data: ArrayBuffer | string;
   readonly json: GltfJson;
-  /** The file compresses buffer views with meshopt (the decoder is loaded for it). */
-  readonly meshopt: boolean;
+  /** The decoders the file needs, each loaded only for a file that uses its extension. */
+  readonly decoders: { readonly meshopt: boolean; readonly draco: boolean; readonly ktx2: boolean };
 }
 
-/** Extensions that need a decoder the playground does not ship (playground README, "Your model"). */
-export const REFUSED_EXTENSIONS: Readonly<Record<string, string>> = {
-  KHR_draco_mesh_compression: 'DRACO mesh compression needs the DRACO decoder (WebAssembly)',
-  KHR_texture_basisu: 'KTX2/Basis textures need the Basis transcoder (WebAssembly)',
-};
-/** The meshopt extensions: decoded by three's pure-JS `meshopt_decoder.module.js`, loaded when a file uses one. */
+/** The meshopt extensions: decoded by three's pure-JS `meshopt_decoder.module.js`. */
 export const MESHOPT_EXTENSIONS = ['EXT_meshopt_compression', 'KHR_meshopt_compression'] as const;
-/** The extensions three r187's GLTFLoader reads without a decoder (a required one outside these is refused). */
+/** Draco meshes: decoded by three's DRACOLoader with Google's WebAssembly decoder (three's `libs/draco/gltf/`). */
+export const DRACO_EXTENSION = 'KHR_draco_mesh_compression';
+/** KTX2 / Basis Universal textures: transcoded by three's KTX2Loader with three's `libs/basis/` transcoder. */
+export const KTX2_EXTENSION = 'KHR_texture_basisu';
+/** The extensions three r187's GLTFLoader reads (a required one outside these is refused). */
 export const SUPPORTED_EXTENSIONS: readonly string[] = [
   'KHR_lights_punctual',
   'KHR_materials_clearcoat',
@@ -62,12 +61,13 @@ export const SUPPORTED_EXTENSIONS: readonly string[] = [
   'EXT_texture_webp',
   'EXT_texture_avif',
   'EXT_mesh_gpu_instancing',
+  DRACO_EXTENSION,
+  KTX2_EXTENSION,
   ...MESHOPT_EXTENSIONS,
 ];
 
 const GLB_MAGIC = 0x46546c67; // 'glTF', little-endian
 const CHUNK_JSON = 0x4e4f534a; // 'JSON'
-const CHUNK_BIN = 0x004e4942; // 'BIN\0'
 
 /** Bytes as a reader sees them: "64 MiB", "2.0 GiB", "1,234 bytes". */
 export function formatBytes(n: number): string {
@@ -107,7 +107,7 @@ export function checkModelBytes(name: string, bytes: ArrayBuffer): CheckedModel 
   }
   const text = decodeText(name, all, 'the file');
   const json = parseJson(name, text);
-  return { data: text, json, meshopt: checkJson(name, json, null) };
+  return { data: text, json, decoders: checkJson(name, json) };
 }
 
 function checkGlb(name: string, bytes: ArrayBuffer, view: DataView): CheckedModel {
@@ -130,7 +130,6 @@ function checkGlb(name: string, bytes: ArrayBuffer, view: DataView): CheckedMode
     );
   }
   let json: GltfJson | null = null;
-  let bin: number | null = null;
   for (let offset = 12; offset < length; ) {
     if (offset + 8 > length)
       throw new ModelError(`"${name}" is truncated: a chunk header at byte ${offset} runs past the end.`);
@@ -148,13 +147,11 @@ function checkGlb(name: string, bytes: ArrayBuffer, view: DataView): CheckedMode
         name,
         decodeText(name, new Uint8Array(bytes, offset + 8, chunkLength), 'its JSON chunk'),
       );
-    } else if (type === CHUNK_BIN && bin === null) {
-      bin = chunkLength;
     }
     offset = end;
   }
   if (json === null) throw new ModelError(`"${name}" has no JSON chunk.`);
-  return { data: bytes, json, meshopt: checkJson(name, json, bin) };
+  return { data: bytes, json, decoders: checkJson(name, json) };
 }
 
 function decodeText(name: string, bytes: Uint8Array, what: string): string {
@@ -180,99 +177,34 @@ function parseJson(name: string, text: string): GltfJson {
 const list = (value: unknown): unknown[] => (Array.isArray(value) ? value : []);
 const record = (value: unknown): Record<string, unknown> =>
   typeof value === 'object' && value !== null ? (value as Record<string, unknown>) : {};
-const isIndex = (value: unknown, length: number) =>
-  typeof value === 'number' && Number.isInteger(value) && value >= 0 && value < length;
 
-/** Bytes a data: URI holds (base64 or percent-encoded); null when it is not one. */
-export function dataUriBytes(uri: string): number | null {
-  const comma = uri.indexOf(',');
-  if (!uri.startsWith('data:') || comma < 0) return null;
-  const payload = uri.slice(comma + 1);
-  if (!/;base64$/i.test(uri.slice(0, comma))) return decodeURIComponent(payload).length;
-  const clean = payload.replace(/\s/g, '');
-  return Math.floor((clean.length * 3) / 4) - (clean.endsWith('==') ? 2 : clean.endsWith('=') ? 1 : 0);
-}
-
-/** The JSON's references and extensions; returns whether meshopt is used. `bin`: the GLB's BIN chunk length. */
-function checkJson(name: string, json: GltfJson, bin: number | null): boolean {
-  const version = record(json.asset).version;
-  if (typeof version !== 'string') throw new ModelError(`"${name}" has no asset.version: not a glTF.`);
-  if (Number.parseInt(version, 10) !== 2)
-    throw new ModelError(`"${name}" is glTF ${version}; only glTF 2.x is read.`);
+/**
+ * The JSON's extensions and embedded resources (what the validator does not check: it reads any extension it
+ * knows, and an external file only when it is given a loader); returns the decoders the file needs.
+ */
+function checkJson(name: string, json: GltfJson): CheckedModel['decoders'] {
   const used = list(json.extensionsUsed).map(String);
   const required = list(json.extensionsRequired).map(String);
-  for (const extension of new Set([...used, ...required])) {
-    const why = REFUSED_EXTENSIONS[extension];
-    // A KTX2 texture that is only used has a fallback image, which three takes.
-    if (why && (extension !== 'KHR_texture_basisu' || required.includes(extension))) {
-      throw new ModelError(
-        `"${name}" needs the extension ${extension}, which the playground does not decode: ${why}.`,
-      );
-    }
-  }
   for (const extension of required) {
     if (!SUPPORTED_EXTENSIONS.includes(extension))
       throw new ModelError(
         `"${name}" needs the extension ${extension}, which three's GLTFLoader does not read.`,
       );
   }
-  const buffers = list(json.buffers).map(record);
-  buffers.forEach((buffer, i) => {
-    const declared = buffer['byteLength'];
-    if (typeof declared !== 'number' || !(declared >= 0))
-      throw new ModelError(`"${name}": buffer ${i} has no byteLength.`);
-    const extensions = record(buffer['extensions']);
-    const fallback = MESHOPT_EXTENSIONS.some((e) => record(extensions[e])['fallback'] === true);
-    const uri = buffer['uri'];
-    if (uri === undefined) {
-      if (fallback) return;
-      if (i !== 0 || bin === null) {
-        throw new ModelError(
-          `"${name}": buffer ${i} is missing (no uri${bin === null ? ', and the file has no binary chunk' : ''}).`,
-        );
-      }
-      if (bin < declared) {
-        throw new ModelError(
-          `"${name}": buffer 0 declares ${formatBytes(declared)}, its binary chunk holds ${formatBytes(bin)}.`,
-        );
-      }
-      return;
-    }
-    checkUri(name, uri, `buffer ${i}`);
-    const held = dataUriBytes(uri as string);
-    if (held !== null && held < declared) {
-      throw new ModelError(
-        `"${name}": buffer ${i} declares ${formatBytes(declared)}, its data: URI holds ${formatBytes(held)}.`,
-      );
-    }
-  });
-  const views = list(json.bufferViews).map(record);
-  views.forEach((view, i) => {
-    const buffer = view['buffer'];
-    if (!isIndex(buffer, buffers.length)) {
-      throw new ModelError(
-        `"${name}": bufferView ${i} refers to buffer ${String(buffer)}, which is missing (${buffers.length} buffers).`,
-      );
-    }
-    const end = Number(view['byteOffset'] ?? 0) + Number(view['byteLength']);
-    if (!(end <= Number(buffers[buffer as number]!['byteLength']))) {
-      throw new ModelError(`"${name}": bufferView ${i} runs past the end of buffer ${String(buffer)}.`);
-    }
-  });
-  list(json.accessors).forEach((accessor, i) => {
-    const view = record(accessor)['bufferView'];
-    if (view !== undefined && !isIndex(view, views.length))
-      throw new ModelError(
-        `"${name}": accessor ${i} refers to bufferView ${String(view)}, which is missing.`,
-      );
+  list(json.buffers).forEach((buffer, i) => {
+    const { uri } = record(buffer);
+    if (uri !== undefined) checkUri(name, uri, `buffer ${i}`);
   });
   list(json.images).forEach((image, i) => {
-    const { uri, bufferView } = record(image);
+    const { uri } = record(image);
     if (uri !== undefined) checkUri(name, uri, `image ${i}`);
-    else if (!isIndex(bufferView, views.length))
-      throw new ModelError(`"${name}": image ${i} has neither a uri nor a bufferView of the file.`);
   });
-  return MESHOPT_EXTENSIONS.some((e) => used.includes(e));
+  const uses = (extension: string) => used.includes(extension) || required.includes(extension);
+  return {
+    meshopt: MESHOPT_EXTENSIONS.some(uses),
+    draco: uses(DRACO_EXTENSION),
+    ktx2: uses(KTX2_EXTENSION),
+  };
 }
 
 /** Only data: URIs: anything else is a file the browser was not given. */

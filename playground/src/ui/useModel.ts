@@ -37,9 +37,12 @@ export interface ModelControls {
 
 const errorText = (error: unknown) => (error instanceof Error ? error.message : String(error));
 
-/** Parses the file and builds its scene (the scene's module and the loader arrive on first use). */
-async function build(source: StoredModel): Promise<ModelScene> {
-  const loaded = await loadModel(source.name, source.bytes);
+/**
+ * Parses the file and builds its scene (the scene's module and the loader arrive on first use); KTX2 textures are
+ * transcoded for `viewer`'s renderer.
+ */
+async function build(source: StoredModel, viewer: Viewer | null): Promise<ModelScene> {
+  const loaded = await loadModel(source.name, source.bytes, viewer?.renderer ?? null);
   // WebGPU mode swaps the same originals with swapNodeMaterials.
   rememberOriginals(loaded.scene);
   const { createModelScene } = await import('../engine/scenes/model');
@@ -88,7 +91,7 @@ export function useModel(
         try {
           checkModelSize(file.name, file.size);
           const bytes = await file.arrayBuffer();
-          const scene = await build({ name: file.name, bytes });
+          const scene = await build({ name: file.name, bytes }, viewerRef.current);
           if (!show(load, scene)) return;
           source.current = { name: file.name, bytes };
           update((d) => {
@@ -112,7 +115,7 @@ export function useModel(
         }
       })();
     },
-    [show, update],
+    [show, update, viewerRef],
   );
 
   // The state shows the model but the viewer has none: build it again from the file in memory or in IndexedDB.
@@ -137,7 +140,7 @@ export function useModel(
         }
         if (stored) {
           setMessage({ kind: 'info', text: `Loading "${stored.name}"…` });
-          const scene = await build(stored);
+          const scene = await build(stored, viewer);
           source.current = stored;
           if (show(load, scene)) setMessage(null);
           return;
