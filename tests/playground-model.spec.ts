@@ -1,5 +1,7 @@
 import { expect, type Page } from '@playwright/test';
+import type { RgbaImage } from '@shadelab/playwright/test';
 import { MeshoptEncoder } from 'meshoptimizer';
+import { dracoGlb, ktx2Glb } from './glb-compress';
 import { test } from './harness-helpers';
 import {
   choose,
@@ -12,6 +14,7 @@ import {
   typeInto,
   urlState,
 } from './playground-helpers';
+import { difference, shot, toWebGPU } from './playground-webgpu-helpers';
 
 // The playground shows the user's own model (issue 22): a .glb or .gltf opened with the file picker or dropped
 // on the view, its materials swapped for ShadingMaterials, framed, lit by three's lights, animated, kept across
@@ -285,6 +288,108 @@ test('a .gltf with embedded resources and a meshopt-compressed GLB draw the same
   await openFile(page, 'ball-meshopt.glb', await meshopt(glb));
   await shown(page, 'ball-meshopt.glb');
   expect(await picture(page)).toBe(reference);
+});
+
+/**
+ * A compressed copy's picture against the uncompressed model's, both opened with the picker: the same silhouette
+ * but for a few pixels on its edge (Draco moves vertices by its quantization step), and the same colours away
+ * from it within `maxDelta` (1/255).
+ */
+function expectSameModel(reference: RgbaImage, compressed: RgbaImage, maxDelta: number) {
+  const d = difference(reference, compressed);
+  console.log(`compressed vs uncompressed: ${JSON.stringify(d)}`);
+  expect(d.covered, 'the model is drawn').toBeGreaterThan(20_000);
+  expect(d.coverage, 'pixels covered in one picture only').toBeLessThanOrEqual(0.002 * d.covered);
+  expect(d.compared, 'pixels compared away from the silhouette').toBeGreaterThan(0.9 * d.covered);
+  expect(d.maxDelta, 'largest channel difference, 1/255').toBeLessThanOrEqual(maxDelta);
+}
+
+test('a Draco-compressed and a KTX2-textured GLB draw as the uncompressed model; each decoder loads only for its file', async ({
+  page,
+}) => {
+  test.setTimeout(90_000);
+  // Every decoder file and decoder loader chunk the page fetches (Vite's hashed names, the hash taken off), and
+  // anything the console says at warning level or above.
+  const decoders: string[] = [];
+  page.on('request', (request) => {
+    const file = new URL(request.url()).pathname.split('/').at(-1)!;
+    if (/draco|basis|ktx2/i.test(file)) decoders.push(file.replace(/-[\w-]{8}\./, '.'));
+  });
+  const problems: string[] = [];
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('console', (m) => {
+    if (m.type() === 'warning' || m.type() === 'error') problems.push(`${m.type()}: ${m.text()}`);
+  });
+  // The compressed formats WebGL is given (three allocates a compressed texture with texStorage2D, then uploads
+  // each level with compressedTexSubImage2D), from every WebGL2 context of the page.
+  await page.addInitScript(() => {
+    const formats: number[] = [];
+    (window as unknown as { compressedFormats: number[] }).compressedFormats = formats;
+    const proto = WebGL2RenderingContext.prototype;
+    const upload = proto.compressedTexSubImage2D as (...args: unknown[]) => void;
+    proto.compressedTexSubImage2D = function (this: WebGL2RenderingContext, ...args: unknown[]) {
+      formats.push(args[6] as number);
+      return upload.apply(this, args);
+    } as typeof proto.compressedTexSubImage2D;
+  });
+  const compressedFormats = () =>
+    page.evaluate(() => [
+      ...new Set((window as unknown as { compressedFormats: number[] }).compressedFormats),
+    ]);
+  await open(page);
+  const ball = await model(page, 'vertexColours');
+  const box = await model(page, 'textured');
+  await openFile(page, 'ball.glb', ball);
+  await shown(page, 'ball.glb');
+  const ballPicture = await shot(page);
+  await openFile(page, 'box.glb', box);
+  await shown(page, 'box.glb');
+  const boxPicture = await shot(page);
+  // Plain files load no decoder.
+  expect(decoders).toEqual([]);
+
+  // Draco: the glTF-only decoder's wrapper and WebAssembly, fetched once, for this file.
+  const draco = await dracoGlb(ball);
+  expect(splitGlb(draco).json['extensionsRequired']).toEqual(['KHR_draco_mesh_compression']);
+  expect(draco.length).toBeLessThan(0.5 * ball.length);
+  await openFile(page, 'ball-draco.glb', draco);
+  await shown(page, 'ball-draco.glb');
+  await expect(page.getByTestId('model-note')).toContainText('1 of 1 meshes drawn with ShadingMaterial');
+  expectSameModel(ballPicture, await shot(page), 2);
+  expect(decoders).toEqual(['DRACOLoader.js', 'draco_wasm_wrapper.js', 'draco_decoder.wasm']);
+
+  // KTX2: the checker map as Basis UASTC, transcoded by three's Basis transcoder, fetched now.
+  const ktx2 = await ktx2Glb(box);
+  const { json } = splitGlb(ktx2);
+  expect(json['extensionsRequired']).toEqual(['KHR_texture_basisu']);
+  expect(json['images']).toEqual([expect.objectContaining({ mimeType: 'image/ktx2' })]);
+  await openFile(page, 'box-ktx2.glb', ktx2);
+  await shown(page, 'box-ktx2.glb');
+  const ktx2Picture = await shot(page);
+  expectSameModel(boxPicture, ktx2Picture, 2);
+  expect(decoders.slice(3)).toEqual(['KTX2Loader.js', 'basis_transcoder.js', 'basis_transcoder.wasm']);
+  // The map is uploaded as a compressed texture, in the format the transcoder chose for this GPU.
+  const formats = await compressedFormats();
+  console.log(`KTX2 map uploaded as ${formats.map((f) => `0x${f.toString(16)}`).join(', ')}`);
+  expect(formats).toHaveLength(1);
+  // WebGPU mode (its WebGL2 backend here) draws the same transcoded texture: the same picture.
+  await toWebGPU(page);
+  expectSameModel(ktx2Picture, await shot(page), 2);
+  expect(await compressedFormats()).toEqual(formats);
+
+  // A second Draco file reuses the loaded decoder.
+  await choose(page, 'View.renderer', 'WebGL');
+  await expect(page.getByTestId('viewport-webgpu')).toHaveCount(0);
+  await openFile(page, 'ball-draco-2.glb', draco);
+  await shown(page, 'ball-draco-2.glb');
+  expect(decoders).toHaveLength(6);
+  // Quiet: no warning but those the plain models give too (the swap naming what it left: the box's points, and
+  // in WebGPU mode its outline material) and Chromium's note that it has no WebGPU adapter (WebGPU mode's probe).
+  const known = [
+    /^warning: swap(Node)?Materials: left \d+ material\(s\) in place:/,
+    /^warning: No available adapters\.$/,
+  ];
+  expect(problems.filter((p) => !known.some((k) => k.test(p)))).toEqual([]);
 });
 
 test('an animated model plays (frames come without input, the picture moves) and pauses', async ({
