@@ -344,6 +344,68 @@ export function checkBlocks(blocks, outDir) {
  */
 export const pictureFile = (block) => posix.join(posix.dirname(block.file), 'images', `${block.picture}.png`);
 
+/**
+ * The folder (and URL path) of a runnable block's page: its Markdown file and fence line.
+ * @param {Block} block
+ */
+export const runPageName = (block) => `${block.file.replace(/[^\w.-]+/g, '_')}-${block.line}`;
+
+/**
+ * A runnable block's page, as a user would run the block: the block verbatim as main.ts, an entry that imports it
+ * and then marks the page (`<html data-ran="true">`: a module that throws stops before the mark), and an
+ * index.html that loads the entry. File name → text.
+ * @param {Block} block @returns {Record<'main.ts' | 'entry.ts' | 'index.html', string>}
+ */
+export function runPageFiles(block) {
+  return {
+    'main.ts': block.code,
+    'entry.ts': "import './main.ts';\ndocument.documentElement.dataset.ran = 'true';\n",
+    'index.html': `<!doctype html>
+<html lang="en">
+  <head>
+    <meta charset="utf-8" />
+    <link rel="icon" href="data:," />
+    <title>${block.file}:${block.line}</title>
+    <style>html, body { margin: 0; } canvas { display: block; }</style>
+  </head>
+  <body>
+    <script type="module" src="./entry.ts"></script>
+  </body>
+</html>
+`,
+  };
+}
+
+/**
+ * Write each block's page (runPageFiles) into `srcDir`/<runPageName>/, for one Vite build of them all
+ * (tests/snippets.spec.ts, bench/first-frame.bench.mjs). Returns the build's input: page name → its index.html.
+ * @param {Block[]} blocks @param {string} srcDir @returns {Record<string, string>}
+ */
+export function writeRunPages(blocks, srcDir) {
+  /** @type {Record<string, string>} */
+  const input = {};
+  for (const block of blocks) {
+    const dir = join(srcDir, runPageName(block));
+    mkdirSync(dir, { recursive: true });
+    for (const [name, text] of Object.entries(runPageFiles(block))) writeFileSync(join(dir, name), text);
+    input[runPageName(block)] = join(dir, 'index.html');
+  }
+  return input;
+}
+
+/**
+ * The README's Quick start block: the one block under its "Quick start" heading, which must be marked to run.
+ * @param {Block[]} blocks @returns {Block}
+ */
+export function quickStartBlock(blocks) {
+  const found = blocks.filter((b) => b.file === 'README.md' && /quick start/i.test(b.heading));
+  if (found.length !== 1 || !found[0].run)
+    throw new Error(
+      `README.md: expected one run= block under "Quick start", found ${found.map(describeBlock).join(', ') || 'none'}`,
+    );
+  return found[0];
+}
+
 /** @param {Block} b */
 export const describeBlock = (b) =>
   `${b.file}:${b.line} \`\`\`${b.lang}${b.partial === true ? ' partial' : b.partial ? ` partial=${b.partial}` : ''}${b.run ? ` run=${b.run}` : ''}${b.picture ? ` picture=${b.picture}` : ''}${b.path ? ` file=${b.path}` : ''}`;

@@ -1,11 +1,21 @@
 // scripts/snippets.mjs on a tiny Markdown fixture: which blocks it extracts and with what marks, that a good
 // block (complete or partial with its context) type-checks, and that a broken one is reported at its Markdown
 // line and column, in the block or in its context.
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
-import { checkBlocks, collectBlocks, extractBlocks, pictureFile, root } from './snippets.mjs';
+import {
+  checkBlocks,
+  collectBlocks,
+  extractBlocks,
+  pictureFile,
+  quickStartBlock,
+  root,
+  runPageFiles,
+  runPageName,
+  writeRunPages,
+} from './snippets.mjs';
 
 const FIXTURE = `# Fixture
 
@@ -163,5 +173,53 @@ describe('checkBlocks', () => {
     expect(() => extractBlocks('```ts file=../outside.ts\na;\n```\n', 'f.md')).toThrow(
       "f.md:1: unknown mark 'file=../outside.ts'",
     );
+  });
+});
+
+describe('the pages of runnable blocks', () => {
+  const markdown = `# Title
+
+## Quick start
+
+\`\`\`ts run=lecture
+document.title = 'quick';
+\`\`\`
+
+## Later
+
+\`\`\`ts run=lecture
+document.title = 'later';
+\`\`\`
+`;
+  const blocks = extractBlocks(markdown, 'README.md');
+
+  test('a page is its block verbatim as main.ts, an entry that marks the page once it ran, and an index.html', () => {
+    const files = runPageFiles(blocks[0]);
+    expect(files['main.ts']).toBe(blocks[0].code);
+    expect(files['entry.ts']).toBe("import './main.ts';\ndocument.documentElement.dataset.ran = 'true';\n");
+    expect(files['index.html']).toContain('<script type="module" src="./entry.ts"></script>');
+    expect(files['index.html']).toContain('<title>README.md:5</title>');
+    expect(runPageName(blocks[0])).toBe('README.md-5');
+    expect(runPageName({ ...blocks[0], file: 'packages/a b/README.md' })).toBe('packages_a_b_README.md-5');
+  });
+
+  test('writeRunPages writes each page in its folder and returns the build’s input', () => {
+    const dir = mkdtempSync(join(tmpdir(), 'snippets-pages-'));
+    try {
+      const input = writeRunPages(blocks, dir);
+      expect(input).toEqual({
+        'README.md-5': join(dir, 'README.md-5', 'index.html'),
+        'README.md-11': join(dir, 'README.md-11', 'index.html'),
+      });
+      expect(readFileSync(join(dir, 'README.md-11', 'main.ts'), 'utf8')).toBe("document.title = 'later';\n");
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+
+  test('the Quick start block is the one block under that heading, marked to run', () => {
+    expect(quickStartBlock(blocks).code).toBe("document.title = 'quick';\n");
+    expect(() => quickStartBlock(blocks.slice(1))).toThrow(/found none/);
+    expect(() => quickStartBlock([{ ...blocks[0], run: undefined }])).toThrow(/README.md:5/);
   });
 });
