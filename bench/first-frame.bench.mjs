@@ -12,13 +12,13 @@
 // - The first probe: in each round's playground page, once it rests after its first frame, an Alt+click at the
 //   canvas's centre (on the sphere), timed from the click's event time to the frame after the probe panel shows
 //   its values.
-// - With --profile, one more load of each page (and its probe) under Chromium's tracing, with V8's sampling
-//   profiler, from builds split into chunks by origin (three, React, the packages, the app): where each page's
-//   time goes (bench/lib/traceSummary.mjs). The timed rounds are never traced.
+// - Then (unless --no-profile) one more load of each page (and its probe) under Chromium's tracing, with V8's
+//   sampling profiler, from builds split into chunks by origin (three, React, the packages, the app): where each
+//   page's time goes (bench/lib/traceSummary.mjs). The timed rounds are never traced.
 //
-//   node bench/first-frame.bench.mjs [--json PATH] [--rounds 9] [--profile]
+//   node bench/first-frame.bench.mjs [--json PATH] [--rounds 9] [--no-profile]
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -41,7 +41,7 @@ import { summarizeTrace } from './lib/traceSummary.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const rounds = Number(arg('--rounds', '9'));
-const profile = process.argv.includes('--profile');
+const profile = !process.argv.includes('--no-profile');
 const VIEWPORT = { width: 800, height: 600 };
 /** How long the playground must rest after its first frame before the probe's click (ms). */
 const QUIET_MS = 400;
@@ -94,6 +94,7 @@ async function buildPlayground(/** @type {boolean} */ split) {
  */
 async function buildQuickStart(/** @type {boolean} */ split) {
   const block = quickStartBlock(collectBlocks({ files: ['README.md'] }));
+  mkdirSync(join(root, 'reports'), { recursive: true });
   const dir = mkdtempSync(join(root, 'reports', 'first-frame-'));
   const input = writeRunPages([block], join(dir, 'src'));
   await build({
@@ -178,6 +179,29 @@ async function load(browser, url, { playground, trace = false }) {
   }
 }
 
+/**
+ * One traced load of each page, from the builds split into chunk groups (the playground's with its probe).
+ * @param {import('@playwright/test').Browser} browser
+ */
+async function traceLoads(browser) {
+  const splitPlayground = await buildPlayground(true);
+  const splitQuickStart = await buildQuickStart(true);
+  const a = await serveFolder(splitPlayground);
+  const b = await serveFolder(splitQuickStart.outDir);
+  try {
+    return {
+      playground: (await load(browser, a.url(''), { playground: true, trace: true })).trace,
+      quickStart: (await load(browser, b.url(splitQuickStart.path), { playground: false, trace: true }))
+        .trace,
+    };
+  } finally {
+    await a.close();
+    await b.close();
+    rmSync(splitPlayground, { recursive: true, force: true });
+    rmSync(splitQuickStart.dir, { recursive: true, force: true });
+  }
+}
+
 /** @param {number} x */
 const round1 = (x) => Math.round(x * 10) / 10;
 
@@ -205,25 +229,12 @@ try {
       );
     }
   }
-  if (profile) {
-    const splitPlayground = await buildPlayground(true);
-    const splitQuickStart = await buildQuickStart(true);
-    const a = await serveFolder(splitPlayground);
-    const b = await serveFolder(splitQuickStart.outDir);
-    try {
-      const traced = {
-        playground: (await load(browser, a.url(''), { playground: true, trace: true })).trace,
-        quickStart: (await load(browser, b.url(splitQuickStart.path), { playground: false, trace: true }))
-          .trace,
-      };
-      profiled = traced;
-    } finally {
-      await a.close();
-      await b.close();
-      rmSync(splitPlayground, { recursive: true, force: true });
-      rmSync(splitQuickStart.dir, { recursive: true, force: true });
-    }
-  }
+  // The profile is extra: a failure to trace leaves the timed rounds' results as they are.
+  if (profile)
+    profiled = await traceLoads(browser).catch((error) => {
+      console.error(`--profile failed: ${error instanceof Error ? error.stack : error}`);
+      return null;
+    });
 } finally {
   await browser.close();
   await servedPlayground.close();

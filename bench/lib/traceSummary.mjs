@@ -1,5 +1,5 @@
 // Where a page's time to its first frame goes, from one Chromium trace of its load (bench/first-frame.bench.mjs
-// --profile): the page's main thread, between two console.timeStamp marks the page leaves in the trace (its
+// traces one load of each page after its timed rounds): the page's main thread, between two console.timeStamp marks the page leaves in the trace (its
 // document's start and its first frame), split three ways:
 // - the V8 sampling profile (the trace's ProfileChunk events): each sample's time to the next, by the leaf's
 //   script, named by the chunk groups the profile build splits the code into (three, react, the packages, the
@@ -64,7 +64,7 @@ export function scriptBucket(url) {
  */
 export function summarizeTrace(events, { start, end, top = 12 }) {
   const stamp = (/** @type {string} */ message) =>
-    events.find((e) => e.name === 'TimeStamp' && e.args?.data?.message === message);
+    events.find((e) => e.name === 'TimeStamp' && (e.args?.data?.message ?? e.args?.data?.name) === message);
   const from = stamp(start);
   const to = stamp(end);
   if (!from || !to) throw new Error(`trace: no console.timeStamp ${from ? end : start}`);
