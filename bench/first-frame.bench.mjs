@@ -57,7 +57,16 @@ const TIMEOUT = 180_000;
 function chunkGroup(id) {
   if (/node_modules\/three\//.test(id)) return 'three';
   if (/node_modules\/(react|react-dom|scheduler)\//.test(id)) return 'react';
-  if (/node_modules\/leva\//.test(id)) return 'leva';
+  // React Three Fiber and what it alone brings (its reconciler among them).
+  if (/node_modules\/(@react-three|react-reconciler|its-fine|suspend-react|react-use-measure)\//.test(id))
+    return 'r3f';
+  // leva and what it alone brings (zustand, shared with R3F, included).
+  if (
+    /node_modules\/(leva|@radix-ui|@stitches|@use-gesture|colord|dequal|merge-value|react-colorful|react-dropzone|v8n|zustand)\//.test(
+      id,
+    )
+  )
+    return 'leva';
   if (/node_modules\//.test(id)) return 'other-deps';
   if (/\/packages\//.test(id)) return 'shadelab';
   return undefined;

@@ -40,6 +40,7 @@ export function firstFrameInit() {
     waits: 0,
   };
   /** @type {any} */ (window).__firstFrame = marks;
+  // Each wrapper is named webglCall: a profile's samples in it are the page inside a WebGL call.
   // The marks a trace of the load holds (bench/lib/traceSummary.mjs): the document's start, the first frame.
   console.timeStamp(stamps.start);
   const DRAWS = [
@@ -63,7 +64,7 @@ export function firstFrameInit() {
     for (const draw of DRAWS) {
       const original = proto[draw];
       if (typeof original !== 'function') continue;
-      proto[draw] = function (/** @type {unknown[]} */ ...args) {
+      proto[draw] = function webglCall(/** @type {unknown[]} */ ...args) {
         const result = original.apply(this, args);
         if (
           marks.firstDrawMs === null &&
@@ -83,7 +84,7 @@ export function firstFrameInit() {
     for (const wait of WAITS) {
       const original = proto[wait];
       if (typeof original !== 'function') continue;
-      proto[wait] = function (/** @type {unknown[]} */ ...args) {
+      proto[wait] = function webglCall(/** @type {unknown[]} */ ...args) {
         if (marks.firstDrawMs !== null) return original.apply(this, args);
         const t0 = performance.now();
         const result = original.apply(this, args);
@@ -93,11 +94,11 @@ export function firstFrameInit() {
       };
     }
     const { compileShader, linkProgram } = proto;
-    proto.compileShader = function (/** @type {unknown[]} */ ...args) {
+    proto.compileShader = function webglCall(/** @type {unknown[]} */ ...args) {
       marks.firstCompileMs ??= performance.now();
       return compileShader.apply(this, args);
     };
-    proto.linkProgram = function (/** @type {unknown[]} */ ...args) {
+    proto.linkProgram = function webglCall(/** @type {unknown[]} */ ...args) {
       if (marks.firstDrawMs === null) marks.programs += 1;
       return linkProgram.apply(this, args);
     };

@@ -3,7 +3,8 @@
 // document's start and its first frame), split three ways:
 // - the V8 sampling profile (the trace's ProfileChunk events): each sample's time to the next, by the leaf's
 //   script, named by the chunk groups the profile build splits the code into (three, react, the packages, the
-//   app), or by the native function it is in (a WebGL call waiting for the GPU process) or V8's own states
+//   app), or by the native function it is in (`webglCall`: inside a WebGL call the bench's init script wraps, a
+//   draw, a compile or a wait for the GPU process; the page's DOM calls) or V8's own states
 //   ((program): the browser's own work on the thread, (garbage collector), (idle));
 // - the main thread's trace events of a few kinds (script evaluation, compiles, style, layout, paint), inclusive;
 // - how long the GPU process's main thread was busy (SwiftShader compiles shaders and draws there).
