@@ -10,6 +10,7 @@
 import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { FIRST_FRAME_TITLE, firstFrameSection } from './firstFrameReport.mjs';
 import { gateSection } from './gateReport.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -69,6 +70,7 @@ export const SOURCES = [
     writer: 'bench/playground-learn.bench.mjs',
     command: 'npm run bench -- playground-learn',
   },
+  { name: 'first-frame', writer: 'bench/first-frame.bench.mjs', command: 'npm run bench -- first-frame' },
   { name: 'reliability', writer: 'bench/reliability.bench.mjs', command: 'npm run bench -- reliability' },
   { name: 'rasterisers', writer: 'bench/rasterisers.bench.mjs', command: 'npm run bench -- rasterisers' },
   { name: 'gate', writer: 'scripts/test.mjs', command: 'npm test -- --record' },
@@ -1656,7 +1658,7 @@ export function renderBenchmarks(results) {
       '- [Material on WebGPURenderer](#material-on-webgpurenderer) · [Realistic scene on WebGPURenderer](#realistic-scene-on-webgpurenderer) · [Lecture scene before and after issue 23](#lecture-scene-before-and-after-issue-23)',
       '- [The lighting itself](#the-lighting-itself) · [Adaptive shading under an error budget](#adaptive-shading-under-an-error-budget)',
       '- [Camera depth precision](#camera-depth-precision) · [Trackball](#trackball)',
-      '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [Reliability](#reliability)',
+      '- [Package sizes](#package-sizes) · [Tarballs](#tarballs) · [Playground](#playground) · [First frame against the Quick start](#first-frame-against-the-quick-start) · [Reliability](#reliability)',
       '- [Rasteriser variation](#rasteriser-variation) · [The gate](#the-gate)',
     ],
     runs(results),
@@ -1684,6 +1686,7 @@ export function renderBenchmarks(results) {
       results['playground-refactor'],
       results['playground-learn'],
     ),
+    section('first-frame', (r) => firstFrameSection(r, { table, fromLine }), FIRST_FRAME_TITLE),
     section('reliability', reliability, 'Reliability'),
     section('rasterisers', rasterisers, 'Rasteriser variation'),
     section('gate', (g) => gateSection(g, table), 'The gate'),
