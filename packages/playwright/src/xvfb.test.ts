@@ -1,12 +1,21 @@
 import { spawnSync } from 'node:child_process';
+import { statSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { findXvfb, startXvfb } from './xvfb.js';
 import xvfbGlobalSetup, { XVFB_DISPLAY_ENV } from './xvfbGlobalSetup.js';
 
-/** Whether `display` has its X socket (Xvfb makes it when it starts and removes it when it stops). */
-function serves(display: string): boolean {
-  const n = display.slice(1);
-  return spawnSync('test', ['-S', `/tmp/.X11-unix/X${n}`]).status === 0;
+/**
+ * The inode of `display`'s X socket (Xvfb makes it when it starts and removes it when it stops), or null when there
+ * is none. Another Xvfb may take a display as soon as it is freed (the gate runs the unit stages and Playwright's
+ * global setup at once): its socket is a new one.
+ */
+function socketOf(display: string): number | null {
+  try {
+    const socket = statSync(`/tmp/.X11-unix/X${display.slice(1)}`);
+    return socket.isSocket() ? socket.ino : null;
+  } catch {
+    return null;
+  }
 }
 
 describe('startXvfb', () => {
@@ -15,10 +24,11 @@ describe('startXvfb', () => {
     expect(findXvfb()).not.toBeNull();
     const server = await startXvfb();
     expect(server.display).toMatch(/^:\d+$/);
-    expect(serves(server.display)).toBe(true);
+    const socket = socketOf(server.display);
+    expect(socket).not.toBeNull();
     await server.stop();
     await server.stop(); // idempotent
-    expect(serves(server.display)).toBe(false);
+    expect(socketOf(server.display), "the server's socket is gone").not.toBe(socket);
   });
 
   it("keeps the process alive while stop() waits (regression: a runner with nothing else pending exited there with code 0, its failed run's exit code lost)", () => {
@@ -55,9 +65,10 @@ describe('the global setup', () => {
     const teardown = await xvfbGlobalSetup({ projects: [{ use: {} }, llvmpipe] } as never);
     const display = process.env[XVFB_DISPLAY_ENV] as string;
     expect(display).toMatch(/^:\d+$/);
-    expect(serves(display)).toBe(true);
+    const socket = socketOf(display);
+    expect(socket).not.toBeNull();
     await teardown?.();
     expect(process.env[XVFB_DISPLAY_ENV]).toBeUndefined();
-    expect(serves(display)).toBe(false);
+    expect(socketOf(display), "the server's socket is gone").not.toBe(socket);
   });
 });
