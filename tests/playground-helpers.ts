@@ -290,3 +290,13 @@ export async function cellPictures(page: Page, cols: number, rows: number): Prom
 export async function urlRotation(page: Page): Promise<number[]> {
   return ((await urlState(page))['trackball'] as { rotation: number[] }).rotation;
 }
+
+/** Every console warning and error, and every page error, from now on. */
+export function listenConsole(page: Page): string[] {
+  const heard: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'warning' || m.type() === 'error') heard.push(`${m.type()}: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => heard.push(`page error: ${e.message}`));
+  return heard;
+}

@@ -4,17 +4,7 @@
 // names, as getByRole finds them).
 import { expect, type Page } from '@playwright/test';
 import { test } from './harness-helpers';
-import { open, settle } from './playground-helpers';
-
-/** Every console warning and error, and every page error, from now on. */
-function listen(page: Page): string[] {
-  const heard: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'warning' || m.type() === 'error') heard.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => heard.push(`page error: ${e.message}`));
-  return heard;
-}
+import { listenConsole, open, settle } from './playground-helpers';
 
 /** The ARIA roles of controls: each must have an accessible name. */
 const CONTROLS = [
@@ -48,7 +38,7 @@ test('the console stays quiet on load and across the tools, and every control ha
 }) => {
   test.setTimeout(120_000);
   await page.setViewportSize({ width: 1280, height: 800 });
-  const heard = listen(page);
+  const heard = listenConsole(page);
   await open(page);
   expect(await unnamed(page), 'controls without a name on the first screen').toEqual([]);
 

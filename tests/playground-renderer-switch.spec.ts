@@ -5,25 +5,15 @@
 // camera and the trackball among it), the model, and the picture, pixel for pixel. No banner is left, and the
 // console holds nothing but Chromium's own notes. With the WebGPU flags, where presenting loses the device:
 // playground-webgpu-flags.spec.ts.
-import { expect, type Page } from '@playwright/test';
+import { expect } from '@playwright/test';
 import { BoxGeometry } from 'three';
 import { glbOf } from './glb';
 import { test } from './harness-helpers';
-import { choose, open, picture, settle, urlState } from './playground-helpers';
+import { choose, listenConsole, open, picture, settle, urlState } from './playground-helpers';
 import { toWebGPU } from './playground-webgpu-helpers';
 
 const FALLBACK = /^Renderer: WebGL2 \(WebGPU's fallback: (no WebGPU adapter|this browser has no WebGPU)\)$/;
 const ROUNDS = 5;
-
-/** Every console warning and error, and every page error, from now on. */
-function listen(page: Page): string[] {
-  const heard: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'warning' || m.type() === 'error') heard.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => heard.push(`page error: ${e.message}`));
-  return heard;
-}
 
 /** A state away from the defaults: the trackball turned and the eye moved, so that losing either shows. */
 const MOVED = {
@@ -38,7 +28,7 @@ for (const scene of SCENES) {
     page,
   }) => {
     test.setTimeout(240_000);
-    const heard = listen(page);
+    const heard = listenConsole(page);
     await open(page, { ...MOVED, scene: scene === 'model' ? 'sphere' : scene });
     if (scene === 'model') {
       const buffer = glbOf(new BoxGeometry(1, 0.6, 0.8), {
