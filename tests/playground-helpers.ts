@@ -223,6 +223,46 @@ export async function drag(
   await settle(page);
 }
 
+/**
+ * A fling: press at `from`, move to `to` in `steps` moves and release there, all in one task of the page (fractions
+ * of the canvas). A hand's fling releases within milliseconds of its last move; dispatched from here, a loaded
+ * machine could hold the release back past the trackball's 100 ms and turn the fling into a drag that stops.
+ */
+export async function fling(
+  page: Page,
+  from: [number, number],
+  to: [number, number],
+  steps = 3,
+): Promise<void> {
+  await page.getByTestId('viewport').evaluate(
+    (canvas, { from, to, steps }) => {
+      const rect = canvas.getBoundingClientRect();
+      const send = (type: string, [fx, fy]: [number, number]) =>
+        canvas.dispatchEvent(
+          new PointerEvent(type, {
+            pointerId: 1,
+            pointerType: 'mouse',
+            isPrimary: true,
+            button: type === 'pointermove' ? -1 : 0,
+            buttons: type === 'pointerup' ? 0 : 1,
+            clientX: rect.left + rect.width * fx,
+            clientY: rect.top + rect.height * fy,
+            bubbles: true,
+            cancelable: true,
+            composed: true,
+          }),
+        );
+      send('pointerdown', from);
+      for (let i = 1; i <= steps; i++) {
+        const t = i / steps;
+        send('pointermove', [from[0] + (to[0] - from[0]) * t, from[1] + (to[1] - from[1]) * t]);
+      }
+      send('pointerup', to);
+    },
+    { from, to, steps },
+  );
+}
+
 /** How many canvas pixels are not background (any channel above 8): the sphere's area on screen. */
 export async function litArea(page: Page): Promise<number> {
   return page.getByTestId('viewport').evaluate((canvas: HTMLCanvasElement) => {

@@ -4,6 +4,7 @@ import {
   cellPictures,
   choose,
   drag,
+  fling,
   frames,
   litArea,
   litBox,
@@ -180,18 +181,10 @@ test.describe('the playground', () => {
     page,
   }) => {
     await open(page);
-    const box = (await page.getByTestId('viewport').boundingBox())!;
     const rotationY = async () =>
       ((await urlState(page))['trackball'] as { rotation: number[] }).rotation[1]!;
-    /** A quick drag, released at once (the trackball spins only after a release within 100 ms of the last move). */
-    const fling = async () => {
-      await page.mouse.move(box.x + box.width * 0.45, box.y + box.height * 0.5);
-      await page.mouse.down();
-      await page.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.5, { steps: 3 });
-      await page.mouse.up();
-    };
     // Damping off: the picture after the release is the last one.
-    await fling();
+    await fling(page, [0.45, 0.5], [0.55, 0.5]);
     await settle(page);
     const released = await frames(page);
     await page.waitForTimeout(500);
@@ -202,19 +195,11 @@ test.describe('the playground', () => {
     await toggle(page, 'Trackball.damping');
     await settle(page);
     // Damping on: frames keep coming after the release and the sphere turns further than the drag alone.
-    // A loaded machine may deliver the release more than 100 ms after the last move: try the fling again then.
-    let spun = false;
-    for (let attempt = 0; attempt < 5 && !spun; attempt++) {
-      if (attempt > 0) {
-        await press(page, 'reset rotation');
-        await settle(page);
-      }
-      await fling();
-      const atRelease = await frames(page);
-      await page.waitForTimeout(300);
-      spun = (await frames(page)) > atRelease + 3;
-    }
-    expect(spun, 'frames kept coming after the release').toBe(true);
+    await fling(page, [0.45, 0.5], [0.55, 0.5]);
+    const atRelease = await frames(page);
+    await expect
+      .poll(() => frames(page), { message: 'frames kept coming after the release', timeout: 20_000 })
+      .toBeGreaterThan(atRelease + 3);
     // The spin rests by itself. Quiet for 600 ms, not settle's 200: a slow SwiftShader frame near the end of the
     // damped tail left more than 200 ms between two frames once, and a frame came after "rested" (171 → 172).
     await settle(page, 600);
@@ -625,23 +610,12 @@ test('the damping factor sets how long a fling spins: a smaller factor turns fur
   test.setTimeout(120_000);
   await open(page);
   await toggle(page, 'Trackball.damping');
-  const box = (await page.getByTestId('viewport').boundingBox())!;
   const angle = async () => 2 * Math.acos(Math.min(1, Math.abs((await urlRotation(page))[3]!)));
-  /** A fling (released at once); retried when a loaded machine delivers the release too late to spin. */
   const spin = async () => {
-    for (let attempt = 0; attempt < 6; attempt++) {
-      if ((await urlRotation(page))[3] !== 1) await press(page, 'reset rotation');
-      await page.mouse.move(box.x + box.width * 0.45, box.y + box.height * 0.5);
-      await page.mouse.down();
-      await page.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.5, { steps: 3 });
-      await page.mouse.up();
-      const atRelease = await frames(page);
-      await page.waitForTimeout(200);
-      const spun = (await frames(page)) > atRelease + 2;
-      await settle(page);
-      if (spun) return { angle: await angle(), picture: await picture(page) };
-    }
-    throw new Error('no fling spun in 6 attempts');
+    if ((await urlRotation(page))[3] !== 1) await press(page, 'reset rotation');
+    await fling(page, [0.45, 0.5], [0.55, 0.5]);
+    await settle(page, 600);
+    return { angle: await angle(), picture: await picture(page) };
   };
   await typeInto(page, 'Trackball.dampingFactor', '0.5');
   const short = await spin();
