@@ -23,7 +23,8 @@ export async function frames(page: Page): Promise<number> {
 /**
  * Rendering is on demand: wait for a first frame, then until the page rests: no frame came for `quietMs` and none
  * is asked for (the canvas's `data-render-pending`, set while the viewer has a frame scheduled: an animation, such
- * as a damped spin, asks for its next frame while it draws, so it never looks at rest between two slow frames).
+ * as a damped spin, asks for its next frame while it draws, so it never looks at rest between two slow frames) and
+ * nothing on the page is `aria-busy` (the playground's panels, which load after the first frame).
  * The page watches itself (every animation frame) rather than being asked every `quietMs` from here, so the wait
  * ends `quietMs` after the last frame; it gives up after 50 × `quietMs` of frames that never stop.
  */
@@ -38,7 +39,10 @@ export async function settle(page: Page, quietMs = 200): Promise<void> {
         let since = start;
         const check = () => {
           const now = performance.now();
-          if (canvas.dataset['frames'] !== last || canvas.hasAttribute('data-render-pending')) {
+          const busy =
+            canvas.hasAttribute('data-render-pending') ||
+            canvas.ownerDocument.querySelector('[aria-busy="true"]');
+          if (canvas.dataset['frames'] !== last || busy) {
             last = canvas.dataset['frames'];
             since = now;
           }

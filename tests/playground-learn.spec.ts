@@ -1,6 +1,10 @@
 import { gzipSync } from 'node:zlib';
 import { expect, type Page } from '@playwright/test';
-import { PLAYGROUND_FIRST_LOAD_BUDGET_GZIP, PLAYGROUND_LAZY_PARTS } from '../bench/lib/playground-budget.mjs';
+import {
+  PLAYGROUND_AFTER_FIRST_FRAME,
+  PLAYGROUND_FIRST_LOAD_BUDGET_GZIP,
+  PLAYGROUND_LAZY_PARTS,
+} from '../bench/lib/playground-budget.mjs';
 import { STATE_MAX_CHARS } from '../playground/src/state/schema';
 import { test } from './harness-helpers';
 import { HIDE_OVERLAYS, open, picture, settle, stateUrl } from './playground-helpers';
@@ -52,8 +56,14 @@ test('the first load stays within its budget; each learning tool’s code loads 
   const preloads = [...html.matchAll(/<link rel="modulepreload"[^>]* href="([^"]+\.js)"/g)].map((m) => m[1]!);
   expect(entry).toHaveLength(1);
   const firstLoad = [...new Set([...entry, ...preloads])].sort();
-  // At rest after the first frame the page has requested exactly those: nothing lazy came along.
-  expect([...new Set(scripts)].sort()).toEqual(firstLoad);
+  // At rest after the first frame the page has requested exactly those and the panels' chunk (loaded after the
+  // first frame): nothing lazy came along.
+  const afterFirstFrame = [...new Set(scripts)].filter((path) =>
+    PLAYGROUND_AFTER_FIRST_FRAME.some(({ module }) => chunkOf(module).test(path)),
+  );
+  expect(afterFirstFrame).toHaveLength(PLAYGROUND_AFTER_FIRST_FRAME.length);
+  expect(firstLoad.filter((path) => afterFirstFrame.includes(path))).toEqual([]);
+  expect([...new Set(scripts)].sort()).toEqual([...firstLoad, ...afterFirstFrame].sort());
   let gzip = 0;
   for (const path of firstLoad) {
     const body = await (await page.request.get(path)).body();

@@ -216,7 +216,8 @@ export function settleInPage(quietMs) {
     let since = start;
     const check = () => {
       const now = performance.now();
-      if (canvas.dataset.frames !== last || canvas.hasAttribute('data-render-pending')) {
+      const busy = canvas.hasAttribute('data-render-pending') || document.querySelector('[aria-busy="true"]');
+      if (canvas.dataset.frames !== last || busy) {
         last = canvas.dataset.frames;
         since = now;
       }

@@ -24,3 +24,12 @@ export const PLAYGROUND_LAZY_PARTS = [
   { module: 'playground/src/learn/copyCode.ts', label: 'copy as code (both generators)' },
   { module: 'playground/src/learn/adaptiveRun.ts', label: 'adaptive shading (AdaptiveShading and its run)' },
 ];
+
+/**
+ * The parts that load right after the first frame, never before it: the side column and leva (App.tsx), each the
+ * chunk Vite names after its module.
+ * @type {readonly { module: string, label: string }[]}
+ */
+export const PLAYGROUND_AFTER_FIRST_FRAME = [
+  { module: 'playground/src/ui/Panels.tsx', label: 'the panels and leva' },
+];

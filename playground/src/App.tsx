@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { lazy, Suspense, useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { ShaderSource } from './engine/ShaderProbe';
 import { SCENE_LABELS } from './engine/scenes';
 import { MOVE_KEYS, TURN_KEYS_TEXT } from './engine/viewer/input';
@@ -7,8 +7,6 @@ import type { ParityResult } from './engine/viewer/parity';
 import { type SectionErrors, Viewer } from './engine/viewer/Viewer';
 import type { GeneratedShader, WebGPUStatus } from './engine/webgpu/status';
 import { EmbedStrip } from './learn/embedStrip';
-import { Lesson } from './learn/Lesson';
-import { ProbeLauncher } from './learn/probeLauncher';
 import { ParityPanel } from './parity/ParityPanel';
 import { loadInitialState, readUrlState, saveState, stateUrl } from './state/persist';
 import {
@@ -19,19 +17,22 @@ import {
   type PlaygroundState,
   validateState,
 } from './state/schema';
-import { LightControls, SceneControls } from './ui/Controls';
 import { DockContext } from './ui/dock';
 import { gizmoNotice } from './ui/gizmoNotice';
-import { LightArrows } from './ui/LightArrows';
 import { Messages } from './ui/Messages';
-import { modelDropProps, modelNote } from './ui/ModelPicker';
-import { SidePanel } from './ui/SidePanel';
-import { Stats, StatsFeed } from './ui/Stats';
-import { Tools } from './ui/Tools';
+import { modelDropProps } from './ui/ModelPicker';
+import { StatsFeed } from './ui/Stats';
 import type { Update } from './ui/useFolder';
 import { useModel } from './ui/useModel';
 
 type Variant = ShaderSource & { key: string; defines: Record<string, unknown> };
+
+/** The panels and leva, loaded after the first frame (ui/Panels.tsx): one chunk for both parts. */
+const panels = () => import('./ui/Panels');
+const Panels = lazy(() => panels().then((m) => ({ default: m.Panels })));
+const StageTools = lazy(() => panels().then((m) => ({ default: m.StageTools })));
+/** How long the panels wait for a first frame that does not come (a refused state, a slow WebGPU start). */
+const PANELS_WITHOUT_FRAME_MS = 3000;
 
 /** The playground: the lecture's lit sphere, every package option live, state in the URL. */
 export function App() {
@@ -58,6 +59,14 @@ export function App() {
   const [gpuShader, setGpuShader] = useState<GeneratedShader | null>(null);
   const [parity, setParity] = useState<ParityResult | null>(null);
   const [dock, setDock] = useState<HTMLElement | null>(null);
+  // The panels mount once the first frame is on screen (the frame after it), at once on an error, or without
+  // a frame after a while.
+  const [panelsShown, setPanelsShown] = useState(false);
+  useEffect(() => {
+    if (panelsShown) return;
+    const timer = window.setTimeout(() => setPanelsShown(true), PANELS_WITHOUT_FRAME_MS);
+    return () => window.clearTimeout(timer);
+  }, [panelsShown]);
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -112,6 +121,7 @@ export function App() {
         onFirstFrame: (ms) => {
           feed.firstFrameMs = ms;
           console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
+          requestAnimationFrame(() => window.setTimeout(() => setPanelsShown(true)));
         },
       },
       depth,
@@ -217,6 +227,8 @@ export function App() {
     ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
     ...(renderError ? [`render: ${renderError}`] : []),
   ];
+  // A state that cannot be drawn shows the panels at once, to mend it with.
+  if (!panelsShown && (errors.length > 0 || context !== 'ok')) setPanelsShown(true);
 
   return (
     <DockContext.Provider value={dock}>
@@ -256,27 +268,34 @@ export function App() {
             dismissModel={model.dismiss}
             errors={errors}
           />
-          <ProbeLauncher viewerRef={viewerRef} state={state} />
-          <LightArrows viewerRef={viewerRef} state={state} feed={feed} />
+          {panelsShown && (
+            <Suspense fallback={null}>
+              <StageTools viewerRef={viewerRef} state={state} feed={feed} />
+            </Suspense>
+          )}
         </main>
-        <SidePanel
-          state={state}
-          variant={variant}
-          tryShader={tryShader}
-          clearShader={clearShader}
-          webgpu={webgpu}
-          gpuShader={gpuShader}
-          modelNote={state.scene === 'model' && model.shown ? modelNote(model.shown) : null}
-          lesson={<Lesson update={update} />}
-          tools={<Tools viewerRef={viewerRef} state={state} feed={feed} update={update} model={model} />}
-          stats={<Stats feed={feed} />}
-          dockRef={setDock}
-        />
-        <SceneControls state={state} update={update} actions={actions} />
-        {state.lights.map((_, i) => (
-          // biome-ignore lint/suspicious/noArrayIndexKey: lights are addressed by index in the state.
-          <LightControls key={i} index={i} state={state} update={update} onGizmo={toggleGizmo} />
-        ))}
+        {/* An empty column holds the panels' place until they load: the canvas keeps its size. */}
+        <Suspense fallback={<aside className="side" aria-busy="true" />}>
+          {panelsShown ? (
+            <Panels
+              state={state}
+              update={update}
+              viewerRef={viewerRef}
+              feed={feed}
+              model={model}
+              actions={actions}
+              variant={variant}
+              tryShader={tryShader}
+              clearShader={clearShader}
+              webgpu={webgpu}
+              gpuShader={gpuShader}
+              onGizmo={toggleGizmo}
+              dockRef={setDock}
+            />
+          ) : (
+            <aside className="side" aria-busy="true" />
+          )}
+        </Suspense>
         <EmbedStrip state={state} update={update} />
       </div>
     </DockContext.Provider>

@@ -2,7 +2,7 @@
  * Embed mode (`?embed`, parsed strictly in `state/embed.ts`): the canvas alone, for slides and course pages, with a
  * minimal control strip under it (shading, lighting, cel bands) and a link that opens the same state in the full
  * playground. The state comes from the URL (`#s=…`, or the lecture's scene) and the strip's changes go back into
- * it; the page hides the side panel, the stats, the hint and the learning tools. Renders nothing outside embed
+ * it; the page hides the side column (the panels, the stats, the tools and their dock). Renders nothing outside embed
  * mode.
  */
 import { LIGHTINGS, SHADINGS } from '@shadelab/material';
@@ -19,7 +19,7 @@ export const EMBED_STRIP_PX = 32;
 /** What embed mode hides and how it lays the page out (the canvas above, the strip below). */
 const EMBED_CSS = `
 html.embed .app { flex-direction: column; }
-html.embed .side, html.embed .stats, html.embed .hint { display: none; }
+html.embed .side { display: none; }
 .embed-strip { flex: 0 0 ${EMBED_STRIP_PX}px; display: flex; align-items: center; gap: 12px; padding: 0 8px;
   box-sizing: border-box; background: #181c20; border-top: 1px solid #333; font: 12px system-ui, sans-serif;
   white-space: nowrap; overflow: hidden; }
