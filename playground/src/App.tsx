@@ -24,6 +24,7 @@ import { modelDropProps } from './ui/ModelPicker';
 import { StatsFeed } from './ui/Stats';
 import type { Update } from './ui/useFolder';
 import { useModel } from './ui/useModel';
+import { usePanelsShown } from './ui/usePanelsShown';
 
 type Variant = ShaderSource & { key: string; defines: Record<string, unknown> };
 
@@ -31,8 +32,6 @@ type Variant = ShaderSource & { key: string; defines: Record<string, unknown> };
 const panels = () => import('./ui/Panels');
 const Panels = lazy(() => panels().then((m) => ({ default: m.Panels })));
 const StageTools = lazy(() => panels().then((m) => ({ default: m.StageTools })));
-/** How long the panels wait for a first frame that does not come (a refused state, a slow WebGPU start). */
-const PANELS_WITHOUT_FRAME_MS = 3000;
 
 /** The playground: the lecture's lit sphere, every package option live, state in the URL. */
 export function App() {
@@ -59,14 +58,9 @@ export function App() {
   const [gpuShader, setGpuShader] = useState<GeneratedShader | null>(null);
   const [parity, setParity] = useState<ParityResult | null>(null);
   const [dock, setDock] = useState<HTMLElement | null>(null);
-  // The panels mount once the first frame is on screen (the frame after it), at once on an error, or without
-  // a frame after a while.
-  const [panelsShown, setPanelsShown] = useState(false);
-  useEffect(() => {
-    if (panelsShown) return;
-    const timer = window.setTimeout(() => setPanelsShown(true), PANELS_WITHOUT_FRAME_MS);
-    return () => window.clearTimeout(timer);
-  }, [panelsShown]);
+  const [panelsShown, panelsFirstFrame] = usePanelsShown(
+    schemaError !== null || renderError !== null || Object.keys(sectionErrors).length > 0 || context !== 'ok',
+  );
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -121,7 +115,7 @@ export function App() {
         onFirstFrame: (ms) => {
           feed.firstFrameMs = ms;
           console.info(`[shadelab] first frame rendered ${ms.toFixed(1)} ms after navigation start`);
-          requestAnimationFrame(() => window.setTimeout(() => setPanelsShown(true)));
+          panelsFirstFrame();
         },
       },
       depth,
@@ -138,7 +132,7 @@ export function App() {
       viewer.dispose();
       viewerRef.current = null;
     };
-  }, [feed, update, refreshVariant, depth]);
+  }, [feed, update, refreshVariant, depth, panelsFirstFrame]);
 
   // A link pasted into this tab changes only the hash: take its state (or refuse it) without a reload.
   useEffect(() => {
@@ -227,8 +221,6 @@ export function App() {
     ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
     ...(renderError ? [`render: ${renderError}`] : []),
   ];
-  // A state that cannot be drawn shows the panels at once, to mend it with.
-  if (!panelsShown && (errors.length > 0 || context !== 'ok')) setPanelsShown(true);
 
   return (
     <DockContext.Provider value={dock}>
