@@ -32,6 +32,8 @@ type Variant = ShaderSource & { key: string; defines: Record<string, unknown> };
 const panels = () => import('./ui/Panels');
 const Panels = lazy(() => panels().then((m) => ({ default: m.Panels })));
 const StageTools = lazy(() => panels().then((m) => ({ default: m.StageTools })));
+/** An empty column holds the panels' place until they load: the canvas keeps its size. */
+const PANELS_PLACEHOLDER = <aside className="side" aria-busy="true" />;
 
 /** The playground: the lecture's lit sphere, every package option live, state in the URL. */
 export function App() {
@@ -58,9 +60,12 @@ export function App() {
   const [gpuShader, setGpuShader] = useState<GeneratedShader | null>(null);
   const [parity, setParity] = useState<ParityResult | null>(null);
   const [dock, setDock] = useState<HTMLElement | null>(null);
-  const [panelsShown, panelsFirstFrame] = usePanelsShown(
-    schemaError !== null || renderError !== null || Object.keys(sectionErrors).length > 0 || context !== 'ok',
-  );
+  const errors = [
+    ...(schemaError ? [`Not applied: ${schemaError}`] : []),
+    ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
+    ...(renderError ? [`render: ${renderError}`] : []),
+  ];
+  const [panelsShown, panelsFirstFrame] = usePanelsShown(errors.length > 0 || context !== 'ok');
 
   const refreshVariant = useCallback((viewer: Viewer) => {
     const next = viewer.getShaderSource();
@@ -216,12 +221,6 @@ export function App() {
     viewerRef.current?.selectLight(index);
   }, [gizmo, state.lights.length]);
 
-  const errors = [
-    ...(schemaError ? [`Not applied: ${schemaError}`] : []),
-    ...Object.entries(sectionErrors).map(([section, message]) => `${section}: ${message}`),
-    ...(renderError ? [`render: ${renderError}`] : []),
-  ];
-
   return (
     <DockContext.Provider value={dock}>
       <div className="app">
@@ -266,8 +265,7 @@ export function App() {
             </Suspense>
           )}
         </main>
-        {/* An empty column holds the panels' place until they load: the canvas keeps its size. */}
-        <Suspense fallback={<aside className="side" aria-busy="true" />}>
+        <Suspense fallback={PANELS_PLACEHOLDER}>
           {panelsShown ? (
             <Panels
               state={state}
@@ -285,7 +283,7 @@ export function App() {
               dockRef={setDock}
             />
           ) : (
-            <aside className="side" aria-busy="true" />
+            PANELS_PLACEHOLDER
           )}
         </Suspense>
         <EmbedStrip state={state} update={update} />
