@@ -7,7 +7,18 @@
 // type check: the r3f app needs @react-three/fiber, which only the temporary app installs).
 // SHADELAB_PACK_KEEP=1 keeps the temporary folder.
 import { spawn } from 'node:child_process';
-import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import {
+  cpSync,
+  existsSync,
+  mkdirSync,
+  mkdtempSync,
+  readdirSync,
+  readFileSync,
+  realpathSync,
+  rmSync,
+  symlinkSync,
+  writeFileSync,
+} from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, normalize, posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -488,6 +499,44 @@ function runAppPlaywright(dir: string, args: string[], env: Record<string, strin
   });
 }
 
+/**
+ * The process ids of the dev servers Vite's lock files (`node_modules/.vite/lock`) say still run for the app in
+ * `dir`. A killed server that its parent has not reaped yet (a zombie) has exited: its lock file is removed, as
+ * Vite removes those of processes that are gone.
+ */
+function viteServersRunning(dir: string): number[] {
+  const locks = join(dir, 'node_modules', '.vite', 'lock');
+  if (!existsSync(locks)) return [];
+  const running: number[] = [];
+  for (const name of readdirSync(locks).filter((n) => n.endsWith('.json'))) {
+    const file = join(locks, name);
+    let record: { pid?: number; root?: string };
+    try {
+      record = JSON.parse(readFileSync(file, 'utf8'));
+    } catch {
+      continue; // being written or removed
+    }
+    if (record.root !== realpathSync(dir) || typeof record.pid !== 'number') continue;
+    if (processRuns(record.pid)) running.push(record.pid);
+    else rmSync(file, { force: true });
+  }
+  return running;
+}
+
+/** Whether process `pid` exists and has not exited (on Linux a zombie, state Z in /proc, has exited). */
+function processRuns(pid: number): boolean {
+  try {
+    process.kill(pid, 0);
+  } catch (error) {
+    return (error as NodeJS.ErrnoException).code === 'EPERM';
+  }
+  try {
+    return !/\) Z /.test(readFileSync(`/proc/${pid}/stat`, 'utf8'));
+  } catch {
+    return process.platform !== 'linux';
+  }
+}
+
 interface ReportTest {
   title: string;
   status: string;
@@ -528,6 +577,11 @@ test("docs/testing.md's app, from the tarballs, runs its visual tests with its o
     /const port = (\d+)/.exec(readFileSync(join(dir, 'playwright.config.ts'), 'utf8'))?.[1],
   );
   await expect.poll(() => listening(port), { timeout: 30_000, message: `port ${port} freed` }).toBe(false);
+  // Vite refuses to start beside a dev server of the same app that still runs, which it reads from its lock files:
+  // the first run's server must be gone, not only its port.
+  await expect
+    .poll(() => viteServersRunning(dir), { timeout: 30_000, message: "the first run's Vite server gone" })
+    .toEqual([]);
   const report = join(dir, 'report.json');
   const all = await timed('playwright app: second run', () =>
     runAppPlaywright(dir, ['--reporter=json'], { PLAYWRIGHT_JSON_OUTPUT_NAME: report }),
